@@ -1,0 +1,206 @@
+"""Lagrangian mechanics on jets: the one vocabulary every other module uses.
+
+A coordinate q comes with plain symbols q_dot and q_ddot (its jet); nothing is a function of
+time, so differentiation is ordinary partial differentiation and stays fast.
+
+Glossary (q = (q_1 … q_n), sums over j):
+
+- total time derivative  D_t f = ∂f/∂t + Σ q̇_j ∂f/∂q_j + Σ q̈_j ∂f/∂q̇_j
+- lagrangian             L = T − V
+- generalized_momenta    p_j = ∂L/∂q̇_j
+- euler_lagrange         E_j = D_t(∂L/∂q̇_j) − ∂L/∂q_j   (the equations of motion are E_j = 0)
+- mass_matrix, forcing   E = A(q, q̇, t) q̈ − b(q, q̇, t), so the motion solves A q̈ = b
+- cyclic_coordinates     q_j with ∂L/∂q_j = 0 (p_j is then conserved)
+- energy_function        h = Σ q̇_j p_j − L   (conserved when ∂L/∂t = 0)
+
+Example, a simple pendulum (length l, angle θ from the downward vertical):
+L = ½ m l² θ̇² + m g l cos θ, p_θ = m l² θ̇, E_θ = m l² θ̈ + m g l sin θ, h = ½ m l² θ̇² − m g l cos θ.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Mapping, Sequence
+from dataclasses import dataclass
+from functools import cached_property
+
+import sympy as sp
+
+#: Time. Scenes with explicit time dependence (a driven support, a rotating hoop) use it.
+t = sp.Symbol("t", real=True)
+
+DOT = "_dot"
+DDOT = "_ddot"
+
+
+@dataclass(frozen=True)
+class Jet:
+    """A generalized coordinate with its velocity and acceleration as independent symbols."""
+
+    name: str
+    q: sp.Symbol
+    dot: sp.Symbol
+    ddot: sp.Symbol
+
+
+def jet(name: str) -> Jet:
+    """The jet of coordinate `name`: symbols `name`, `name_dot`, `name_ddot` (all real).
+
+    Every module that needs a coordinate's symbols gets them here, so that the parser, the bank
+    and the grader agree on the very same sympy objects.
+    """
+    return Jet(
+        name,
+        sp.Symbol(name, real=True),
+        sp.Symbol(name + DOT, real=True),
+        sp.Symbol(name + DDOT, real=True),
+    )
+
+
+def total_derivative(expr: sp.Expr, jets: Sequence[Jet]) -> sp.Expr:
+    """D_t expr = ∂expr/∂t + Σ q̇ ∂expr/∂q + Σ q̈ ∂expr/∂q̇, for expr in t, q and q̇ (a third
+    derivative has no symbol, so expr must not contain q̈)."""
+    if any(expr.has(j.ddot) for j in jets):
+        raise ValueError("D_t of an expression containing an acceleration needs a third derivative")
+    result = sp.diff(expr, t)
+    for j in jets:
+        result += j.dot * sp.diff(expr, j.q) + j.ddot * sp.diff(expr, j.dot)
+    return result
+
+
+def lagrangian(kinetic: sp.Expr, potential: sp.Expr) -> sp.Expr:
+    """L = T − V."""
+    return kinetic - potential
+
+
+def generalized_momenta(L: sp.Expr, jets: Sequence[Jet]) -> tuple[sp.Expr, ...]:
+    """p_j = ∂L/∂q̇_j."""
+    return tuple(sp.diff(L, j.dot) for j in jets)
+
+
+def euler_lagrange(L: sp.Expr, jets: Sequence[Jet]) -> tuple[sp.Expr, ...]:
+    """E_j = D_t(∂L/∂q̇_j) − ∂L/∂q_j; the equations of motion are E_j = 0."""
+    return tuple(
+        total_derivative(p, jets) - sp.diff(L, j.q)
+        for p, j in zip(generalized_momenta(L, jets), jets, strict=True)
+    )
+
+
+def mass_matrix(equations: Sequence[sp.Expr], jets: Sequence[Jet]) -> sp.Matrix:
+    """A with E = A q̈ − b: A_ij = ∂E_i/∂q̈_j (E is linear in q̈)."""
+    return sp.Matrix([[sp.diff(e, j.ddot) for j in jets] for e in equations])
+
+
+def forcing(equations: Sequence[sp.Expr], jets: Sequence[Jet]) -> sp.Matrix:
+    """b with E = A q̈ − b: b = −E evaluated at q̈ = 0."""
+    at_rest = {j.ddot: 0 for j in jets}
+    return sp.Matrix([-e.xreplace(at_rest) for e in equations])
+
+
+def cyclic_coordinates(L: sp.Expr, jets: Sequence[Jet]) -> tuple[str, ...]:
+    """Names of the q_j that L does not contain (∂L/∂q_j = 0), so p_j is conserved."""
+    return tuple(j.name for j in jets if not L.has(j.q))
+
+
+def energy_function(L: sp.Expr, jets: Sequence[Jet]) -> sp.Expr:
+    """h = Σ q̇_j p_j − L (the Jacobi integral; equals T + V when the constraints are scleronomic)."""
+    return sp.expand(sum((j.dot * p for j, p in zip(jets, generalized_momenta(L, jets))), sp.S.Zero) - L)
+
+
+def speed_squared(position: Sequence[sp.Expr], jets: Sequence[Jet]) -> sp.Expr:
+    """|ṙ|² of a position r(q, t), with ṙ = D_t r."""
+    return sum((total_derivative(x, jets) ** 2 for x in position), sp.S.Zero)
+
+
+class LagrangianSystem:
+    """Everything the five-step method derives from L and the coordinates, each computed lazily.
+
+    A question that asks only for the momenta never forms the mass matrix; a question about the
+    mass matrix never solves for q̈.
+    """
+
+    def __init__(self, L: sp.Expr, jets: Sequence[Jet]):
+        self.L = L
+        self.jets = tuple(jets)
+
+    @property
+    def coordinates(self) -> tuple[str, ...]:
+        return tuple(j.name for j in self.jets)
+
+    @cached_property
+    def generalized_momenta(self) -> tuple[sp.Expr, ...]:
+        """p_j = ∂L/∂q̇_j, expanded."""
+        return tuple(sp.expand(p) for p in generalized_momenta(self.L, self.jets))
+
+    @cached_property
+    def euler_lagrange(self) -> tuple[sp.Expr, ...]:
+        """E_j = D_t p_j − ∂L/∂q_j, expanded; E_j = 0 are the equations of motion."""
+        return tuple(
+            sp.expand(total_derivative(p, self.jets) - sp.diff(self.L, j.q))
+            for p, j in zip(self.generalized_momenta, self.jets, strict=True)
+        )
+
+    @cached_property
+    def mass_matrix(self) -> sp.Matrix:
+        """A in E = A q̈ − b."""
+        return mass_matrix(self.euler_lagrange, self.jets)
+
+    @cached_property
+    def forcing(self) -> sp.Matrix:
+        """b in E = A q̈ − b."""
+        return forcing(self.euler_lagrange, self.jets)
+
+    @cached_property
+    def cyclic_coordinates(self) -> tuple[str, ...]:
+        """Coordinates absent from L; their momenta are conserved."""
+        return cyclic_coordinates(self.L, self.jets)
+
+    @cached_property
+    def energy_function(self) -> sp.Expr:
+        """h = Σ q̇_j p_j − L."""
+        return energy_function(self.L, self.jets)
+
+    @cached_property
+    def is_time_independent(self) -> bool:
+        """∂L/∂t = 0, so h is conserved."""
+        return not self.L.has(t)
+
+    @cached_property
+    def conserved_quantities(self) -> dict[str, sp.Expr]:
+        """p_j of every cyclic q_j, and h when ∂L/∂t = 0; keyed `p_<q>` and `h`."""
+        momenta = dict(zip(self.coordinates, self.generalized_momenta, strict=True))
+        found = {f"p_{name}": momenta[name] for name in self.cyclic_coordinates}
+        if self.is_time_independent:
+            found["h"] = self.energy_function
+        return found
+
+    @cached_property
+    def accelerations(self) -> tuple[sp.Expr, ...]:
+        """q̈ = A⁻¹ b, solved exactly (only when asked: this is the expensive step)."""
+        A, b = self.mass_matrix, self.forcing
+        if A.shape == (1, 1):
+            return (sp.cancel(b[0] / A[0, 0]),)
+        solution = A.LUsolve(b)
+        return tuple(sp.simplify(x) for x in solution)
+
+    def on_shell(self, expr: sp.Expr) -> sp.Expr:
+        """expr with q̈ replaced by the solved accelerations (for conservation checks)."""
+        return expr.xreplace({j.ddot: a for j, a in zip(self.jets, self.accelerations, strict=True)})
+
+    def symbols(self) -> set[sp.Symbol]:
+        """The free symbols of L other than the jets and t: the parameters."""
+        jet_symbols = {s for j in self.jets for s in (j.q, j.dot, j.ddot)}
+        return {s for s in self.L.free_symbols if s not in jet_symbols and s != t}
+
+
+def jets_of(names: Iterable[str]) -> tuple[Jet, ...]:
+    """Jets for several coordinate names, in order."""
+    return tuple(jet(n) for n in names)
+
+
+def jet_substitution(values: Mapping[str, tuple[float, float, float]], jets: Sequence[Jet]) -> dict:
+    """A sympy substitution dict {q: v, q̇: v̇, q̈: v̈} for the named coordinates."""
+    subs: dict = {}
+    for j in jets:
+        q, qd, qdd = values[j.name]
+        subs.update({j.q: q, j.dot: qd, j.ddot: qdd})
+    return subs
