@@ -1,0 +1,109 @@
+"""The `lagrade` command: parse arguments, make one library call, print, exit.
+
+Exit status: 0 success; 1 the answer or request was judged invalid/incorrect where the command
+says so (see each command's help); 2 a usage or input error (`Kind: message` on stderr).
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from collections.abc import Callable, Sequence
+
+from problem_bank.errors import LagradeError
+
+EPILOG = """examples:
+  lagrade bank list
+  lagrade bank show wedge --seed 3 --format json
+  lagrade parse "1/2 m R^2 thetadot^2 + m g R cos(theta)" --coordinates theta --parameters m,g,R
+"""
+
+
+def _bank_list(args: argparse.Namespace) -> int:
+    from problem_bank import get_scene, scene_ids
+
+    for sid in scene_ids():
+        scene = get_scene(sid)
+        coords = ", ".join(scene.coordinates)
+        print(f"{sid:22} {scene.title}  [{coords}]")
+    return 0
+
+
+def _bank_show(args: argparse.Namespace) -> int:
+    from problem_bank import export, get_scene
+
+    scene = get_scene(args.scene)
+    variant = scene.default if args.seed is None else scene.variant(args.seed)
+    render = {"text": export.solution_text, "json": export.solution_json, "latex": export.solution_latex}
+    print(render[args.format](variant))
+    return 0
+
+
+def _parse(args: argparse.Namespace) -> int:
+    from grader.preview import preview_command
+
+    status, text = preview_command(
+        args.text,
+        _split(args.coordinates),
+        _split(args.parameters),
+        latex=True if args.latex else None,
+        allow_primes=args.allow_primes,
+    )
+    print(text)
+    return status
+
+
+def _split(csv: str) -> list[str]:
+    return [s.strip() for s in csv.split(",") if s.strip()]
+
+
+def build_parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(
+        prog="lagrade",
+        description="Generate and grade problem sets in Lagrangian mechanics.",
+        epilog=EPILOG,
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+    )
+    commands = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
+
+    bank = commands.add_parser("bank", help="browse the problem bank")
+    bank_commands = bank.add_subparsers(dest="bank_command", metavar="ACTION", required=True)
+    listing = bank_commands.add_parser("list", help="list every scene id with its title")
+    listing.set_defaults(run=_bank_list)
+    show = bank_commands.add_parser("show", help="show a scene's full derived solution")
+    show.add_argument("scene", help="scene id (see `lagrade bank list`)")
+    show.add_argument("--seed", type=int, default=None, help="variant seed (default: the declared form)")
+    show.add_argument("--format", choices=("text", "latex", "json"), default="text")
+    show.set_defaults(run=_bank_show)
+
+    parse = commands.add_parser(
+        "parse",
+        help="show how an answer is read (the 'interpreted as' preview)",
+        description="Parse TEXT as a student answer and print what it was read as, or the error "
+        "with a caret under its position. Parameters named here are taken as positive.",
+    )
+    parse.add_argument("text", help="the answer, plain text or LaTeX")
+    parse.add_argument("--coordinates", default="", help="comma-separated coordinates, e.g. theta,phi")
+    parse.add_argument("--parameters", default="", help="comma-separated parameters, e.g. m,g,R")
+    parse.add_argument("--latex", action="store_true", help="read TEXT as LaTeX (default: auto-detect)")
+    parse.add_argument("--allow-primes", action="store_true", help="read x' as x_dot")
+    parse.set_defaults(run=_parse)
+    return parser
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    """Entry point of the `lagrade` console script."""
+    args = build_parser().parse_args(argv)
+    run: Callable[[argparse.Namespace], int] = args.run
+    try:
+        return run(args)
+    except LagradeError as error:
+        print(f"{type(error).__name__}: {error}", file=sys.stderr)
+        return 2
+    except KeyboardInterrupt:
+        print("interrupted", file=sys.stderr)
+        return 130
+
+
+if __name__ == "__main__":
+    sys.exit(main())
