@@ -178,6 +178,23 @@ class Scene:
         return SceneVariant(self, seed=seed, names=names, options=options, values=values)
 
 
+class _Declared(SimpleNamespace):
+    """The names a scene's declarations may use (`s.m`, `c.bob.x`): a name the scene did not
+    declare is a SceneError that names it, not a bare AttributeError from inside a lambda."""
+
+    def __init__(self, scene_id: str = "?", prefix: str = "", /, **names: Any):
+        super().__init__(**names)
+        self.__dict__["_origin"] = (scene_id, prefix)
+
+    def __getattr__(self, name: str) -> Any:
+        if name.startswith("__"):
+            raise AttributeError(name)
+        scene_id, prefix = self.__dict__.get("_origin", ("?", ""))
+        offered = ", ".join(k for k in vars(self) if not k.startswith("_"))
+        problem = f"declarations: {prefix}.{name} is not declared ({prefix} offers: {offered})"
+        raise SceneError(scene_id, [problem])
+
+
 class SceneVariant:
     """One presentation of a scene (names, options, numeric values) and everything derived from
     it, each result computed on first use and cached."""
@@ -236,7 +253,7 @@ class SceneVariant:
             ns[canonical], ns[canonical + mech.DOT] = j.q, j.dot
         ns["t"] = mech.t
         ns["opt"] = dict(self.options)
-        return SimpleNamespace(**ns)
+        return _Declared(self.scene.id, "s", **ns)
 
     # --- step 1–3: bodies, transformation equations, constraints, DOF ---------------------------
     @cached_property
@@ -265,10 +282,9 @@ class SceneVariant:
         per_body = {}
         for b in self.bodies:
             names = list(AXES) + (["phi"] if isinstance(b, RigidBody) else [])
-            per_body[b.name] = SimpleNamespace(
-                **{a: sp.Symbol(f"{a}_{b.name}", real=True) for a in names}
-            )
-        return SimpleNamespace(**per_body)
+            symbols = {a: sp.Symbol(f"{a}_{b.name}", real=True) for a in names}
+            per_body[b.name] = _Declared(self.scene.id, f"c.{b.name}", **symbols)
+        return _Declared(self.scene.id, "c", **per_body)
 
     @cached_property
     def constraints(self) -> tuple[tuple[str, sp.Expr], ...]:

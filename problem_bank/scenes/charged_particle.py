@@ -16,7 +16,9 @@ _VECTOR_POTENTIALS = {
 def _magnetic_potential(s):
     """U = −e v·A, so that L = T − U = ½ m v² + e v·A."""
     velocity = (s.x_dot, s.y_dot, s.z_dot)
-    return -s.e * sum(v * a for v, a in zip(velocity, _VECTOR_POTENTIALS[s.opt["gauge"]](s)))
+    return -s.e * sum(
+        v * a for v, a in zip(velocity, _VECTOR_POTENTIALS[s.opt["gauge"]](s), strict=True)
+    )
 
 
 SCENE = Scene(

@@ -32,9 +32,17 @@ SCENE = Scene(
     ),
     constraints=lambda s, c: (c.block1.y, c.block2.y),
     quantities=(
-        Quantity("in_phase_frequency", "angular frequency of the mode x_1 = x_2",
-                 lambda s: sqrt(s.k / s.m), "rad/s"),
-        Quantity("out_of_phase_frequency", "angular frequency of the mode x_1 = -x_2",
-                 lambda s: sqrt((s.k + 2 * s.k_c) / s.m), "rad/s"),
+        Quantity(
+            "in_phase_frequency",
+            "angular frequency of the mode x_1 = x_2",
+            lambda s: sqrt(s.k / s.m),
+            "rad/s",
+        ),
+        Quantity(
+            "out_of_phase_frequency",
+            "angular frequency of the mode x_1 = -x_2",
+            lambda s: sqrt((s.k + 2 * s.k_c) / s.m),
+            "rad/s",
+        ),
     ),
 )

@@ -44,10 +44,18 @@ SCENE = Scene(
         (c.bob2.x - c.bob1.x) ** 2 + (c.bob2.y - c.bob1.y) ** 2 - s.l_2**2,
     ),
     quantities=(
-        Quantity("slow_mode_frequency", "the lower normal-mode angular frequency",
-                 lambda s: _mode(s, -1), "rad/s"),
-        Quantity("fast_mode_frequency", "the higher normal-mode angular frequency",
-                 lambda s: _mode(s, 1), "rad/s"),
+        Quantity(
+            "slow_mode_frequency",
+            "the lower normal-mode angular frequency",
+            lambda s: _mode(s, -1),
+            "rad/s",
+        ),
+        Quantity(
+            "fast_mode_frequency",
+            "the higher normal-mode angular frequency",
+            lambda s: _mode(s, 1),
+            "rad/s",
+        ),
     ),
     tags=("chaotic",),
 )

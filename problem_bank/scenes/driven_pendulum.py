@@ -18,8 +18,8 @@ SCENE = Scene(
     title="Pendulum with an oscillating support",
     statement=(
         "The support of a simple pendulum (bob of mass m, massless rod of length l) is driven "
-        "up and down so that its height is a cos(omega t). Use the angle {theta} of the rod, "
-        "measured from the {angle_from}. Is h conserved?"
+        "up and down so that its height is a cos(omega t). Use the angle {theta} between the "
+        "rod and the {angle_from}. Is h conserved?"
     ),
     coordinates=("theta",),
     parameters=(
@@ -31,9 +31,7 @@ SCENE = Scene(
     ),
     bodies=lambda s: (PointMass("bob", s.m, _bob(s)),),
     potential=lambda s, bodies: gravity(s.g, bodies),
-    constraints=lambda s, c: (
-        c.bob.x**2 + (c.bob.y - s.a * cos(s.omega * s.t)) ** 2 - s.l**2,
-    ),
+    constraints=lambda s, c: (c.bob.x**2 + (c.bob.y - s.a * cos(s.omega * s.t)) ** 2 - s.l**2,),
     renames={"theta": ("theta", "phi", "psi")},
     options={"angle_from": ("vertical", "horizontal")},
     tags=("time_dependent",),

@@ -33,7 +33,11 @@ SCENE = Scene(
     renames={"x": ("x", "q", "u")},
     options={"orientation": ("horizontal", "vertical")},
     quantities=(
-        Quantity("angular_frequency", "angular frequency of the oscillation",
-                 lambda s: sqrt(s.k / s.m), "rad/s"),
+        Quantity(
+            "angular_frequency",
+            "angular frequency of the oscillation",
+            lambda s: sqrt(s.k / s.m),
+            "rad/s",
+        ),
     ),
 )

@@ -14,8 +14,9 @@ def _bob_offset(s):
 
 
 def _bodies(s):
-    # The incline descends towards +x; s is measured down the incline from the origin.
-    block = (s.s * cos(s.alpha), -s.s * sin(s.alpha))
+    # The incline descends towards −x, so a positive angle leans the pendulum uphill (+x), where
+    # it hangs while the block slides; s is measured down the incline from the origin.
+    block = (-s.s * cos(s.alpha), -s.s * sin(s.alpha))
     dx, dy = _bob_offset(s)
     return (
         PointMass("block", s.M, block),
@@ -30,7 +31,9 @@ SCENE = Scene(
         "A block of mass M slides without friction down a fixed incline of angle alpha. From the "
         "block hangs a pendulum of length l with a bob of mass m, swinging in the vertical plane "
         "of the incline's slope. Use the distance {s} the block has slid down the incline and "
-        "the pendulum's angle {phi}, measured from the {angle_from}."
+        "the pendulum's angle {phi}, measured from the {angle_from} (from the downward vertical, "
+        "positive towards the top of the incline; or downwards from the horizontal that points "
+        "to the top of the incline)."
     ),
     coordinates=("s", "phi"),
     parameters=(
@@ -43,7 +46,7 @@ SCENE = Scene(
     bodies=_bodies,
     potential=lambda s, bodies: gravity(s.g, bodies),
     constraints=lambda s, c: (
-        c.block.y + c.block.x * tan(s.alpha),
+        c.block.y - c.block.x * tan(s.alpha),
         (c.bob.x - c.block.x) ** 2 + (c.bob.y - c.block.y) ** 2 - s.l**2,
     ),
     renames={"s": ("s", "q", "x"), "phi": ("phi", "theta", "psi")},

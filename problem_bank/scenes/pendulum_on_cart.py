@@ -19,9 +19,9 @@ SCENE = Scene(
     title="Pendulum on a cart",
     statement=(
         "A cart of mass M rolls without friction on a horizontal track. From it hangs a "
-        "pendulum: a bob of mass m on a massless rod of length l, swinging in the vertical plane "
-        "of the track. Use the cart's position {x} and the rod's angle {theta}, measured from "
-        "the {angle_from}."
+        "pendulum: a bob of mass m on a massless rod of length l, swinging in the vertical "
+        "plane of the track. Use the cart's position {x} and the angle {theta} between the rod "
+        "and the {angle_from}."
     ),
     coordinates=("x", "theta"),
     parameters=(

@@ -16,7 +16,7 @@ SCENE = Scene(
     title="Simple pendulum",
     statement=(
         "A bob of mass m hangs from a fixed point on a massless rod of length l and swings in a "
-        "vertical plane. Use the angle {theta} of the rod, measured from the {angle_from}."
+        "vertical plane. Use the angle {theta} between the rod and the {angle_from}."
     ),
     coordinates=("theta",),
     parameters=(

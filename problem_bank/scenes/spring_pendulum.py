@@ -17,8 +17,8 @@ SCENE = Scene(
     title="Spring pendulum",
     statement=(
         "A bob of mass m hangs from a fixed point on a massless spring of spring constant k and "
-        "natural length l_0, and moves in a vertical plane. Use the length {r} of the spring and "
-        "its angle {theta}, measured from the {angle_from}."
+        "natural length l_0, and moves in a vertical plane. Use the length {r} of the spring "
+        "and the angle {theta} between the spring and the {angle_from}."
     ),
     coordinates=("r", "theta"),
     parameters=(
@@ -32,11 +32,23 @@ SCENE = Scene(
     renames={"r": ("r", "rho"), "theta": ("theta", "phi")},
     options={"angle_from": ("vertical", "horizontal")},
     quantities=(
-        Quantity("equilibrium_length", "length of the spring with the bob at rest",
-                 lambda s: s.l_0 + s.m * s.g / s.k, "m"),
-        Quantity("radial_frequency", "angular frequency of small bouncing oscillations",
-                 lambda s: sqrt(s.k / s.m), "rad/s"),
-        Quantity("swing_frequency", "angular frequency of small swinging oscillations",
-                 lambda s: sqrt(s.g / (s.l_0 + s.m * s.g / s.k)), "rad/s"),
+        Quantity(
+            "equilibrium_length",
+            "length of the spring with the bob at rest",
+            lambda s: s.l_0 + s.m * s.g / s.k,
+            "m",
+        ),
+        Quantity(
+            "radial_frequency",
+            "angular frequency of small bouncing oscillations",
+            lambda s: sqrt(s.k / s.m),
+            "rad/s",
+        ),
+        Quantity(
+            "swing_frequency",
+            "angular frequency of small swinging oscillations",
+            lambda s: sqrt(s.g / (s.l_0 + s.m * s.g / s.k)),
+            "rad/s",
+        ),
     ),
 )

@@ -52,11 +52,14 @@ def lagranges_method_equations(variant: SceneVariant) -> list[sp.Expr]:
 
 
 def numeric_point(variant: SceneVariant) -> dict[sp.Symbol, float]:
-    """Parameters at the middle of their sampling range (dimensionless, order one)."""
-    return {
-        sym: float(np.mean(variant.domains[name].sample_range()))
-        for name, sym in variant.parameter_symbols.items()
-    }
+    """Parameters of order one inside their sampling ranges, staggered (golden-ratio steps) so
+    that no two coincide: equal masses would make an Atwood machine stand still."""
+    point = {}
+    for i, (name, sym) in enumerate(variant.parameter_symbols.items()):
+        lo, hi = variant.domains[name].sample_range()
+        fraction = (0.3 + 0.618034 * i) % 1.0
+        point[sym] = lo + (hi - lo) * (0.15 + 0.7 * fraction)
+    return point
 
 
 def integrate(variant: SceneVariant, y0, t_end: float, method: str = "DOP853", rtol=1e-12, atol=1e-12):

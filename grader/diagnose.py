@@ -1,0 +1,417 @@
+"""The mistakes students make with Lagrangians, derived per question from its reference and
+recognised by numeric fingerprint, so that feedback names the mistake in the student's own terms
+("your L lacks the cross term in x_M_dot*q_dot") instead of only saying "wrong".
+
+Each mutation is a function of the reference that produces a wrong answer of a known kind (the
+½ dropped on a kinetic term, T + V, a missing cross term, sin and cos swapped, the ω² term of a
+driven constraint left out, the momentum of another coordinate, a term with the wrong sign or a
+missing factor). A student's answer matches a mutation when it is equivalent to it by the same
+test that judges answers (E(L′) = c E(L_mut), span of the mutated rows, …) at the same points.
+Mutations that do not change what is judged (dropping the constant m g h from L) are left out.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterable, Sequence
+from dataclasses import dataclass
+from functools import cached_property
+from typing import TYPE_CHECKING
+
+import numpy as np
+import sympy as sp
+
+from problem_bank.mechanics import Jet, LagrangianSystem
+
+from .equivalence import (
+    Compiled,
+    Points,
+    decide,
+    differ_by_constant,
+    equation_rows,
+    euler_lagrange_values,
+    expressions_equal,
+    in_span,
+    lagrangians_match,
+)
+from .evaluate import FLOAT, UnsupportedExpression
+
+if TYPE_CHECKING:
+    from .problem import Problem
+
+
+@dataclass(frozen=True)
+class Mutant:
+    """A wrong answer of a known kind: `kind` for tests and statistics, `message` for the
+    student, `expr` the mutated reference."""
+
+    kind: str
+    message: str
+    expr: sp.Expr
+
+
+def plain(expr: sp.Expr) -> str:
+    """An expression as a student would type it (x^2, not x**2)."""
+    return sp.sstr(expr).replace("**", "^")
+
+
+def swap_sin_cos(expr: sp.Expr) -> sp.Expr:
+    """expr with every sin(u) written as cos(u) and every cos(u) as sin(u)."""
+    if isinstance(expr, sp.sin):
+        return sp.cos(swap_sin_cos(expr.args[0]))
+    if isinstance(expr, sp.cos):
+        return sp.sin(swap_sin_cos(expr.args[0]))
+    if not expr.args:
+        return expr
+    return expr.func(*(swap_sin_cos(a) for a in expr.args))
+
+
+def _terms(expr: sp.Expr) -> tuple[sp.Expr, ...]:
+    return sp.Add.make_args(sp.expand(expr))
+
+
+def _velocities(term: sp.Expr, jets: Sequence[Jet]) -> list[sp.Symbol]:
+    return [j.dot for j in jets if term.has(j.dot)]
+
+
+def _factors(term: sp.Expr, parameters: Iterable[sp.Symbol]) -> list[sp.Symbol]:
+    """Parameters that multiply the term (not those inside a function's argument)."""
+    factors = sp.Mul.make_args(term)
+    bases = {f.base if isinstance(f, sp.Pow) else f for f in factors}
+    return [p for p in parameters if p in bases]
+
+
+def term_mutants(expr: sp.Expr, what: str, parameters: Sequence[sp.Symbol]) -> list[Mutant]:
+    """Single-term mutations of expr: a term with the wrong sign, left out, with sin and cos
+    swapped, twice or half its size, without one of its parameter factors."""
+    terms = _terms(expr)
+    out: list[Mutant] = []
+    for k, term in enumerate(terms):
+        rest = sp.Add(*(terms[:k] + terms[k + 1 :]))
+        shown = plain(term)
+        out.append(Mutant("wrong_sign", f"the term {shown} in {what} has the wrong sign", rest - term))
+        if term.has(sp.sin) or term.has(sp.cos):
+            swapped = swap_sin_cos(term)
+            if swapped != term:
+                out.append(Mutant(
+                    "sin_cos_swapped", f"sin and cos are swapped in the term {shown} of {what}",
+                    rest + swapped,
+                ))
+        for p in _factors(term, parameters):
+            out.append(Mutant(
+                "missing_factor", f"the term {shown} in {what} lacks the factor {p}", rest + term / p
+            ))
+        out.append(Mutant("missing_term", f"{what} lacks the term {shown}", rest))
+        out.append(Mutant("factor_two", f"the term {shown} in {what} is twice too large", rest + 2 * term))
+        out.append(Mutant("factor_half", f"the term {shown} in {what} is half what it should be",
+                          rest + term / 2))
+    return out
+
+
+def kinetic_mutants(T: sp.Expr, jets: Sequence[Jet], what: str) -> list[Mutant]:
+    """Mistakes in T itself: the ½ dropped on one term or on all of T, a missing cross term, a
+    missing term of the prescribed motion (centripetal, ω²)."""
+    out: list[Mutant] = []
+    terms = _terms(T)
+    for k, term in enumerate(terms):
+        rest = sp.Add(*(terms[:k] + terms[k + 1 :]))
+        vel = _velocities(term, jets)
+        coeff = term.as_coeff_Mul()[0]
+        if vel and isinstance(coeff, sp.Rational) and coeff.q % 2 == 0:
+            out.append(Mutant(
+                "dropped_half", f"the ½ is missing in the kinetic term {plain(term)} of {what}",
+                rest + 2 * term,
+            ))
+        if len(vel) >= 2:
+            cross = plain(sp.Mul(*vel))
+            out.append(Mutant("missing_cross_term", f"{what} lacks the cross term in {cross}", rest))
+        if not vel:
+            out.append(Mutant(
+                "missing_driven_term",
+                f"{what} lacks the term {plain(term)} from the prescribed motion (the centripetal "
+                "or ω² term of the kinetic energy)",
+                rest,
+            ))
+    return out
+
+
+@dataclass(frozen=True)
+class Split:
+    """L = T − V: from the scene, or for an ad-hoc L by terms (terms with a velocity form T)."""
+
+    T: sp.Expr
+    V: sp.Expr
+
+
+class Catalogue:
+    """The mutations of one question, built on first use per part, and the matching of an
+    answer against them."""
+
+    def __init__(self, problem: Problem):
+        self.problem = problem
+
+    # --- the reference's parts -----------------------------------------------------------------
+    @cached_property
+    def split(self) -> Split:
+        p = self.problem
+        if p.variant is not None:
+            return Split(p.variant.kinetic_energy, p.variant.potential_energy)
+        L = sp.expand(p.system.L)
+        T = sp.Add(*(x for x in _terms(L) if _velocities(x, p.jets)))
+        return Split(T, sp.expand(T - L))
+
+    @property
+    def parameters(self) -> list[sp.Symbol]:
+        return list(self.problem.parameters.values())
+
+    # --- Lagrangian ------------------------------------------------------------------------------
+    @cached_property
+    def lagrangian_mutants(self) -> list[Mutant]:
+        T, V = self.split.T, self.split.V
+        out = [
+            Mutant("sign_of_V", "your L adds V instead of subtracting it (L = T − V)", T + V),
+            Mutant("dropped_half_all", "the ½ is missing in the kinetic energy", 2 * T - V),
+        ]
+        out += kinetic_mutants(T, self.problem.jets, "your L")
+        out.append(Mutant("sin_cos_swapped", "sin and cos are swapped in your L", swap_sin_cos(T - V)))
+        out += term_mutants(T - V, "your L", self.parameters)
+        return self._distinct(out, "el", self.problem.L)
+
+    # --- T and V -----------------------------------------------------------------------------------
+    @cached_property
+    def kinetic_mutants(self) -> list[Mutant]:
+        T = self.split.T
+        out = [Mutant("dropped_half_all", "the ½ is missing in your T", 2 * T)]
+        out += kinetic_mutants(T, self.problem.jets, "your T")
+        out.append(Mutant("sin_cos_swapped", "sin and cos are swapped in your T", swap_sin_cos(T)))
+        out += term_mutants(T, "your T", self.parameters)
+        return self._distinct(out, "plain", Compiled.of(T))
+
+    @cached_property
+    def potential_mutants(self) -> list[Mutant]:
+        V = self.split.V
+        out = [Mutant("sign_of_V", "your V has the wrong sign (height measured downwards?)", -V)]
+        out.append(Mutant("sin_cos_swapped", "sin and cos are swapped in your V", swap_sin_cos(V)))
+        out += term_mutants(V, "your V", self.parameters)
+        return self._distinct(out, "offset", Compiled.of(V))
+
+    # --- momenta --------------------------------------------------------------------------------
+    def momentum_mutants(self, k: int) -> list[Mutant]:
+        cache = self.__dict__.setdefault("_momentum", {})
+        if k not in cache:
+            cache[k] = self._momentum_mutants(k)
+        return cache[k]
+
+    def _momentum_mutants(self, k: int) -> list[Mutant]:
+        p = self.problem
+        jets = p.jets
+        name = jets[k].name
+        what = f"your p_{name}"
+        momenta = p.system.generalized_momenta
+        out: list[Mutant] = []
+        for i, j in enumerate(jets):
+            if i != k:
+                out.append(Mutant(
+                    "wrong_coordinate",
+                    f"{what} is the momentum of {j.name} (∂L/∂{j.name}_dot), not of {name}",
+                    momenta[i],
+                ))
+        out.append(Mutant(
+            "force_not_momentum",
+            f"{what} is ∂L/∂{name}; the momentum is ∂L/∂{name}_dot",
+            sp.diff(p.system.L, jets[k].q),
+        ))
+        for m in self.lagrangian_mutants:
+            if m.kind in ("dropped_half", "missing_cross_term", "missing_driven_term",
+                          "dropped_half_all"):
+                pk = sp.expand(sp.diff(m.expr, jets[k].dot))
+                out.append(Mutant(m.kind, _momentum_message(m, what, momenta[k], pk), pk))
+        out += term_mutants(momenta[k], what, self.parameters)
+        return self._distinct(out, "plain", Compiled.of(momenta[k]))
+
+    # --- equations of motion ----------------------------------------------------------------------
+    @cached_property
+    def row_mutants(self) -> list[tuple[int, Mutant]]:
+        """(row, mutant) pairs: row `row` of the EL equations replaced by the mutant."""
+        p = self.problem
+        jets = p.jets
+        E = p.system.euler_lagrange
+        out: list[tuple[int, Mutant]] = []
+        for i, j in enumerate(jets):
+            what = f"the equation for {j.name}"
+            flipped = sp.expand(E[i] + 2 * sp.diff(p.system.L, j.q))  # D_t p + ∂L/∂q
+            out.append((i, Mutant(
+                "el_sign", f"{what} has d/dt(∂L/∂{j.name}_dot) + ∂L/∂{j.name}; Lagrange's "
+                "equation has a minus sign", flipped,
+            )))
+        for m in self.lagrangian_mutants:
+            if m.kind in ("sign_of_V", "dropped_half", "missing_cross_term", "missing_driven_term",
+                          "dropped_half_all"):
+                try:
+                    rows = LagrangianSystem(m.expr, jets).euler_lagrange
+                except Exception:  # noqa: BLE001 - a mutant we cannot differentiate is skipped
+                    continue
+                for i, row in enumerate(rows):
+                    if sp.expand(row - E[i]) != 0:
+                        msg = m.message.replace("your L", f"the L behind your equation for {jets[i].name}")
+                        out.append((i, Mutant(m.kind, msg, row)))
+        for i, j in enumerate(jets):
+            for m in term_mutants(E[i], f"your equation for {j.name}", self.parameters):
+                out.append((i, m))
+        return self._distinct_rows(out)
+
+    # --- conserved quantities --------------------------------------------------------------------
+    @cached_property
+    def conserved_mutants(self) -> list[Mutant]:
+        p = self.problem
+        sys_ = p.system
+        out: list[Mutant] = []
+        T, V = self.split.T, self.split.V
+        h = sys_.energy_function
+        if sp.expand(T + V - h) != 0:
+            out.append(Mutant(
+                "energy_not_conserved",
+                "T + V is not conserved here: the constraint moves, so energy flows in and out; "
+                "the Jacobi integral h = Σ q̇ ∂L/∂q̇ − L is",
+                T + V,
+            ))
+        cyclic = set(sys_.cyclic_coordinates)
+        for j, pj in zip(p.jets, sys_.generalized_momenta, strict=True):
+            if j.name not in cyclic:
+                out.append(Mutant(
+                    "momentum_not_conserved",
+                    f"p_{j.name} is not conserved: {j.name} is not cyclic (L depends on {j.name})",
+                    pj,
+                ))
+        out.append(Mutant("lagrangian_not_conserved", "L itself is not a conserved quantity", sys_.L))
+        return out
+
+    # --- matching -----------------------------------------------------------------------------------
+    def match(self, mutants: Sequence[Mutant], test: Callable[[Compiled], bool]) -> Mutant | None:
+        """The first mutant the answer matches (`test(compiled mutant)`), if any."""
+        for m in mutants:
+            try:
+                if test(self._compiled(m)):
+                    return m
+            except (UnsupportedExpression, ValueError, ZeroDivisionError):
+                continue
+        return None
+
+    def match_lagrangian(self, answer: Compiled, points: Points) -> Mutant | None:
+        jets = self.problem.jets
+
+        def test(mut: Compiled) -> bool:
+            ref = self._el_values(mut, points)
+            result = lagrangians_match(answer, lambda b: ref if b is FLOAT else
+                                       euler_lagrange_values(mut, jets, points.arrays(b), b),
+                                       jets, points)
+            return result.outcome.equal and any(abs(c) > 1e-9 for c in result.factors)
+
+        return self.match(self.lagrangian_mutants, test)
+
+    def match_plain(self, mutants: Sequence[Mutant], answer: Compiled, points: Points) -> Mutant | None:
+        return self.match(mutants, lambda mut: expressions_equal(answer, mut, points).equal)
+
+    def match_offset(self, mutants: Sequence[Mutant], answer: Compiled, points: Points) -> Mutant | None:
+        return self.match(mutants, lambda mut: differ_by_constant(answer, mut, points).equal)
+
+    def match_row(self, student: Compiled, points: Points) -> Mutant | None:
+        """The mutation whose mutated system has the student's equation in its span."""
+        p = self.problem
+        jets = p.jets
+        for i, m in self.row_mutants:
+            try:
+                mutated = list(p.euler_lagrange)
+                mutated[i] = self._compiled(m)
+
+                def residual(backend, mutated=mutated):
+                    env = points.arrays(backend)
+                    s = equation_rows([student], jets, env, backend)
+                    r = equation_rows(mutated, jets, env, backend)
+                    return in_span(s, r, 0, backend)
+
+                if decide(residual).equal:
+                    return m
+            except (UnsupportedExpression, ValueError, ZeroDivisionError):
+                continue
+        return None
+
+    # --- helpers -----------------------------------------------------------------------------------
+    def _compiled(self, m: Mutant) -> Compiled:
+        cache = self.__dict__.setdefault("_compiled_cache", {})
+        if id(m) not in cache:
+            cache[id(m)] = (m, Compiled.of(m.expr))
+        return cache[id(m)][1]
+
+    def _el_values(self, mut: Compiled, points: Points):
+        return self.problem.cached(
+            f"el:{id(mut)}", points, lambda: euler_lagrange_values(mut, self.problem.jets, points.env)
+        )
+
+    def _fingerprint(self, compiled: Compiled, mode: str, points: Points) -> np.ndarray | None:
+        """What the part's test sees of an answer: E(L) normalised (L is judged up to a factor),
+        plain values, or values up to a constant per parameter group (V)."""
+        if mode == "el":
+            v = self._el_values(compiled, points)[0].ravel()
+            norm = np.linalg.norm(v)
+            return None if norm == 0 else v / norm * np.sign(v[np.argmax(np.abs(v))])
+        v = np.broadcast_to(np.asarray(compiled.values(points.env)[0], float), (points.n,))
+        if mode == "offset":
+            v = v - v[np.searchsorted(points.group, points.group)]
+        return v
+
+    def _distinct(self, mutants: list[Mutant], mode: str, reference: Compiled) -> list[Mutant]:
+        """Drop mutants that change nothing the part's test sees, and duplicates (the first,
+        most specific, wins), by fingerprint at the part's points."""
+        part = {"el": "lagrangian", "plain": "momenta", "offset": "V"}[mode]
+        points = self.problem.points(part)
+        with np.errstate(all="ignore"):
+            seen = [self._fingerprint(reference, mode, points)]
+            kept = []
+            for m in mutants:
+                try:
+                    fp = self._fingerprint(self._compiled(m), mode, points)
+                except (UnsupportedExpression, ValueError, ZeroDivisionError):
+                    continue
+                if fp is None or not np.all(np.isfinite(fp)):
+                    continue
+                if any(o is not None and _close(fp, o) for o in seen):
+                    continue
+                seen.append(fp)
+                kept.append(m)
+        return kept
+
+    def _distinct_rows(self, pairs: list[tuple[int, Mutant]]) -> list[tuple[int, Mutant]]:
+        p = self.problem
+        points = p.points("eom")
+        ref = equation_rows(p.euler_lagrange, p.jets, points.env)
+        kept, seen = [], []
+        for i, m in pairs:
+            try:
+                rows = equation_rows([self._compiled(m)], p.jets, points.env)
+            except (UnsupportedExpression, ValueError, ZeroDivisionError):
+                continue
+            r, s = in_span(rows, ref, 0)
+            if np.all(np.abs(r) <= 1e-8 * s):
+                continue  # the mutated row is still a consequence of the right equations
+            fp = rows.coef[:, 0, :].ravel()
+            norm = np.linalg.norm(fp)
+            if not np.isfinite(norm) or norm == 0:
+                continue
+            fp = fp / norm
+            if any(min(np.linalg.norm(fp - o), np.linalg.norm(fp + o)) < 1e-8 for _, o in seen):
+                continue
+            seen.append((i, fp))
+            kept.append((i, m))
+        return kept
+
+
+def _close(a: np.ndarray, b: np.ndarray) -> bool:
+    scale = max(np.max(np.abs(a)), np.max(np.abs(b)), 1e-300)
+    return a.shape == b.shape and float(np.max(np.abs(a - b))) <= 1e-9 * scale
+
+
+def _momentum_message(m: Mutant, what: str, right: sp.Expr, wrong: sp.Expr) -> str:
+    missing = sp.expand(right - wrong)
+    if m.kind in ("missing_cross_term", "missing_driven_term") and missing != 0:
+        return f"{what} lacks the term {plain(missing)}"
+    return m.message.replace("your L", what)

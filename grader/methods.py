@@ -1,0 +1,536 @@
+"""Every way of deciding "is the answer equal to the reference expression?" that the speed-against-
+accuracy study compares, each behind one interface, so that the benchmark, the stability tests and
+an instructor choosing a setting all see the same methods.
+
+A method is an object with a `name` and `decide(answer, reference, domains) -> bool | None`
+(None: this method cannot decide the pair — outside its scope, or no usable sample point).
+`domains` maps each free symbol to the `Domain` its values are drawn from; a symbol without an
+entry is taken as real. Expressions may come from student text, so nothing here calls `lambdify`,
+`sympify` or `eval`: numbers come from the whitelist compiler of `grader.evaluate`.
+
+The families (`all_methods()` lists them, named as in docs/methods.csv):
+
+- `structural`, `structural_expand`: a == b after sympy's automatic canonicalisation (and expand).
+- `simplify`: sympy.simplify(a − b) == 0.   `equals`: sympy's Expr.equals (may answer None).
+- `float{n}pt_rtol{ε}`: float64 at n points drawn in the declared domains, |a − b| ≤ ε max(|a|, |b|).
+- `mp{d}_{n}pt`: the same in mpmath at d digits, ε = 10^-(d − 8).
+- `exact_rational`: exact evaluation at random rational points of rational functions of the symbols
+  and of sin, cos, tan of their integer combinations (Weierstrass substitution, see below).
+- `hybrid_default`: the project's default, `grader.equivalence` (wrapped, not reimplemented).
+- `webwork`, `numbas`: those systems' documented default rules, reimplemented for comparison.
+- `exact_then_scaled`: exact where it applies, otherwise a term-scaled float64 test with
+  mpmath confirmation near the tolerance (the study's proposal; see its docstring).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Iterable, Mapping, Sequence
+from dataclasses import dataclass, field
+from fractions import Fraction
+from typing import Protocol, runtime_checkable
+
+import mpmath
+import numpy as np
+import sympy as sp
+
+from problem_bank.domains import REAL, Domain
+
+from . import evaluate as ev
+
+Domains = Mapping[sp.Symbol, Domain]
+
+
+@runtime_checkable
+class Method(Protocol):
+    """One way of deciding expression equivalence; `decide` returns True (equivalent), False (not)
+    or None (cannot decide)."""
+
+    name: str
+
+    def decide(self, answer: sp.Expr, reference: sp.Expr, domains: Domains) -> bool | None: ...
+
+
+# --- sampling ---------------------------------------------------------------------------------
+
+def _free_symbols(*exprs: sp.Expr) -> list[sp.Symbol]:
+    """Free symbols of all exprs in a stable order (by name), so that seeded draws repeat."""
+    found: set[sp.Symbol] = set()
+    for e in exprs:
+        found |= e.free_symbols
+    return sorted(found, key=lambda s: s.name)
+
+
+def _ranges(symbols: Sequence[sp.Symbol], domains: Domains) -> list[tuple[float, float]]:
+    return [domains.get(s, REAL).sample_range() for s in symbols]
+
+
+def draw(
+    symbols: Sequence[sp.Symbol], ranges: Sequence[tuple[float, float]], n: int,
+    rng: np.random.Generator,
+) -> dict[sp.Symbol, np.ndarray]:
+    """n points, each coordinate uniform in its range (float64 arrays keyed by symbol)."""
+    return {s: rng.uniform(lo, hi, n) for s, (lo, hi) in zip(symbols, ranges, strict=True)}
+
+
+def _program(answer: sp.Expr, reference: sp.Expr) -> ev.Program | None:
+    try:
+        return ev.compile_program([answer, reference])
+    except ev.UnsupportedExpression:
+        return None
+
+
+def _as_float_array(values, n: int) -> np.ndarray:
+    out = np.asarray(values, dtype=float)
+    return np.broadcast_to(out, (n,)) if out.ndim == 0 else out
+
+
+def _evaluate_float(program: ev.Program, env: Mapping[sp.Symbol, np.ndarray], n: int):
+    with np.errstate(all="ignore"):
+        a, b = ev.run(program, env, ev.FLOAT)
+    return _as_float_array(a, n), _as_float_array(b, n)
+
+
+def _usable_points(
+    program: ev.Program, symbols, ranges, n: int, rng, rounds: int = 6,
+) -> tuple[np.ndarray, np.ndarray, dict] | None:
+    """Values of (answer, reference) at n points where the reference is defined (finite and
+    real); points where it is not are redrawn, `rounds` times at most. None: too few points."""
+    kept_a, kept_b, kept_env = [], [], {s: [] for s in symbols}
+    have = 0
+    for _ in range(rounds):
+        want = n - have
+        batch = max(want, 4)
+        env = draw(symbols, ranges, batch, rng)
+        a, b = _evaluate_float(program, env, batch)
+        ok = np.isfinite(b)
+        idx = np.nonzero(ok)[0][:want]
+        kept_a.append(a[idx])
+        kept_b.append(b[idx])
+        for s in symbols:
+            kept_env[s].append(env[s][idx])
+        have += len(idx)
+        if have >= n:
+            break
+    if have == 0:
+        return None
+    env_all = {s: np.concatenate(v) for s, v in kept_env.items()}
+    return np.concatenate(kept_a), np.concatenate(kept_b), env_all
+
+
+# --- structural and symbolic -----------------------------------------------------------------
+
+@dataclass(frozen=True)
+class Structural:
+    """a == b as sympy trees after automatic canonicalisation (`expand` also expands both):
+    never wrong when it says True, blind to every rewrite it does not perform."""
+
+    expand: bool = False
+    name: str = field(init=False)
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "name", "structural_expand" if self.expand else "structural")
+
+    def decide(self, answer, reference, domains) -> bool | None:
+        if answer == reference:
+            return True
+        if self.expand:
+            return sp.expand(answer) == sp.expand(reference)
+        return False
+
+
+@dataclass(frozen=True)
+class Simplify:
+    """sympy.simplify(a − b) == 0: what many graders do; exact when it succeeds, slow, and it
+    knows nothing of the declared domains beyond the symbols' assumptions."""
+
+    name: str = "simplify"
+
+    def decide(self, answer, reference, domains) -> bool | None:
+        return sp.simplify(answer - reference) == 0
+
+
+@dataclass(frozen=True)
+class Equals:
+    """sympy's Expr.equals (a numeric test at random complex points, then simplification);
+    None when it cannot tell, which a grader must count as not decided."""
+
+    name: str = "equals"
+
+    def decide(self, answer, reference, domains) -> bool | None:
+        verdict = answer.equals(reference)
+        return None if verdict is None else bool(verdict)
+
+
+# --- numeric at sample points -----------------------------------------------------------------
+
+def _fmt_tol(rtol: float) -> str:
+    return f"{rtol:.0e}".replace("e-0", "e-")
+
+
+@dataclass(frozen=True)
+class FloatSampling:
+    """float64 at `points` points drawn in the declared domains; equal when every point has
+    |a − b| ≤ rtol · max(|a|, |b|). Points where the reference is undefined are redrawn; an answer
+    undefined where the reference is defined is wrong."""
+
+    points: int
+    rtol: float
+    seed: int = 20240
+    name: str = field(init=False)
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "name", f"float{self.points}pt_rtol{_fmt_tol(self.rtol)}")
+
+    def decide(self, answer, reference, domains) -> bool | None:
+        program = _program(answer, reference)
+        if program is None:
+            return None
+        symbols = _free_symbols(answer, reference)
+        rng = np.random.default_rng(self.seed)
+        got = _usable_points(program, symbols, _ranges(symbols, domains), self.points, rng)
+        if got is None:
+            return None
+        a, b, _ = got
+        if not np.all(np.isfinite(a)):
+            return False
+        return bool(np.all(np.abs(a - b) <= self.rtol * np.maximum(np.abs(a), np.abs(b))))
+
+
+@dataclass(frozen=True)
+class MultiPrecision:
+    """The same test in mpmath at `digits` digits (points drawn as for float64, then evaluated
+    exactly as given), with the tolerance 10^-(digits − 8) that such precision allows."""
+
+    digits: int
+    points: int = 10
+    seed: int = 20240
+    name: str = field(init=False)
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "name", f"mp{self.digits}_{self.points}pt")
+
+    def decide(self, answer, reference, domains) -> bool | None:
+        program = _program(answer, reference)
+        if program is None:
+            return None
+        symbols = _free_symbols(answer, reference)
+        rng = np.random.default_rng(self.seed)
+        ranges = _ranges(symbols, domains)
+        rtol = mpmath.mpf(10) ** (8 - self.digits)
+        with mpmath.workdps(self.digits):
+            have = 0
+            for _ in range(6):
+                env = {s: ev.MP.array(v) for s, v in draw(symbols, ranges, self.points, rng).items()}
+                a, b = (np.broadcast_to(np.asarray(x, dtype=object), (self.points,))
+                        for x in ev.run(program, env, ev.MP))
+                for x, y in zip(a, b, strict=True):
+                    if not mpmath.isfinite(y):
+                        continue
+                    if not mpmath.isfinite(x) or abs(x - y) > rtol * max(abs(x), abs(y)):
+                        return False
+                    have += 1
+                if have >= self.points:
+                    return True
+            return True if have else None
+
+
+# --- exact rational evaluation ----------------------------------------------------------------
+
+_TRIG = (sp.sin, sp.cos, sp.tan, sp.cot, sp.sec, sp.csc)
+
+
+class _OutOfScope(Exception):
+    """The expression is not a rational function of symbols and trig of their combinations."""
+
+
+def _check_rational_trig(expr: sp.Expr, inside_trig: bool = False) -> None:
+    """Raise _OutOfScope unless expr is built from rationals, symbols, +, ×, integer powers, and
+    sin/cos/tan/cot/sec/csc of (rational combinations of symbols + rational multiples of π)."""
+    if expr.is_Symbol or expr.is_Rational:
+        return
+    if expr is sp.pi:
+        if inside_trig:
+            return
+        raise _OutOfScope("π outside a trig argument")
+    if expr.is_Add or expr.is_Mul:
+        for a in expr.args:
+            _check_rational_trig(a, inside_trig)
+        return
+    if expr.is_Pow:
+        if not expr.exp.is_Integer or inside_trig:
+            raise _OutOfScope(f"power {expr}")
+        _check_rational_trig(expr.base, inside_trig)
+        return
+    if isinstance(expr, _TRIG) and not inside_trig:
+        arg = expr.args[0]
+        if not _is_linear(arg):
+            raise _OutOfScope(f"non-linear trig argument {arg}")
+        _check_rational_trig(arg, inside_trig=True)
+        return
+    raise _OutOfScope(f"{type(expr).__name__}")
+
+
+def _is_linear(arg: sp.Expr) -> bool:
+    """arg = Σ r_i x_i + r π with rational r_i, r (what expand_trig can split into single symbols)."""
+    for term in sp.Add.make_args(arg):
+        coeff, rest = term.as_coeff_Mul()
+        if not coeff.is_Rational or not (rest.is_Symbol or rest is sp.pi or rest == 1):
+            return False
+    return True
+
+
+def _trig_units(exprs: Iterable[sp.Expr]) -> dict[sp.Symbol, int]:
+    """For each symbol inside a trig argument, the lcm of the denominators of its coefficients
+    there: with x = L·y every argument becomes an integer combination of the y's."""
+    units: dict[sp.Symbol, int] = {}
+    for e in exprs:
+        for f in e.atoms(*_TRIG):
+            arg = f.args[0]
+            for s in arg.free_symbols:
+                q = sp.Rational(arg.coeff(s)).q
+                units[s] = math.lcm(units.get(s, 1), int(q))
+    return units
+
+
+def _pi_free(expr: sp.Expr) -> bool:
+    return not expr.has(sp.pi)
+
+
+@dataclass(frozen=True)
+class ExactRational:
+    """Exact evaluation at random rational points, for rational functions of the symbols and of
+    sin, cos, tan of their integer combinations; None for anything else (sqrt, exp, log, acos, a
+    float constant).
+
+    Why it is exact: after expand_trig every trig function is sin y or cos y of a single symbol y,
+    and the Weierstrass substitution sin y = 2u/(1+u²), cos y = (1−u²)/(1+u²) turns them into
+    rational functions of u = tan(y/2). A symbol that also stands outside trig gets its own
+    independent rational value: y and e^{iy} are algebraically independent functions, so
+    P(y, sin y, cos y) ≡ 0 exactly when it vanishes at independent generic (y, u). Sympy's rational
+    arithmetic then decides each point without rounding; a nonzero rational function vanishes at
+    `points` random rationals with negligible probability (Schwartz–Zippel).
+    """
+
+    points: int = 3
+    seed: int = 20240
+    name: str = "exact_rational"
+
+    def decide(self, answer, reference, domains) -> bool | None:
+        try:
+            for e in (answer, reference):
+                _check_rational_trig(e)
+            a, b = _weierstrass_ready(answer, reference)
+        except _OutOfScope:
+            return None
+        return _exact_compare(a, b, domains, self.points, np.random.default_rng(self.seed))
+
+
+def _weierstrass_ready(answer: sp.Expr, reference: sp.Expr) -> tuple[sp.Expr, sp.Expr]:
+    """Both expressions with trig arguments reduced to single symbols (x = L·y, expand_trig)."""
+    units = _trig_units((answer, reference))
+    scale = {s: units[s] * sp.Dummy(s.name, real=True) for s in units if units[s] != 1}
+    out = []
+    for e in (answer, reference):
+        e = e.xreplace(scale) if scale else e
+        e = sp.expand_trig(e)
+        for f in e.atoms(*_TRIG):
+            if not f.args[0].is_Symbol:
+                raise _OutOfScope(f"trig argument {f.args[0]} did not reduce to a symbol")
+        if not _pi_free(e):
+            raise _OutOfScope("π remained after expand_trig")
+        out.append(e)
+    # Symbols scaled by L keep their domain through the original symbol (see _exact_compare).
+    return out[0], out[1]
+
+
+def _rational_in(lo: float, hi: float, rng: np.random.Generator) -> sp.Rational:
+    """A random rational strictly inside (lo, hi) with a large denominator."""
+    den = 1 << 24
+    value = Fraction(float(rng.uniform(lo, hi))).limit_denominator(den)
+    return sp.Rational(value.numerator, value.denominator)
+
+
+def _exact_compare(a: sp.Expr, b: sp.Expr, domains: Domains, points: int, rng) -> bool | None:
+    symbols = _free_symbols(a, b)
+    trig_syms = {f.args[0] for e in (a, b) for f in e.atoms(*_TRIG)}
+    done = 0
+    for _ in range(points * 4):
+        subs: dict[sp.Basic, sp.Expr] = {}
+        for s in symbols:
+            dom = _domain_of(s, domains)
+            lo, hi = dom.sample_range()
+            subs[s] = _rational_in(lo, hi, rng)
+        for y in trig_syms:
+            lo, hi = _domain_of(y, domains).sample_range()
+            u_lo, u_hi = _half_tan_range(lo, hi)
+            u = _rational_in(u_lo, u_hi, rng)
+            den = 1 + u**2
+            s_val, c_val = 2 * u / den, (1 - u**2) / den
+            subs.update({
+                sp.sin(y): s_val, sp.cos(y): c_val,
+            })
+            if c_val != 0:
+                subs[sp.tan(y)] = s_val / c_val
+                subs[sp.sec(y)] = 1 / c_val
+            if s_val != 0:
+                subs[sp.cot(y)] = c_val / s_val
+                subs[sp.csc(y)] = 1 / s_val
+        # Functions first (their arguments are symbols that are substituted next).
+        funcs = {k: v for k, v in subs.items() if not k.is_Symbol}
+        plain = {k: v for k, v in subs.items() if k.is_Symbol}
+        va = a.xreplace(funcs).xreplace(plain)
+        vb = b.xreplace(funcs).xreplace(plain)
+        if not (vb.is_Rational and vb.is_finite):
+            continue  # the reference is undefined here: redraw
+        if not (va.is_Rational and va.is_finite):
+            if va.has(sp.zoo, sp.nan, sp.oo, -sp.oo):
+                return False
+            return None
+        if va != vb:
+            return False
+        done += 1
+        if done >= points:
+            return True
+    return True if done else None
+
+
+def _domain_of(symbol: sp.Symbol, domains: Domains) -> Domain:
+    if symbol in domains:
+        return domains[symbol]
+    # A dummy standing for x / L keeps x's domain scaled; the domain only steers where points
+    # fall, so the unscaled range is good enough for an identity that must hold everywhere.
+    for s, d in domains.items():
+        if isinstance(symbol, sp.Dummy) and s.name == symbol.name:
+            return d
+    return REAL
+
+
+def _half_tan_range(lo: float, hi: float) -> tuple[float, float]:
+    """Range of u = tan(y/2) for y in (lo, hi), when that lies within (−π, π); else (−3, 3)."""
+    if -math.pi < lo < hi < math.pi:
+        return math.tan(lo / 2), math.tan(hi / 2)
+    return (-3.0, 3.0)
+
+
+# --- the project's default ---------------------------------------------------------------------
+
+@dataclass(frozen=True)
+class HybridDefault:
+    """grader.equivalence's default (numeric first, exact confirmation near the tolerance), behind
+    this interface. The adapter maps our symbol → Domain mapping to what its public function takes
+    and its result to True/False/None."""
+
+    name: str = "hybrid_default"
+
+    def decide(self, answer, reference, domains) -> bool | None:
+        return _hybrid_adapter()(answer, reference, domains)
+
+
+def _hybrid_adapter() -> Callable[[sp.Expr, sp.Expr, Domains], bool | None]:
+    """The adapter to grader.equivalence, written against its public API (imported lazily: the
+    study's other methods work without it)."""
+    from . import equivalence  # noqa: PLC0415 - optional until that module lands
+
+    compare = getattr(equivalence, "expressions_equivalent", None) or equivalence.equivalent
+
+    def adapted(answer: sp.Expr, reference: sp.Expr, domains: Domains) -> bool | None:
+        verdict = compare(answer, reference, domains)
+        value = getattr(verdict, "equivalent", verdict)
+        return None if value is None else bool(value)
+
+    return adapted
+
+
+# --- other systems' documented rules -----------------------------------------------------------
+
+@dataclass(frozen=True)
+class WeBWorK:
+    """WeBWorK's MathObjects Formula check with its defaults: every variable drawn uniformly from
+    [−2, 2] (the context's `limits`, whatever the physics says), 5 points (`num_points`), relative
+    tolerance 0.1 % (`tolerance` 1e-3, `tolType` relative), and an absolute 1e-12 where the
+    correct value is below `zeroLevel` 1e-14; points where the correct answer is undefined are
+    replaced, an answer undefined where it is defined is wrong.
+
+    Source of the rule: the WeBWorK forum answer on default tolerances
+    (https://webwork.maa.org/moodle/mod/forum/discuss.php?d=3483: "the default domain for
+    variables in the context is [-2,2], by default five randomly selected points … the value of the
+    student's answer has to be within 0.1 percent"), and on zeroLevel/zeroLevelTol 1e-14/1e-12
+    (https://webwork.maa.org/moodle/mod/forum/discuss.php?d=2922); the `limits => [-2,2]`,
+    `num_points => 5` flags of the MathObjects default context (openwebwork pg, lib/Value.pm).
+    """
+
+    seed: int = 20240
+    name: str = "webwork"
+
+    def decide(self, answer, reference, domains) -> bool | None:
+        program = _program(answer, reference)
+        if program is None:
+            return None
+        symbols = _free_symbols(answer, reference)
+        rng = np.random.default_rng(self.seed)
+        got = _usable_points(program, symbols, [(-2.0, 2.0)] * len(symbols), 5, rng)
+        if got is None:
+            return None
+        a, b, _ = got
+        if not np.all(np.isfinite(a)):
+            return False
+        tol = np.where(np.abs(b) < 1e-14, 1e-12, 1e-3 * np.abs(b))
+        return bool(np.all(np.abs(a - b) <= tol))
+
+
+@dataclass(frozen=True)
+class Numbas:
+    """Numbas's JME `compare` with its default settings: 5 points (`vsetRangePoints`), each
+    variable uniform in [0, 1] (`vsetRangeStart`/`End`), `checkingType` absdiff with
+    `checkingAccuracy` 1e-4, `failureRate` 1 (one failing point rejects); an evaluation that fails
+    rejects; there is no redraw where the correct answer is undefined.
+
+    Source of the rule: `Numbas.jme.compare`'s `default_settings` in numbas/Numbas,
+    runtime/scripts/jme.js (vsetRangeStart 0, vsetRangeEnd 1, vsetRangePoints 5, checkingType
+    'absdiff', checkingAccuracy 0.0001, failureRate 1), and the Numbas documentation of the
+    mathematical-expression part ("picking a sample of random values for the free variables …
+    if the two expressions agree on enough inputs").
+    """
+
+    seed: int = 20240
+    name: str = "numbas"
+
+    def decide(self, answer, reference, domains) -> bool | None:
+        program = _program(answer, reference)
+        if program is None:
+            return None
+        symbols = _free_symbols(answer, reference)
+        rng = np.random.default_rng(self.seed)
+        env = draw(symbols, [(0.0, 1.0)] * len(symbols), 5, rng)
+        a, b = _evaluate_float(program, env, 5)
+        with np.errstate(invalid="ignore"):
+            return bool(np.all(np.abs(a - b) < 1e-4))
+
+
+# --- registry ----------------------------------------------------------------------------------
+
+FLOAT_POINTS = (1, 2, 3, 5, 10, 20, 50)
+FLOAT_TOLERANCES = (1e-3, 1e-6, 1e-9)
+
+#: The name of the method the project grades with; the chart marks it.
+DEFAULT_NAME = "hybrid_default"
+
+
+def all_methods(include_default: bool = True) -> list[Method]:
+    """Every method of the study, in the order of the chart's legend."""
+    methods: list[Method] = [Structural(False), Structural(True), Simplify(), Equals()]
+    methods += [FloatSampling(n, tol) for tol in FLOAT_TOLERANCES for n in FLOAT_POINTS]
+    methods += [MultiPrecision(30), MultiPrecision(50), ExactRational()]
+    if include_default:
+        methods.append(HybridDefault())
+    methods += [WeBWorK(), Numbas()]
+    return methods
+
+
+def method_named(name: str) -> Method:
+    """The method called `name` (a KeyError lists the names)."""
+    for m in all_methods():
+        if m.name == name:
+            return m
+    raise KeyError(f"no method {name!r}; known: {', '.join(m.name for m in all_methods())}")
