@@ -413,6 +413,179 @@ def _half_tan_range(lo: float, hi: float) -> tuple[float, float]:
     return (-3.0, 3.0)
 
 
+# --- the study's proposal: exact where possible, else rounding-aware numbers --------------------
+
+# Derivatives of the whitelisted functions, for the running error bound: f(x + δ) − f(x) ≈ f'(x) δ.
+_DERIVATIVE: dict[str, Callable] = {
+    "sin": lambda B, x, f: B.cos(x),
+    "cos": lambda B, x, f: B.sin(x),
+    "tan": lambda B, x, f: 1 + f * f,
+    "cot": lambda B, x, f: 1 + f * f,
+    "sec": lambda B, x, f: f * B.tan(x),
+    "csc": lambda B, x, f: f / B.tan(x),
+    "asin": lambda B, x, f: 1 / B.sqrt(1 - x * x),
+    "acos": lambda B, x, f: 1 / B.sqrt(1 - x * x),
+    "atan": lambda B, x, f: 1 / (1 + x * x),
+    "sinh": lambda B, x, f: B.cosh(x),
+    "cosh": lambda B, x, f: B.sinh(x),
+    "tanh": lambda B, x, f: 1 - f * f,
+    "exp": lambda B, x, f: f,
+    "log": lambda B, x, f: 1 / x,
+    "abs": lambda B, x, f: 1,
+    "sign": lambda B, x, f: 0,
+}
+
+
+def _bounded_run(program: ev.Program, env: Mapping, B) -> list[tuple]:
+    """Values of the program's outputs with a first-order running error bound (Wilkinson's
+    running error analysis): each node carries (v, e) with |computed − exact| ≲ e · u, u the unit
+    roundoff of the arithmetic. The bound follows the cancellation inside the expression, not
+    only at its top level, so a true identity evaluated through 1 − cos x or γ − 1 is not
+    mistaken for a difference, while a real difference stands out once u is small enough."""
+    vals: list[tuple] = []
+    for instr in program.code:
+        op = instr[0]
+        if op == "in":
+            vals.append((env[instr[1]], 0))
+        elif op == "const":
+            c = B.const(instr[1])
+            vals.append((c, abs(c)))
+        elif op == "add":
+            parts = [vals[k] for k in instr[1]]
+            v = parts[0][0]
+            for p in parts[1:]:
+                v = v + p[0]
+            mag = sum((abs(p[0]) for p in parts[1:]), abs(parts[0][0]))
+            err = sum((p[1] for p in parts[1:]), parts[0][1])
+            vals.append((v, err + (len(parts) - 1) * mag))
+        elif op == "mul":
+            parts = [vals[k] for k in instr[1]]
+            v, e = parts[0]
+            for w, f in parts[1:]:
+                e = abs(w) * e + abs(v) * f
+                v = v * w
+                e = e + abs(v)
+            vals.append((v, e))
+        elif op == "powi":
+            (b, eb), n = vals[instr[1]], instr[2]
+            v = b**n if n >= 0 else 1 / b ** (-n)
+            vals.append((v, abs(n) * abs(v) * eb / abs(b) + (abs(n) + 1) * abs(v)))
+        elif op == "powc":
+            (b, eb), r = vals[instr[1]], B.const(instr[2])
+            v = B.power(b, r)
+            vals.append((v, abs(r) * abs(v) * eb / abs(b) + 4 * abs(v)))
+        elif op == "powe":
+            (b, eb), (x, ex) = vals[instr[1]], vals[instr[2]]
+            v = B.exp(x * B.log(b))
+            vals.append((v, abs(v) * (abs(B.log(b)) * ex + abs(x) * eb / abs(b)) + 8 * abs(v)))
+        else:
+            name, (x, ex) = instr[1], vals[instr[2]]
+            f = ev._apply(B, name, x)
+            d = _DERIVATIVE[name](B, x, f)
+            vals.append((f, abs(d) * ex + 2 * abs(f)))
+    return [vals[k] for k in program.outputs]
+
+
+#: Safety factor on the first-order bound (higher-order terms, the rounding of the bound itself).
+_SAFETY = 64.0
+
+
+@dataclass(frozen=True)
+class ExactThenAdaptive:
+    """The study's proposal for the default, built because no measured method was both never
+    wrong and fast: exact evaluation (`ExactRational`) where the expressions allow it, otherwise
+    numbers whose rounding is bounded, with precision raised only where the bound cannot decide.
+
+    1. float64 at `points` points in the declared domains, each value with a running error bound
+       E (see `_bounded_run`): |a − b| > 64 E u means the answers differ — most wrong answers stop
+       here, in microseconds. (The bound follows cancellation inside the expression, so a true
+       identity that loses digits in float64 is not rejected.)
+    2. Otherwise, if the pair is a rational function of symbols and of trig of their
+       combinations, the exact test decides.
+    3. Otherwise mpmath at 50, 100, 200 digits on `confirm` of the points: different as soon as
+       |a − b| exceeds the bound, equal once the bound is below 10^-(digits/2) of the values and
+       |a − b| within it (a difference that small at every point is no student's answer), and
+       equal at 200 digits if still within the bound.
+    """
+
+    points: int = 12
+    confirm: int = 3
+    seed: int = 20240
+    name: str = "exact_then_adaptive"
+
+    def decide(self, answer, reference, domains) -> bool | None:
+        program = _program(answer, reference)
+        if program is None:
+            return None
+        symbols = _free_symbols(answer, reference)
+        rng = np.random.default_rng(self.seed)
+        got = _usable_points(program, symbols, _ranges(symbols, domains), self.points, rng)
+        if got is None:
+            return None
+        _, _, env = got
+        n = len(next(iter(env.values()))) if env else 1
+        with np.errstate(all="ignore"):
+            (a, ea), (b, eb) = _bounded_run(program, env, ev.FLOAT)
+        a, b = _as_float_array(a, n), _as_float_array(b, n)
+        bound = _SAFETY * np.finfo(float).eps * (_as_float_array(ea, n) + _as_float_array(eb, n))
+        finite = np.isfinite(a) & np.isfinite(b) & np.isfinite(bound)
+        if np.any(finite & (np.abs(a - b) > bound)):
+            return False
+        exact = ExactRational(seed=self.seed).decide(answer, reference, domains)
+        if exact is not None:
+            return exact
+        order = np.argsort(~finite, kind="stable")  # non-finite answers first: confirm them
+        chosen = order[: max(self.confirm, int(np.count_nonzero(~finite)))]
+        return _adaptive_mp(program, symbols, env, chosen)
+
+
+def _adaptive_mp(program: ev.Program, symbols, env, chosen) -> bool:
+    """Decide at the chosen points in mpmath, raising the precision while the bound cannot."""
+    for i in chosen:
+        point = {s: float(env[s][i]) for s in symbols}
+        for digits in (50, 100, 200):
+            with mpmath.workdps(digits):
+                values = {s: mpmath.mpf(v) for s, v in point.items()}
+                (a, ea), (b, eb) = _bounded_run(program, values, _MpScalar)
+                if not mpmath.isfinite(b):
+                    break  # the reference is undefined here after all: skip the point
+                if not mpmath.isfinite(a):
+                    return False
+                u = mpmath.mpf(2) ** (-mpmath.mp.prec)
+                bound = _SAFETY * u * (ea + eb)
+                diff = abs(a - b)
+                if diff > bound:
+                    return False
+                scale = max(abs(a), abs(b))
+                if bound <= mpmath.mpf(10) ** (-digits // 2) * scale:
+                    break  # equal at this point
+    return True
+
+
+class _MpScalar:
+    """mpmath scalars as a backend of `_bounded_run`; complex results (outside the real domain)
+    become nan, as in float64."""
+
+    @staticmethod
+    def _real(f):
+        def g(*xs):
+            try:
+                y = f(*xs)
+            except (ValueError, ZeroDivisionError, OverflowError):
+                return mpmath.mpf("nan")
+            return mpmath.mpf("nan") if isinstance(y, mpmath.mpc) else y
+
+        return staticmethod(g)
+
+    sin, cos, tan = _real(mpmath.sin), _real(mpmath.cos), _real(mpmath.tan)
+    exp, log, sqrt = _real(mpmath.exp), _real(mpmath.log), _real(mpmath.sqrt)
+    asin, acos, atan = _real(mpmath.asin), _real(mpmath.acos), _real(mpmath.atan)
+    sinh, cosh, tanh = _real(mpmath.sinh), _real(mpmath.cosh), _real(mpmath.tanh)
+    power, sign = _real(mpmath.power), _real(mpmath.sign)
+    abs = staticmethod(abs)
+    const = staticmethod(ev.MP.const)
+
+
 # --- the project's default ---------------------------------------------------------------------
 
 @dataclass(frozen=True)
@@ -524,7 +697,7 @@ def all_methods(include_default: bool = True) -> list[Method]:
     methods += [MultiPrecision(30), MultiPrecision(50), ExactRational()]
     if include_default:
         methods.append(HybridDefault())
-    methods += [WeBWorK(), Numbas()]
+    methods += [WeBWorK(), Numbas(), ExactThenAdaptive()]
     return methods
 
 

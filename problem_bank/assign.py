@@ -31,7 +31,7 @@ from . import render_math as rm
 from .assignment import EXPRESSION, Assignment, Part, Problem, load_assignment
 from .errors import AssignmentError, LagradeError
 from .roster import Student, load_roster
-from .scene import RigidBody, Scene, SceneVariant
+from .scene import RigidBody, SceneVariant
 from .variants import VariantChoice, student_variants
 
 FORMATS: tuple[str, ...] = ("md", "html", "tex", "pdf")
@@ -114,6 +114,11 @@ def format_points(value: float) -> str:
     return f"{value:g}"
 
 
+def one_line(value: Any) -> str:
+    """Text for a TOML comment: line breaks would end the comment, so they become spaces."""
+    return " ".join(str(value).split())
+
+
 def environment(templates_dir: str | Path | None = None) -> jinja2.Environment:
     """The strict jinja2 environment: an instructor's folder first, then the shipped templates."""
     import templates as shipped
@@ -133,7 +138,8 @@ def environment(templates_dir: str | Path | None = None) -> jinja2.Environment:
         trim_blocks=True,
         lstrip_blocks=True,
     )
-    env.filters.update(tex=tex_escape, md=md_escape, toml=toml_string, points=format_points)
+    env.filters.update(tex=tex_escape, md=md_escape, toml=toml_string, points=format_points,
+                       oneline=one_line)
     return env
 
 
@@ -569,4 +575,4 @@ def compile_pdf(pdflatex: str, tex: Path, env: dict[str, str], timeout: float = 
     return None
 
 
-__all__ = ["FORMATS", "GenerateResult", "Scene", "environment", "generate", "parse_formats"]
+__all__ = ["FORMATS", "GenerateResult", "compile_pdf", "environment", "generate", "parse_formats"]
