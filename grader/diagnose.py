@@ -159,6 +159,23 @@ class Catalogue:
         T = sp.Add(*(x for x in _terms(L) if _velocities(x, p.jets)))
         return Split(T, sp.expand(T - L))
 
+    def _body_mutants(self, what: str) -> list[Mutant]:
+        """Per body of a scene: its kinetic energy without the ½, or left out."""
+        v = self.problem.variant
+        if v is None or len(v.bodies) < 2:
+            return []
+        T = self.split.T
+        out = []
+        for body in v.bodies:
+            Tb = sp.expand(body.kinetic_energy(v.jets))
+            if Tb == 0:
+                continue
+            out.append(Mutant("dropped_half", f"the ½ is missing in the kinetic energy of the "
+                              f"{body.name} in {what}", T + Tb))
+            out.append(Mutant("missing_body", f"{what} lacks the kinetic energy of the {body.name}",
+                              T - Tb))
+        return out
+
     @property
     def parameters(self) -> list[sp.Symbol]:
         return list(self.problem.parameters.values())
@@ -171,7 +188,9 @@ class Catalogue:
             Mutant("sign_of_V", "your L adds V instead of subtracting it (L = T − V)", T + V),
             Mutant("dropped_half_all", "the ½ is missing in the kinetic energy", 2 * T - V),
         ]
-        out += kinetic_mutants(T, self.problem.jets, "your L")
+        out += [Mutant(m.kind, m.message, m.expr - V) for m in self._body_mutants("your L")]
+        out += [Mutant(m.kind, m.message, m.expr - V)
+                for m in kinetic_mutants(T, self.problem.jets, "your L")]
         out.append(Mutant("sin_cos_swapped", "sin and cos are swapped in your L", swap_sin_cos(T - V)))
         out += term_mutants(T - V, "your L", self.parameters)
         return self._distinct(out, "el", self.problem.L)
@@ -181,6 +200,7 @@ class Catalogue:
     def kinetic_mutants(self) -> list[Mutant]:
         T = self.split.T
         out = [Mutant("dropped_half_all", "the ½ is missing in your T", 2 * T)]
+        out += self._body_mutants("your T")
         out += kinetic_mutants(T, self.problem.jets, "your T")
         out.append(Mutant("sin_cos_swapped", "sin and cos are swapped in your T", swap_sin_cos(T)))
         out += term_mutants(T, "your T", self.parameters)

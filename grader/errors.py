@@ -9,6 +9,8 @@ for the whole tree).
 
 from __future__ import annotations
 
+import unicodedata
+
 from problem_bank.errors import LagradeError
 
 
@@ -61,8 +63,6 @@ class ParseError(GraderError):
 def _caret_window(source: str, start: int, end: int, room: int = 72) -> tuple[str, int, int]:
     """The source line holding `start`, cut to about `room` characters around the span, with
     unprintable characters shown as '?', and the caret's column and width on it."""
-    import unicodedata
-
     start = max(0, min(start, len(source)))
     end = max(start, min(end, len(source)))
     line_start = source.rfind("\n", 0, start) + 1

@@ -81,7 +81,9 @@ class _Translator:
         self.skip_space()
         tok = self.peek()
         if tok is None:
-            self.fail(f"'\\{command}' needs an argument, as in \\{command}{{x}}.", start, self.end())
+            self.fail(
+                f"'\\{command}' needs an argument, as in \\{command}{{x}}.", start, self.end()
+            )
         assert tok is not None
         if tok[0] == "{":
             close = self.matching(self.i)
@@ -252,6 +254,7 @@ class _Translator:
         if top.startswith("d") and _LEIBNIZ_DENOMINATOR.match(bottom):
             what = top[1:].lstrip("^2 ").strip() or "x"
             what = what if _NAME.match(what) else "x"
+            what = "\\" + what if what in _GREEK else what
             self.fail(
                 f"Leibniz notation is not supported; write \\dot{{{what}}} or diff({what}, t).",
                 start,
@@ -269,7 +272,9 @@ class _Translator:
         tok = self.peek()
         index = None
         if tok is not None and tok[0] == "[":
-            close = next((k for k in range(self.i, len(self.tokens)) if self.tokens[k][0] == "]"), None)
+            close = next(
+                (k for k in range(self.i, len(self.tokens)) if self.tokens[k][0] == "]"), None
+            )
             if close is None:
                 self.fail("Missing ']' after \\sqrt[.", tok[1], tok[2])
             assert close is not None
@@ -297,7 +302,9 @@ class _Translator:
         target = self.flat(self.sub(first, last)).replace(" ", "")
         b = self.span_of(first, last)[1]
         if not _NAME.match(target):
-            self.fail(f"\\{name}{{...}} must hold a single coordinate, as in \\{name}{{x}}.", start, b)
+            self.fail(
+                f"\\{name}{{...}} must hold a single coordinate, as in \\{name}{{x}}.", start, b
+            )
         self.skip_space()
         tok = self.peek()
         if tok is not None and tok[0] == "_" and "_" not in target:
@@ -305,7 +312,9 @@ class _Translator:
             s_first, s_last = self.argument("_", tok[1])
             subscript = self.flat(self.sub(s_first, s_last)).replace(" ", "")
             if not _SUBSCRIPT.match(subscript):
-                self.fail("A subscript may hold only letters and digits, as in x_{M}.", tok[1], tok[2])
+                self.fail(
+                    "A subscript may hold only letters and digits, as in x_{M}.", tok[1], tok[2]
+                )
             target += "_" + subscript
             b = self.span_of(s_first, s_last)[1]
         self.word(target + _DOTS[name], start, b)

@@ -156,8 +156,8 @@ def normalise(src: Source) -> Source:
             pieces.append(("^" + "".join(_SUPERSCRIPTS[x] for x in text[i:j]), i, j))
             i = j
             continue
-        if c in _FRACTIONS:
-            pieces.append((_FRACTIONS[c], i, i + 1))
+        if c in _FRACTIONS or c in _OPERATORS:  # before NFKC, which decomposes ≠ and ½
+            pieces.append((_FRACTIONS.get(c) or _OPERATORS[c], i, i + 1))
             i += 1
             continue
         j = i + 1
@@ -176,13 +176,16 @@ def normalise(src: Source) -> Source:
                     out.append(" ")
                 out.append(GREEK[ch])
                 after_greek = True
-            elif ch in _OPERATORS:
+            elif ch in _OPERATORS:  # reached through NFKC, e.g. fullwidth forms
                 out.append(_OPERATORS[ch])
             elif unicodedata.category(ch) == "Zs":
                 out.append(" ")
             else:
                 where = src.locate(i, i)[0] + 1
-                src.fail(f"Unexpected character '{ch}' (U+{ord(ch):04X}) at position {where}.", i, j)
+                bad = text[i:j]
+                src.fail(
+                    f"Unexpected character '{bad}' (U+{ord(c):04X}) at position {where}.", i, j
+                )
         pieces.append(("".join(out), i, j))
         i = j
     return src.derive(pieces)

@@ -264,7 +264,8 @@ def _check_rational_trig(expr: sp.Expr, inside_trig: bool = False) -> None:
         return
     if isinstance(expr, _TRIG) and not inside_trig:
         arg = expr.args[0]
-        if not _is_linear(arg):
+        if not all(_is_linear(term) or _monomial_symbol(term) is not None
+                   for term in sp.Add.make_args(arg)):
             raise _OutOfScope(f"non-linear trig argument {arg}")
         _check_rational_trig(arg, inside_trig=True)
         return
@@ -326,8 +327,39 @@ class ExactRational:
         return _exact_compare(a, b, domains, self.points, np.random.default_rng(self.seed))
 
 
+def _monomial_symbol(arg: sp.Expr) -> sp.Symbol | None:
+    """For a trig argument c·s₁·s₂⋯ (ω t), the symbol to solve for: the last by name."""
+    coeff, rest = arg.as_coeff_Mul()
+    factors = sp.Mul.make_args(rest)
+    if not coeff.is_Rational or len(factors) < 2 or not all(f.is_Symbol for f in factors):
+        return None
+    return max(factors, key=lambda f: f.name)
+
+
+def _flatten_monomials(answer: sp.Expr, reference: sp.Expr) -> tuple[sp.Expr, sp.Expr]:
+    """Replace each monomial trig argument c·ω·t by a fresh symbol w through t = w/(c ω), in both
+    expressions at once: a change of variables (ω ≠ 0 on its domain) after which every trig
+    argument is linear."""
+    for _ in range(4):
+        monomials = {term for e in (answer, reference) for f in e.atoms(*_TRIG)
+                     for term in sp.Add.make_args(f.args[0]) if not _is_linear(term)}
+        if not monomials:
+            return answer, reference
+        arg = min(monomials, key=str)
+        solved = _monomial_symbol(arg)
+        if solved is None:
+            raise _OutOfScope(f"trig argument {arg}")
+        w = sp.Dummy(f"w_{solved.name}", real=True)
+        value = solved * w / arg.as_coeff_Mul()[1]
+        if value.has(solved):
+            raise _OutOfScope(f"trig argument {arg}")
+        answer, reference = answer.xreplace({solved: value}), reference.xreplace({solved: value})
+    raise _OutOfScope("too many monomial trig arguments")
+
+
 def _weierstrass_ready(answer: sp.Expr, reference: sp.Expr) -> tuple[sp.Expr, sp.Expr]:
     """Both expressions with trig arguments reduced to single symbols (x = L·y, expand_trig)."""
+    answer, reference = _flatten_monomials(answer, reference)
     units = _trig_units((answer, reference))
     scale = {s: units[s] * sp.Dummy(s.name, real=True) for s in units if units[s] != 1}
     out = []
@@ -345,9 +377,9 @@ def _weierstrass_ready(answer: sp.Expr, reference: sp.Expr) -> tuple[sp.Expr, sp
 
 
 def _rational_in(lo: float, hi: float, rng: np.random.Generator) -> sp.Rational:
-    """A random rational strictly inside (lo, hi) with a large denominator."""
-    den = 1 << 24
-    value = Fraction(float(rng.uniform(lo, hi))).limit_denominator(den)
+    """A random rational inside (lo, hi): a float drawn there, read exactly, so that the points
+    keep the scale of the domain (1e-27 stays 1e-27, not a rounded 0)."""
+    value = Fraction(float(rng.uniform(lo, hi)))  # the float itself, exactly (dyadic)
     return sp.Rational(value.numerator, value.denominator)
 
 
@@ -534,22 +566,31 @@ class ExactThenAdaptive:
         exact = ExactRational(seed=self.seed).decide(answer, reference, domains)
         if exact is not None:
             return exact
-        order = np.argsort(~finite, kind="stable")  # non-finite answers first: confirm them
+        order = np.argsort(finite, kind="stable")  # points the float test left open first
         chosen = order[: max(self.confirm, int(np.count_nonzero(~finite)))]
-        return _adaptive_mp(program, symbols, env, chosen)
+        return _adaptive_mp(answer, reference, symbols, env, chosen)
 
 
-def _adaptive_mp(program: ev.Program, symbols, env, chosen) -> bool:
+def _mp_bounded(program: ev.Program, values: Mapping) -> tuple:
+    """(value, bound) of a one-output program in mpmath; a division by zero is undefined (nan)."""
+    try:
+        return _bounded_run(program, values, _MpScalar)[0]
+    except ZeroDivisionError:
+        return mpmath.mpf("nan"), mpmath.mpf("nan")
+
+
+def _adaptive_mp(answer: sp.Expr, reference: sp.Expr, symbols, env, chosen) -> bool:
     """Decide at the chosen points in mpmath, raising the precision while the bound cannot."""
+    prog_a, prog_b = ev.compile_program([answer]), ev.compile_program([reference])
     for i in chosen:
         point = {s: float(env[s][i]) for s in symbols}
         for digits in (50, 100, 200):
             with mpmath.workdps(digits):
                 values = {s: mpmath.mpf(v) for s, v in point.items()}
-                (a, ea), (b, eb) = _bounded_run(program, values, _MpScalar)
-                if not mpmath.isfinite(b):
+                (a, ea), (b, eb) = _mp_bounded(prog_a, values), _mp_bounded(prog_b, values)
+                if not (mpmath.isfinite(b) and mpmath.isfinite(eb)):
                     break  # the reference is undefined here after all: skip the point
-                if not mpmath.isfinite(a):
+                if not (mpmath.isfinite(a) and mpmath.isfinite(ea)):
                     return False
                 u = mpmath.mpf(2) ** (-mpmath.mp.prec)
                 bound = _SAFETY * u * (ea + eb)
@@ -590,29 +631,46 @@ class _MpScalar:
 
 @dataclass(frozen=True)
 class HybridDefault:
-    """grader.equivalence's default (numeric first, exact confirmation near the tolerance), behind
-    this interface. The adapter maps our symbol → Domain mapping to what its public function takes
-    and its result to True/False/None."""
+    """The project's default, exactly as `grader.checks.check_expression` runs it: a Problem of
+    kind "expression" (coordinates recognised by their _dot/_ddot companions become jets, every
+    other symbol a parameter with its domain), its seeded sample points, and
+    `grader.equivalence.expressions_equal` (float64 relative to the terms, 50-digit confirmation
+    between 1e-10 and 1e-6). Not reimplemented: this adapter only maps our arguments to those
+    objects and the Outcome to True/False (None when the reference is undefined everywhere or
+    holds something the evaluator does not know)."""
 
     name: str = "hybrid_default"
 
     def decide(self, answer, reference, domains) -> bool | None:
-        return _hybrid_adapter()(answer, reference, domains)
+        from .equivalence import Compiled, ReferenceUndefined, expressions_equal  # noqa: PLC0415
+
+        try:
+            problem = _expression_problem(reference, answer, domains)
+            points = problem.points("expression", frozenset(
+                s for s in answer.free_symbols if s in problem.domains))
+            return bool(expressions_equal(Compiled.of(answer), problem.reference_expression, points).equal)
+        except (ReferenceUndefined, ev.UnsupportedExpression):
+            return None
 
 
-def _hybrid_adapter() -> Callable[[sp.Expr, sp.Expr, Domains], bool | None]:
-    """The adapter to grader.equivalence, written against its public API (imported lazily: the
-    study's other methods work without it)."""
-    from . import equivalence  # noqa: PLC0415 - optional until that module lands
+def _expression_problem(reference: sp.Expr, answer: sp.Expr, domains: Domains):
+    """The grader.problem.Problem an `expression` request with these symbols would build."""
+    from problem_bank.mechanics import jet, t  # noqa: PLC0415
 
-    compare = getattr(equivalence, "expressions_equivalent", None) or equivalence.equivalent
+    from .problem import Problem  # noqa: PLC0415
 
-    def adapted(answer: sp.Expr, reference: sp.Expr, domains: Domains) -> bool | None:
-        verdict = compare(answer, reference, domains)
-        value = getattr(verdict, "equivalent", verdict)
-        return None if value is None else bool(value)
-
-    return adapted
+    symbols = reference.free_symbols | answer.free_symbols
+    names = {s.name for s in symbols}
+    coordinates = sorted({n.rsplit("_", 1)[0] for n in names if n.endswith("_dot")}
+                         | {n.rsplit("_", 1)[0] for n in names if n.endswith("_ddot")})
+    jets = tuple(jet(c) for c in coordinates)
+    jet_symbols = {s for j in jets for s in (j.q, j.dot, j.ddot)}
+    parameters = {s.name: s for s in symbols if s not in jet_symbols and s != t}
+    param_domains = {s: domains.get(s, REAL) for s in parameters.values()}
+    coordinate_domains = {j.name: domains[j.q].sample_range() for j in jets
+                          if j.q in domains and domains[j.q].text != "real"}
+    return Problem("methods:hybrid_default", "expression", jets, parameters, param_domains, {},
+                   expression=reference, coordinate_domains=coordinate_domains)
 
 
 # --- other systems' documented rules -----------------------------------------------------------

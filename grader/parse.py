@@ -81,7 +81,7 @@ MAX_TOTAL_LENGTH = 20_000  # characters in a list of equations
 MAX_DEPTH = 50  # nesting of brackets, signs and powers
 MAX_NODES = 2_000  # tree nodes per answer
 MAX_EXPONENT = 100  # |numeric exponent|
-MAX_NUMBER_BITS = 20_000  # size of an exact number produced by a power
+MAX_NUMBER_BITS = 4_000  # size of an exact number produced by a power
 
 _NOT_FINITE = "The answer is not a finite real expression."
 _BAD_VALUES = (sp.zoo, sp.nan, sp.oo, -sp.oo, sp.I)
@@ -123,7 +123,9 @@ class Vocabulary:
         names = list(self.coordinates) + list(self.parameters) + list(self.labels)
         for name in names:
             if not isinstance(name, str) or not _NAME.match(name):
-                problems.append(f"{name!r} is not a name (letters, digits and _, starting with a letter)")
+                problems.append(
+                    f"{name!r} is not a name (letters, digits and _, starting with a letter)"
+                )
         for name, symbol in self.parameters.items():
             if not isinstance(symbol, sp.Symbol):
                 problems.append(f"parameter {name!r} must map to a sympy Symbol, not {symbol!r}")
@@ -137,12 +139,18 @@ class Vocabulary:
             raise RequestError("vocabulary is not valid: " + "; ".join(problems))
 
     def __hash__(self) -> int:
-        return hash((self.coordinates, tuple(self.parameters.items()), self.labels, self.allow_primes))
+        return hash(
+            (self.coordinates, tuple(self.parameters.items()), self.labels, self.allow_primes)
+        )
 
     @classmethod
-    def from_variant(cls, variant, labels: Iterable[str] = (), *, allow_primes: bool = False) -> Vocabulary:
+    def from_variant(
+        cls, variant, labels: Iterable[str] = (), *, allow_primes: bool = False
+    ) -> Vocabulary:
         """The vocabulary of a scene variant (`problem_bank.scene.SceneVariant`)."""
-        return cls(tuple(variant.coordinates), dict(variant.parameter_symbols), tuple(labels), allow_primes)
+        return cls(
+            tuple(variant.coordinates), dict(variant.parameter_symbols), tuple(labels), allow_primes
+        )
 
     @classmethod
     def from_names(
@@ -156,7 +164,9 @@ class Vocabulary:
         """From names alone; parameter domains as strings ('positive', '(0, pi/2)'), and bare
         parameter names are positive (masses, lengths, g)."""
         if isinstance(parameters, Mapping):
-            symbols = {name: Domain.parse(domain).symbol(name) for name, domain in parameters.items()}
+            symbols = {
+                name: Domain.parse(domain).symbol(name) for name, domain in parameters.items()
+            }
         else:
             symbols = {name: Domain.parse("positive").symbol(name) for name in parameters}
         return cls(tuple(coordinates), symbols, tuple(labels), allow_primes)
@@ -187,7 +197,9 @@ class _Lexicon:
             for v in _digit_variants(j.name):
                 table.setdefault(v, exact[j.name])
                 for suffix, order in (("dot", 1), ("_dot", 1), ("ddot", 2), ("_ddot", 2)):
-                    table.setdefault(v + suffix, _Entry("sym", (j.q, j.dot, j.ddot)[order], j, order))
+                    table.setdefault(
+                        v + suffix, _Entry("sym", (j.q, j.dot, j.ddot)[order], j, order)
+                    )
         for name in list(vocabulary.parameters) + list(vocabulary.labels):
             for v in _digit_variants(name):
                 table.setdefault(v, exact[name])
@@ -300,14 +312,17 @@ class Parser:
         self.src.fail(message, start, end, hint)
 
     def peek(self, ahead: int = 0) -> Token:
-        return self.tokens[min(self.pos + ahead, len(self.tokens) - 1)]
+        index = self.pos + ahead
+        return self.tokens[index] if index < len(self.tokens) else self.tokens[-1]
 
     def next(self) -> Token:
         tok = self.tokens[self.pos]
         self.pos += 1
         return tok
 
-    def node(self, kind: str, start: int, end: int, value: object = None, extra: object = None) -> Node:
+    def node(
+        self, kind: str, start: int, end: int, value: object = None, extra: object = None
+    ) -> Node:
         self.nodes += 1
         if self.nodes > MAX_NODES:
             self.fail(f"The answer is too complex (more than {MAX_NODES} parts).", start, end)
@@ -316,19 +331,32 @@ class Parser:
     def enter(self, tok: Token) -> None:
         self.depth += 1
         if self.depth > MAX_DEPTH:
-            self.fail(f"The answer is nested too deeply (more than {MAX_DEPTH} levels).", tok.start, tok.end)
+            self.fail(
+                f"The answer is nested too deeply (more than {MAX_DEPTH} levels).",
+                tok.start,
+                tok.end,
+            )
 
     def column(self, index: int) -> int:
         """1-based position in the student's text, for messages."""
         return self.src.locate(index, index + 1)[0] + 1
 
+    def missing_close(self, opening: Token) -> str:
+        return f"Missing ')': the '(' at position {self.column(opening.start)} is never closed."
+
     def operand_after(self, op: Token) -> None:
         """After an operator, something must follow."""
         tok = self.peek()
         if tok.kind == "end":
-            self.fail(f"The answer ends with '{op.text}'; something is missing after it.", op.start, op.end)
+            self.fail(
+                f"The answer ends with '{op.text}'; something is missing after it.",
+                op.start,
+                op.end,
+            )
         if tok.kind == "op" and tok.text not in ("(", "-"):
-            self.fail(f"Expected a term after '{op.text}' but found '{tok.text}'.", op.start, tok.end)
+            self.fail(
+                f"Expected a term after '{op.text}' but found '{tok.text}'.", op.start, tok.end
+            )
 
     def unexpected(self, tok: Token) -> NoReturn:
         if tok.kind == "end":
@@ -339,12 +367,18 @@ class Parser:
             self.fail("Something is missing before '='.", tok.start, tok.end)
         if tok.text == ";":
             self.fail(
-                "Only one answer is expected here; put each equation on its own line.", tok.start, tok.end
+                "Only one answer is expected here; put each equation on its own line.",
+                tok.start,
+                tok.end,
             )
         if tok.text == ",":
             self.fail("Unexpected ','.", tok.start, tok.end)
         if self.pos == 0:
-            self.fail(f"The answer starts with '{tok.text}'; something is missing before it.", tok.start, tok.end)
+            self.fail(
+                f"The answer starts with '{tok.text}'; something is missing before it.",
+                tok.start,
+                tok.end,
+            )
         self.fail(f"Unexpected '{tok.text}'.", tok.start, tok.end)
 
     # --- grammar ------------------------------------------------------------------------------
@@ -359,13 +393,18 @@ class Parser:
         if tok.text == "=":
             if mode == "expression":
                 self.fail(
-                    "Expected an expression, not an equation; write only the expression, without '='.",
+                    "Expected an expression, not an equation; "
+                    "write only the expression, without '='.",
                     tok.start,
                     tok.end,
                 )
             self.next()
             if self.peek().kind == "end":
-                self.fail("The answer ends with '='; write what it equals (0 if nothing).", tok.start, tok.end)
+                self.fail(
+                    "The answer ends with '='; write what it equals (0 if nothing).",
+                    tok.start,
+                    tok.end,
+                )
             rhs = self.parse_sum()
             tok = self.peek()
             if tok.text == "=":
@@ -414,6 +453,9 @@ class Parser:
             elif tok.kind in ("num", "name") or tok.text == "(":
                 if tok.kind == "num" and self.tokens[self.pos - 1].kind == "num":
                     a, b = self.tokens[self.pos - 1].text, tok.text
+                    if not tok.spaced:
+                        start = self.tokens[self.pos - 1].start
+                        self.fail(f"Cannot read the number '{a}{b}'.", start, tok.end)
                     self.fail(
                         f"Two numbers side by side; write {a}{b} or {a}*{b}.",
                         self.tokens[self.pos - 1].start,
@@ -476,7 +518,9 @@ class Parser:
             literal = exponent.value.value  # type: ignore[union-attr]
         if literal is not None and abs(literal[0]) > MAX_EXPONENT * literal[1]:  # type: ignore[index]
             self.fail(
-                f"Exponent too large: at most {MAX_EXPONENT} in absolute value.", exponent.start, exponent.end
+                f"Exponent too large: at most {MAX_EXPONENT} in absolute value.",
+                exponent.start,
+                exponent.end,
             )
         return self.node("pow", base.start, exponent.end, base, exponent)
 
@@ -516,7 +560,7 @@ class Parser:
         if closing.text != ")":
             if closing.kind == "end":
                 self.fail(
-                    f"Missing ')': the '(' at position {self.column(opening.start)} is never closed.",
+                    self.missing_close(opening),
                     opening.start,
                     opening.end,
                 )
@@ -530,7 +574,9 @@ class Parser:
         tok = self.next()
         name = tok.text
         if tok.marks or tok.primes:
-            self.fail(f"'{name}' is a function; it cannot carry a dot or a prime.", tok.start, tok.end)
+            self.fail(
+                f"'{name}' is a function; it cannot carry a dot or a prime.", tok.start, tok.end
+            )
         if name == "log":
             self.warn("log is read as the natural logarithm ln.")
         power = None
@@ -553,13 +599,19 @@ class Parser:
         nxt = self.peek()
         if nxt.text == "(":
             argument = self.parse_group()
-        elif nxt.kind in ("name", "num") and not self.lexicon.is_function(nxt.text) and nxt.text != "diff":
+        elif (
+            nxt.kind in ("name", "num")
+            and not self.lexicon.is_function(nxt.text)
+            and nxt.text != "diff"
+        ):
             argument = self.parse_simple_argument()
             self.check_bare_argument(tok, power, argument)
         elif nxt.kind == "end":
             self.fail(f"Expected '(' after '{name}' but the answer ended.", tok.start, tok.end)
         else:
-            self.fail(f"Write the argument of '{name}' in brackets, as in {name}(x).", tok.start, nxt.end)
+            self.fail(
+                f"Write the argument of '{name}' in brackets, as in {name}(x).", tok.start, nxt.end
+            )
         return self.node("call", tok.start, argument.end, name, (argument, power))
 
     def parse_simple_argument(self) -> Node:
@@ -577,7 +629,11 @@ class Parser:
             return
         if tok.kind == "name" and self.lexicon.is_function(tok.text):
             return
-        if tok.text == "*" and self.peek(1).kind == "name" and self.lexicon.is_function(self.peek(1).text):
+        if (
+            tok.text == "*"
+            and self.peek(1).kind == "name"
+            and self.lexicon.is_function(self.peek(1).text)
+        ):
             return
         name = function.text + (f"^{power}" if power else "")
         arg = self.text[argument.start : argument.end]
@@ -598,7 +654,9 @@ class Parser:
             rest = self.text[following.start : following.end]
             fix = f"{name}({arg}*{rest}) or {name}({arg})*{rest}"
         self.fail(
-            f"Ambiguous '{function.text}' without brackets: write {fix}.", function.start, following.end
+            f"Ambiguous '{function.text}' without brackets: write {fix}.",
+            function.start,
+            following.end,
         )
 
     def parse_diff(self) -> Node:
@@ -609,14 +667,24 @@ class Parser:
         opening = self.next()
         target = self.peek()
         if target.kind != "name":
-            self.fail("diff(...) takes a coordinate and t, as in diff(theta, t).", tok.start, target.end)
+            self.fail(
+                "diff(...) takes a coordinate and t, as in diff(theta, t).", tok.start, target.end
+            )
         self.next()
         self.skip_of_t()
         comma = self.peek()
         if comma.text != ",":
             if comma.text == ")":
-                self.fail(f"diff(...) needs the variable t: write diff({target.text}, t).", tok.start, comma.end)
-            self.fail("diff(...) takes a single coordinate, as in diff(theta, t).", target.start, comma.end)
+                self.fail(
+                    f"diff(...) needs the variable t: write diff({target.text}, t).",
+                    tok.start,
+                    comma.end,
+                )
+            self.fail(
+                "diff(...) takes a single coordinate, as in diff(theta, t).",
+                target.start,
+                comma.end,
+            )
         self.next()
         var = self.peek()
         if not (var.kind == "name" and var.text == "t" and not var.marks and not var.primes):
@@ -634,7 +702,7 @@ class Parser:
         if closing.text != ")":
             if closing.kind == "end":
                 self.fail(
-                    f"Missing ')': the '(' at position {self.column(opening.start)} is never closed.",
+                    self.missing_close(opening),
                     opening.start,
                     opening.end,
                 )
@@ -645,9 +713,19 @@ class Parser:
             self.not_a_coordinate(target.text, target)
         return self.derivative(entry, entry.order + target.marks + order, tok.start, closing.end)
 
+    def followed_by_of_t(self) -> bool:
+        """'(t)' right after a name, without a space: theta(t)."""
+        opening = self.peek()
+        return (
+            opening.text == "("
+            and not opening.spaced
+            and self.peek(1).text == "t"
+            and self.peek(2).text == ")"
+        )
+
     def skip_of_t(self) -> bool:
         """Consume '(t)' after a coordinate (theta(t) is theta)."""
-        if self.peek().text == "(" and self.peek(1).text == "t" and self.peek(2).text == ")":
+        if self.followed_by_of_t():
             self.pos += 3
             return True
         return False
@@ -659,7 +737,7 @@ class Parser:
             self.unknown(tok)
         if tok.primes and not self.lexicon.allow_primes:
             base = entry.jet.name if entry.jet is not None else tok.text
-            if entry.order + tok.primes == 1:
+            if entry.order + tok.marks + tok.primes == 1:
                 fix = f"write {base}dot for d{base}/dt"
             else:
                 fix = f"write {base}ddot for the second derivative"
@@ -676,11 +754,11 @@ class Parser:
         if extra:
             return self.derivative(entry, entry.order + extra, tok.start, tok.end)
         end = tok.end
-        if self.peek().text == "(" and self.peek(1).text == "t" and self.peek(2).text == ")":
+        if self.followed_by_of_t():
             if entry.jet is None:
                 self.fail(
-                    f"'{tok.text}(t)' reads as a function of time, but {tok.text} is not a coordinate; "
-                    f"write {tok.text}*t for a product.",
+                    f"'{tok.text}(t)' reads as a function of time, but {tok.text} is not a "
+                    f"coordinate; write {tok.text}*t for a product.",
                     tok.start,
                     self.peek(2).end,
                 )
@@ -695,7 +773,8 @@ class Parser:
         assert jet is not None
         if order > 2:
             self.fail(
-                f"Only velocities and accelerations exist here: that is a derivative of order {order} of {jet.name}.",
+                "Only velocities and accelerations exist here: "
+                f"that is a derivative of order {order} of {jet.name}.",
                 start,
                 end,
             )
@@ -706,7 +785,9 @@ class Parser:
     def not_a_coordinate(self, name: str, tok: Token) -> NoReturn:
         coordinates = ", ".join(self.lexicon.coordinates) or "none"
         self.fail(
-            f"'{name}' is not a coordinate of this problem (coordinates: {coordinates}).", tok.start, tok.end
+            f"'{name}' is not a coordinate of this problem (coordinates: {coordinates}).",
+            tok.start,
+            tok.end,
         )
 
     def unknown(self, tok: Token) -> NoReturn:
@@ -728,15 +809,23 @@ class Parser:
         for function in sorted(FUNCTIONS, key=len, reverse=True):
             rest = name[len(function) :]
             if name.startswith(function) and rest:
-                inner = rest if rest in self.lexicon.table else "*".join(self.lexicon.split(rest) or ())
+                inner = (
+                    rest if rest in self.lexicon.table else "*".join(self.lexicon.split(rest) or ())
+                )
                 if inner:
-                    self.fail(f"Unknown symbol '{name}'. Did you mean {function}({inner})?", tok.start, tok.end)
+                    self.fail(
+                        f"Unknown symbol '{name}'. Did you mean {function}({inner})?",
+                        tok.start,
+                        tok.end,
+                    )
         hint = None
         if name == "e":
             hint = "e is not Euler's number here; write exp(x) for the exponential."
         elif name in ("I", "E"):
             hint = f"{name} means something only when the question declares it."
-        self.fail(f"Unknown symbol '{name}'. Allowed: {self.lexicon.allowed}.", tok.start, tok.end, hint)
+        self.fail(
+            f"Unknown symbol '{name}'. Allowed: {self.lexicon.allowed}.", tok.start, tok.end, hint
+        )
 
     def check_leibniz(self) -> None:
         """dx/dt, d/dt(...), dtheta/dt, d^2x/dt^2: rejected before names are looked up."""
@@ -748,7 +837,12 @@ class Parser:
             leibniz = (
                 (tok.text == "dt" and i > 0 and tokens[i - 1].text == "/")
                 or (tok.text == "d" and tokens[i + 1].text == "/")
-                or (tok.text == "d" and i > 0 and tokens[i - 1].text == "/" and tokens[i + 1].text == "t")
+                or (
+                    tok.text == "d"
+                    and i > 0
+                    and tokens[i - 1].text == "/"
+                    and tokens[i + 1].text == "t"
+                )
             )
             if not leibniz:
                 continue
@@ -765,7 +859,11 @@ class Parser:
             end = tok.end
             if tok.text == "d" and tokens[i + 1].text == "/":
                 end = tokens[i + 2].end
-            self.fail(f"Leibniz notation is not supported; write {what}dot or diff({what}, t).", start, end)
+            self.fail(
+                f"Leibniz notation is not supported; write {what}dot or diff({what}, t).",
+                start,
+                end,
+            )
 
     def warn(self, message: str) -> None:
         if message not in self.warnings:
@@ -813,12 +911,18 @@ def _power(base: sp.Expr, exponent: sp.Expr, node: Node, src: Source) -> sp.Expr
     """base^exponent, refusing numbers too large to compute and roots of negative numbers."""
     if exponent.is_Rational:
         if abs(exponent) > MAX_EXPONENT:
-            src.fail(f"Exponent too large: at most {MAX_EXPONENT} in absolute value.", node.start, node.end)
+            src.fail(
+                f"Exponent too large: at most {MAX_EXPONENT} in absolute value.",
+                node.start,
+                node.end,
+            )
         if base.is_Rational:
             if exponent.is_Integer:
                 bits = max(abs(base.p).bit_length(), base.q.bit_length()) * abs(int(exponent))
                 if bits > MAX_NUMBER_BITS:
-                    src.fail("This power gives a number too large to work with.", node.start, node.end)
+                    src.fail(
+                        "This power gives a number too large to work with.", node.start, node.end
+                    )
             elif base.is_negative:
                 src.fail(_NOT_FINITE, node.start, node.end)
     return SYMPY_CONSTRUCTORS["pow"](base, exponent)
@@ -828,8 +932,9 @@ def _power(base: sp.Expr, exponent: sp.Expr, node: Node, src: Source) -> sp.Expr
 
 
 def _is_latex(text: str) -> bool:
+    """Auto-detection: a backslash, $…$ delimiters, or a braced power x^{2} mean LaTeX."""
     stripped = text.strip()
-    return "\\" in text or (stripped.startswith("$") and stripped.endswith("$"))
+    return "\\" in text or "^{" in text or (stripped.startswith("$") and stripped.endswith("$"))
 
 
 def _parse_source(src: Source, vocabulary: Vocabulary, latex: bool | None, mode: str) -> Parsed:
@@ -900,13 +1005,16 @@ def parse_equations(
 ) -> list[Parsed]:
     """A list of equations: one per line or separated by ';' (or LaTeX '\\\\'); a list of strings
     may hold several lines each. Errors point into the text they came from."""
-    texts = [text] if isinstance(text, str) else list(text) if isinstance(text, Sequence) else [text]
+    texts = (
+        [text] if isinstance(text, str) else list(text) if isinstance(text, Sequence) else [text]
+    )
     results: list[Parsed] = []
     for whole in texts:
         src = _source(whole)
         if len(whole) > MAX_TOTAL_LENGTH:
             src.fail(
-                f"The answer is too long ({len(whole)} characters; the limit is {MAX_TOTAL_LENGTH}).",
+                f"The answer is too long ({len(whole)} characters; "
+                f"the limit is {MAX_TOTAL_LENGTH}).",
                 MAX_TOTAL_LENGTH,
                 len(whole),
             )
@@ -920,5 +1028,7 @@ def parse_equations(
                 results.append(_guarded(segment, vocabulary, mode, "equation"))
             start = match.end() if match else end
     if not results:
-        _source(texts[0] if texts and isinstance(texts[0], str) else "").fail("The answer is empty.", 0, 0)
+        _source(texts[0] if texts and isinstance(texts[0], str) else "").fail(
+            "The answer is empty.", 0, 0
+        )
     return results

@@ -65,11 +65,22 @@ MULTILINE = frozenset({"transformation", "eom", "momenta", "conserved"})
 _WORD = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
 _ENGLISH = frozenset({"a", "A", "I"})
 _TEX_SPECIALS = {
-    "\\": r"\textbackslash{}", "&": r"\&", "%": r"\%", "$": r"\$", "#": r"\#", "_": r"\_",
-    "{": r"\{", "}": r"\}", "~": r"\textasciitilde{}", "^": r"\textasciicircum{}",
-    "<": r"\textless{}", ">": r"\textgreater{}", "|": r"\textbar{}",
+    "\\": r"\textbackslash{}",
+    "&": r"\&",
+    "%": r"\%",
+    "$": r"\$",
+    "#": r"\#",
+    "_": r"\_",
+    "{": r"\{",
+    "}": r"\}",
+    "~": r"\textasciitilde{}",
+    "^": r"\textasciicircum{}",
+    "<": r"\textless{}",
+    ">": r"\textgreater{}",
+    "|": r"\textbar{}",
 }
-_MD_SPECIALS = re.compile(r"([\\`*_{}\[\]()#+\-.!|<>&~$])")
+_MD_SPECIALS = re.compile(r"([\\`*_{}\[\]#!|<>&~$])")
+_MD_LINE_START = re.compile(r"^(\s*)([-+=]|\d+(?=[.)]))")
 
 
 @dataclass
@@ -84,6 +95,7 @@ class GenerateResult:
 
 # --- filters -----------------------------------------------------------------------------------
 
+
 def tex_escape(value: Any) -> str:
     """Text made safe for LaTeX: every special character written as a command or escaped."""
     return "".join(_TEX_SPECIALS.get(ch, ch) for ch in str(value))
@@ -92,7 +104,14 @@ def tex_escape(value: Any) -> str:
 def md_escape(value: Any) -> str:
     """Text made inert in Markdown: punctuation backslash-escaped, so `<script>` is shown, not
     run, by any CommonMark renderer."""
-    return _MD_SPECIALS.sub(r"\\\1", str(value).replace("\n", " "))
+    text = _MD_SPECIALS.sub(r"\\\1", str(value).replace("\n", " "))
+    # a leading "- ", "+ " or "1." would start a list: escape its marker
+    return _MD_LINE_START.sub(
+        lambda m: (
+            m.group(1) + (m.group(2) + "\\" if m.group(2)[0].isdigit() else "\\" + m.group(2))
+        ),
+        text,
+    )
 
 
 def toml_string(value: Any) -> str:
@@ -132,18 +151,21 @@ def environment(templates_dir: str | Path | None = None) -> jinja2.Environment:
     env = jinja2.Environment(
         loader=jinja2.ChoiceLoader(loaders),
         undefined=jinja2.StrictUndefined,
-        autoescape=jinja2.select_autoescape(enabled_extensions=("html.j2", "html"),
-                                            default_for_string=False, default=False),
+        autoescape=jinja2.select_autoescape(
+            enabled_extensions=("html.j2", "html"), default_for_string=False, default=False
+        ),
         keep_trailing_newline=True,
         trim_blocks=True,
         lstrip_blocks=True,
     )
-    env.filters.update(tex=tex_escape, md=md_escape, toml=toml_string, points=format_points,
-                       oneline=one_line)
+    env.filters.update(
+        tex=tex_escape, md=md_escape, toml=toml_string, points=format_points, oneline=one_line
+    )
     return env
 
 
 # --- solutions ---------------------------------------------------------------------------------
+
 
 def _statement(variant: SceneVariant) -> dict[str, Any]:
     """The statement with every coordinate and parameter name set as math, in each format."""
@@ -155,7 +177,7 @@ def _statement(variant: SceneVariant) -> dict[str, Any]:
         word = match.group()
         if word not in names or word in _ENGLISH:
             continue
-        before = text[last:match.start()]
+        before = text[last : match.start()]
         md.append(md_escape(before))
         html.append(str(escape(before)))
         tex.append(tex_escape(before))
@@ -192,14 +214,27 @@ def _symbolic(scene_id: str, names: tuple, options: tuple) -> dict[str, Any]:
         return rm.equation(lhs, rhs, coords)
 
     system = v.system
-    constraints = [{"description": label if label != "declared" else "constraint",
-                    "math": eq(f, 0)} for label, f in v.constraints]
+    parameters = set(v.parameter_symbols)
+    energy = next(n for n in ("h", "H", "E_J") if n not in parameters and n not in coords)
+
+    def label(name: str) -> sp.Symbol:
+        """`p_x_M` → p_{xM}; the energy function `h` renamed when a parameter is called h."""
+        if name == "h":
+            return sp.Symbol(energy)
+        head, _, sub = name.partition("_")
+        return sp.Symbol(f"{head}_{sub.replace('_', '')}" if sub else head)
+
+    constraints = [
+        {"description": label if label != "declared" else "constraint", "math": eq(f, 0)}
+        for label, f in v.constraints
+    ]
     return {
         "statement": _statement(v),
         "coordinates": [math(sp.Symbol(c)) for c in coords],
         "coordinate_names": list(coords),
-        "bodies": [{"name": b.name, "kind": _body_kind(b), "freedoms": b.freedoms}
-                   for b in v.bodies],
+        "bodies": [
+            {"name": b.name, "kind": _body_kind(b), "freedoms": b.freedoms} for b in v.bodies
+        ],
         "freedoms": sum(b.freedoms for b in v.bodies),
         "constraints": constraints,
         "k": len(constraints),
@@ -208,13 +243,16 @@ def _symbolic(scene_id: str, names: tuple, options: tuple) -> dict[str, Any]:
         "T": math(v.kinetic_energy),
         "V": math(v.potential_energy),
         "L": math(v.lagrangian),
-        "momenta": [eq(sp.Symbol(f"p_{c}"), p) for c, p in zip(coords, system.generalized_momenta,
-                                                              strict=True)],
+        "momenta": [
+            eq(label(f"p_{c}"), p) for c, p in zip(coords, system.generalized_momenta, strict=True)
+        ],
         "eom": [eq(e, 0) for e in system.euler_lagrange],
         "cyclic": [math(sp.Symbol(c)) for c in system.cyclic_coordinates],
         "cyclic_names": list(system.cyclic_coordinates),
-        "conserved": [{"name": name, "math": eq(sp.Symbol(name), q)}
-                      for name, q in system.conserved_quantities.items()],
+        "conserved": [
+            {"name": name, "math": eq(label(name), q)}
+            for name, q in system.conserved_quantities.items()
+        ],
         "figure": figures.draw(v),
     }
 
@@ -236,11 +274,16 @@ def _problem_view(problem: Problem, choice: VariantChoice, figure_name: str) -> 
     parameters = []
     for p in scene.parameters:
         value = choice.values.get(p.name)
-        parameters.append({
-            "name": p.name, "symbol": rm.render(variant.parameter_symbols[p.name]),
-            "value": None if value is None else f"{value:g}", "unit": p.unit,
-            "description": p.description, "domain": p.domain.text,
-        })
+        parameters.append(
+            {
+                "name": p.name,
+                "symbol": rm.render(variant.parameter_symbols[p.name]),
+                "value": None if value is None else f"{value:g}",
+                "unit": p.unit,
+                "description": p.description,
+                "domain": p.domain.text,
+            }
+        )
     declared = {q.name: q for q in scene.quantities}
     quantities = {}
     for part in problem.parts:
@@ -249,21 +292,40 @@ def _problem_view(problem: Problem, choice: VariantChoice, figure_name: str) -> 
         q = declared[part.quantity]
         expr = variant.quantities[q.name]
         quantities[q.name] = {
-            "name": q.name, "description": q.description, "unit": q.unit,
+            "name": q.name,
+            "description": q.description,
+            "unit": q.unit,
             "formula": rm.equation(sp.Symbol(q.name), expr, coords),
-            "value": _number(expr.xreplace(variant.numeric_values)),
+            "value": _number(
+                expr.xreplace(
+                    {
+                        variant.parameter_symbols[n]: sp.Float(v, 15)
+                        for n, v in choice.values.items()
+                    }
+                )
+            ),
         }
     parts = []
     for part in problem.parts:
         if part.part == EXPRESSION:
             q = declared[part.quantity]
             unit = f" (in {q.unit})" if q.unit else ""
-            prompt = f"Find {q.description}: a closed form in the parameters, and its value for " \
-                     f"your parameter values{unit}."
+            prompt = (
+                f"Find {q.description}: a closed form in the parameters, and its value for "
+                f"your parameter values{unit}."
+            )
         else:
             prompt = PROMPTS[part.part]
-        parts.append({"key": part.key, "part": part.part, "quantity": part.quantity,
-                      "points": part.points, "prompt": prompt, "multiline": part.part in MULTILINE})
+        parts.append(
+            {
+                "key": part.key,
+                "part": part.part,
+                "quantity": part.quantity,
+                "points": part.points,
+                "prompt": prompt,
+                "multiline": part.part in MULTILINE,
+            }
+        )
     return {
         "index": problem.index,
         "title": problem.title,
@@ -276,16 +338,21 @@ def _problem_view(problem: Problem, choice: VariantChoice, figure_name: str) -> 
         "parts": parts,
         "asked": [p.part for p in problem.parts],
         "total_points": problem.total_points,
-        "figure": {"svg": f"../figures/{figure_name}.svg", "pdf": f"../figures/{figure_name}.pdf",
-                   "inline_svg": _inline_svg(symbolic["figure"].svg)},
-        "solution": {**{k: v for k, v in symbolic.items() if k not in ("figure", "statement")},
-                     "quantities": quantities},
+        "figure": {
+            "svg": f"../figures/{figure_name}.svg",
+            "pdf": f"../figures/{figure_name}.pdf",
+            "inline_svg": _inline_svg(symbolic["figure"].svg),
+        },
+        "solution": {
+            **{k: v for k, v in symbolic.items() if k not in ("figure", "statement")},
+            "quantities": quantities,
+        },
     }
 
 
 def _inline_svg(svg: bytes) -> Markup:
     text = svg.decode("utf-8")
-    return Markup(text[text.index("<svg"):])
+    return Markup(text[text.index("<svg") :])
 
 
 def _figure_name(problem: Problem, choice: VariantChoice) -> str:
@@ -296,14 +363,19 @@ def _figure_name(problem: Problem, choice: VariantChoice) -> str:
 
 # --- generation --------------------------------------------------------------------------------
 
+
 def parse_formats(formats: str | Iterable[str]) -> tuple[str, ...]:
     """`md,html,tex,pdf` (any order, any subset) as a tuple in canonical order; pdf implies tex."""
-    items = [f.strip().lower() for f in (formats.split(",") if isinstance(formats, str) else formats)]
+    items = [
+        f.strip().lower() for f in (formats.split(",") if isinstance(formats, str) else formats)
+    ]
     items = [f for f in items if f]
     unknown = [f for f in items if f not in FORMATS]
     if unknown or not items:
-        raise AssignmentError(f"unknown format(s) {', '.join(unknown) or '(none given)'}; "
-                              f"choose from {', '.join(FORMATS)}")
+        raise AssignmentError(
+            f"unknown format(s) {', '.join(unknown) or '(none given)'}; "
+            f"choose from {', '.join(FORMATS)}"
+        )
     chosen = set(items) | ({"tex"} if "pdf" in items else set())
     return tuple(f for f in FORMATS if f in chosen)
 
@@ -357,8 +429,9 @@ def generate(
     if not isinstance(seed, int) or isinstance(seed, bool) or seed < 0:
         errors.append(f"seed {seed!r} is not a whole number >= 0")
     if out.exists() and not force:
-        errors.append(f"output folder {str(out)!r} exists; choose another or pass --force to "
-                      "replace it")
+        errors.append(
+            f"output folder {str(out)!r} exists; choose another or pass --force to replace it"
+        )
     if out.exists() and not out.is_dir():
         errors.append(f"output path {str(out)!r} is a file, not a folder")
     try:
@@ -368,22 +441,33 @@ def generate(
     if errors:
         raise AssignmentError("\n".join(errors))
     assert assignment is not None and roster is not None and chosen is not None
-    return _Generator(assignment, roster, seed, out, chosen, env, progress, verify,
-                      Path(assignment_path)).run(force)
+    return _Generator(
+        assignment, roster, seed, out, chosen, env, progress, verify, Path(assignment_path)
+    ).run(force)
 
 
 class _Generator:
     """One run of `generate` (state shared by its steps)."""
 
-    def __init__(self, assignment: Assignment, roster: Sequence[Student], seed: int, out: Path,
-                 formats: Sequence[str], env: jinja2.Environment, progress: Progress | None,
-                 verify: Verifier | None, assignment_path: Path):
+    def __init__(
+        self,
+        assignment: Assignment,
+        roster: Sequence[Student],
+        seed: int,
+        out: Path,
+        formats: Sequence[str],
+        env: jinja2.Environment,
+        progress: Progress | None,
+        verify: Verifier | None,
+        assignment_path: Path,
+    ):
         self.assignment, self.roster, self.seed, self.out = assignment, roster, seed, out
         self.formats, self.env, self.verify = formats, env, verify
         self.progress = progress or (lambda done, total, label: None)
         self.assignment_path = assignment_path
         self.warnings: list[str] = []
         self.files = 0
+        self.views: dict[tuple[int, int], dict[str, Any]] = {}  # students sharing a variant
 
     def run(self, force: bool) -> GenerateResult:
         ids = [s.id for s in self.roster]
@@ -391,7 +475,9 @@ class _Generator:
         self._verify(draws)
         templates = self._templates()
         self.out.parent.mkdir(parents=True, exist_ok=True)
-        tmp = Path(tempfile.mkdtemp(prefix=f".{self.out.name}.", suffix=".tmp", dir=self.out.parent))
+        tmp = Path(
+            tempfile.mkdtemp(prefix=f".{self.out.name}.", suffix=".tmp", dir=self.out.parent)
+        )
         try:
             self._write_all(tmp, draws, templates)
             self._move_into_place(tmp, force)
@@ -411,8 +497,10 @@ class _Generator:
                     continue
                 seen.add(choice.seed)
                 reported = self.verify(choice.variant(problem.scene), problem.parts) or ()
-                problems += [f"problem {problem.index} ({problem.scene_id}, seed {choice.seed}): "
-                             f"{message}" for message in reported]
+                problems += [
+                    f"problem {problem.index} ({problem.scene_id}, seed {choice.seed}): {message}"
+                    for message in reported
+                ]
         if problems:
             lines = "\n".join(f"  - {p}" for p in problems)
             raise AssignmentError(f"the grader does not accept some answer keys:\n{lines}")
@@ -435,36 +523,51 @@ class _Generator:
         path.write_bytes(data)
         self.files += 1
 
-    def _write_all(self, tmp: Path, draws: dict[int, dict[str, VariantChoice]],
-                   templates: dict[str, jinja2.Template]) -> None:
+    def _write_all(
+        self,
+        tmp: Path,
+        draws: dict[int, dict[str, VariantChoice]],
+        templates: dict[str, jinja2.Template],
+    ) -> None:
         total = len(self.roster) + (2 * len(self.roster) if "pdf" in self.formats else 0)
         done = 0
         figures_written: set[str] = set()
         students_manifest = []
-        base = {"title": self.assignment.title, "course": self.assignment.course,
-                "due": self.assignment.due, "instructions": self.assignment.instructions,
-                "total_points": self.assignment.total_points}
+        base = {
+            "title": self.assignment.title,
+            "course": self.assignment.course,
+            "due": self.assignment.due,
+            "instructions": self.assignment.instructions,
+            "total_points": self.assignment.total_points,
+        }
         for student in self.roster:
             views = []
             for problem in self.assignment.problems:
                 choice = draws[problem.index][student.id]
                 name = _figure_name(problem, choice)
-                view = _problem_view(problem, choice, name)
+                cache_key = (problem.index, choice.seed)
+                if cache_key not in self.views:
+                    self.views[cache_key] = _problem_view(problem, choice, name)
+                view = self.views[cache_key]
                 if name not in figures_written:
                     figure = _symbolic(problem.scene_id, *_presentation(choice))["figure"]
                     self._write(tmp / "figures" / f"{name}.svg", figure.svg)
                     self._write(tmp / "figures" / f"{name}.pdf", figure.pdf)
                     figures_written.add(name)
                 views.append(view)
-            context = {"assignment": base, "student": {"id": student.id, "name": student.name,
-                                                        "extra": dict(student.extra)},
-                       "problems": views, "seed": self.seed}
+            context = {
+                "assignment": base,
+                "student": {"id": student.id, "name": student.name, "extra": dict(student.extra)},
+                "problems": views,
+                "seed": self.seed,
+            }
             try:
                 for key, template in sorted(templates.items()):
                     kind, _, fmt = key.partition(".")
                     if kind == "answer_sheet":
-                        self._write(tmp / "answer_sheets" / f"{student.id}.toml",
-                                    template.render(context))
+                        self._write(
+                            tmp / "answer_sheets" / f"{student.id}.toml", template.render(context)
+                        )
                     else:
                         folder = "handouts" if kind == "handout" else "keys"
                         self._write(tmp / folder / f"{student.id}.{fmt}", template.render(context))
@@ -479,8 +582,12 @@ class _Generator:
         self.files += 1
         self._write(tmp / "manifest.json", self._manifest(students_manifest))
 
-    def _student_manifest(self, student: Student, draws: dict[int, dict[str, VariantChoice]],
-                          views: list[dict[str, Any]]) -> dict[str, Any]:
+    def _student_manifest(
+        self,
+        student: Student,
+        draws: dict[int, dict[str, VariantChoice]],
+        views: list[dict[str, Any]],
+    ) -> dict[str, Any]:
         files = {"answer_sheet": f"answer_sheets/{student.id}.toml"}
         for fmt in self.formats:
             files[f"handout_{fmt}"] = f"handouts/{student.id}.{fmt}"
@@ -488,34 +595,67 @@ class _Generator:
         problems = []
         for problem, view in zip(self.assignment.problems, views, strict=True):
             choice = draws[problem.index][student.id]
-            problems.append({
-                "index": problem.index, "scene": problem.scene_id, "seed": choice.seed,
-                "names": dict(choice.names), "options": dict(choice.options),
-                "values": dict(choice.values), "coordinates": view["coordinate_names"],
-                "figure": view["figure"]["svg"].removeprefix("../"),
-                "quantities": {k: {"value": q["value"], "unit": q["unit"],
-                                   "expression": q["formula"].plain}
-                               for k, q in view["solution"]["quantities"].items()},
-            })
-        return {"id": student.id, "name": student.name, "extra": dict(student.extra),
-                "files": files, "problems": problems}
+            problems.append(
+                {
+                    "index": problem.index,
+                    "scene": problem.scene_id,
+                    "seed": choice.seed,
+                    "names": dict(choice.names),
+                    "options": dict(choice.options),
+                    "values": dict(choice.values),
+                    "coordinates": view["coordinate_names"],
+                    "figure": view["figure"]["svg"].removeprefix("../"),
+                    "quantities": {
+                        k: {
+                            "value": q["value"],
+                            "unit": q["unit"],
+                            "expression": q["formula"].plain,
+                        }
+                        for k, q in view["solution"]["quantities"].items()
+                    },
+                }
+            )
+        return {
+            "id": student.id,
+            "name": student.name,
+            "extra": dict(student.extra),
+            "files": files,
+            "problems": problems,
+        }
 
     def _manifest(self, students: list[dict[str, Any]]) -> str:
         data = self.assignment_path.read_bytes()
-        problems = [{
-            "index": p.index, "scene": p.scene_id, "title": p.title,
-            "total_points": p.total_points, "variants": p.variants,
-            "distinct_variants": len({s["problems"][i]["seed"] for s in students}),
-            "parts": [{"key": part.key, "part": part.part, "quantity": part.quantity,
-                       "points": part.points} for part in p.parts],
-        } for i, p in enumerate(self.assignment.problems)]
+        problems = [
+            {
+                "index": p.index,
+                "scene": p.scene_id,
+                "title": p.title,
+                "total_points": p.total_points,
+                "variants": p.variants,
+                "distinct_variants": len({s["problems"][i]["seed"] for s in students}),
+                "parts": [
+                    {
+                        "key": part.key,
+                        "part": part.part,
+                        "quantity": part.quantity,
+                        "points": part.points,
+                    }
+                    for part in p.parts
+                ],
+            }
+            for i, p in enumerate(self.assignment.problems)
+        ]
         manifest = {
             "format": MANIFEST_FORMAT,
             "lagrade_version": project_version(),
-            "assignment": {"title": self.assignment.title, "course": self.assignment.course,
-                           "due": self.assignment.due, "file": "assignment.toml",
-                           "sha256": hashlib.sha256(data).hexdigest(),
-                           "total_points": self.assignment.total_points},
+            "assignment": {
+                "title": self.assignment.title,
+                "course": self.assignment.course,
+                "due": self.assignment.due,
+                "file": "assignment.toml",
+                "sha256": hashlib.sha256(data).hexdigest(),
+                "total_points": self.assignment.total_points,
+            },
             "seed": self.seed,
             "formats": list(self.formats),
             "problems": problems,
@@ -560,9 +700,19 @@ def compile_pdf(pdflatex: str, tex: Path, env: dict[str, str], timeout: float = 
     with tempfile.TemporaryDirectory(prefix="lagrade-tex-") as build:
         try:
             run = subprocess.run(
-                [pdflatex, "-interaction=nonstopmode", "-halt-on-error", "-no-shell-escape",
-                 f"-output-directory={build}", tex.name],
-                cwd=tex.parent, env=env, capture_output=True, timeout=timeout, check=False,
+                [
+                    pdflatex,
+                    "-interaction=nonstopmode",
+                    "-halt-on-error",
+                    "-no-shell-escape",
+                    f"-output-directory={build}",
+                    tex.name,
+                ],
+                cwd=tex.parent,
+                env=env,
+                capture_output=True,
+                timeout=timeout,
+                check=False,
             )
         except subprocess.TimeoutExpired:
             return f"pdflatex took more than {timeout:g} s"

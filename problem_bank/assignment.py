@@ -14,7 +14,7 @@ Reading it checks everything against the bank and reports every problem in one
     parts = ["dof", "lagrangian", "eom", { part = "expression", quantity = "block_acceleration" }]
     points = { lagrangian = 3, eom = 4 }   # or one number for every part
     variants = 12                          # size of the variant pool (default: one per student)
-    names = { x_M = ["x_M"] }              # allowed coordinate names (default: all the scene offers)
+    names = { x_M = ["x_M"] }              # allowed coordinate names (default: all offered)
     options = {}                           # allowed presentation options (default: all)
 """
 
@@ -180,7 +180,9 @@ def _parse_problem(
     scene_id = raw.get("scene")
     scene: Scene | None = None
     if not isinstance(scene_id, str):
-        problems.append(f"{where}.scene: missing or not a string; the bank has: {', '.join(scene_ids())}")
+        problems.append(
+            f"{where}.scene: missing or not a string; the bank has: {', '.join(scene_ids())}"
+        )
     else:
         try:
             scene = get_scene(scene_id)
@@ -192,12 +194,18 @@ def _parse_problem(
     parts = _apply_points(where, parts, points, default_points, problems)
     variants = raw.get("variants")
     if variants is not None and (
-        not isinstance(variants, int) or isinstance(variants, bool) or not 1 <= variants <= MAX_VARIANTS
+        not isinstance(variants, int)
+        or isinstance(variants, bool)
+        or not 1 <= variants <= MAX_VARIANTS
     ):
-        problems.append(f"{where}.variants: {variants!r} is not a whole number from 1 to {MAX_VARIANTS}")
+        problems.append(
+            f"{where}.variants: {variants!r} is not a whole number from 1 to {MAX_VARIANTS}"
+        )
         variants = None
     names = _parse_choices(where, "names", raw.get("names", {}), _offered_names(scene), problems)
-    options = _parse_choices(where, "options", raw.get("options", {}), _offered_options(scene), problems)
+    options = _parse_choices(
+        where, "options", raw.get("options", {}), _offered_options(scene), problems
+    )
     title = raw.get("title", "")
     if not isinstance(title, str):
         problems.append(f"{where}.title: {title!r} is not a string")
@@ -210,7 +218,9 @@ def _parse_problem(
 def _parse_parts(where: str, raw: Any, scene: Scene | None, problems: list[str]) -> list[Part]:
     """Parts as strings or tables; returned with placeholder points (set by _apply_points)."""
     if not isinstance(raw, list) or not raw:
-        problems.append(f"{where}.parts: missing or empty; choose from {', '.join(PARTS)}, {EXPRESSION}")
+        problems.append(
+            f"{where}.parts: missing or empty; choose from {', '.join(PARTS)}, {EXPRESSION}"
+        )
         return []
     parts: list[Part] = []
     seen: set[str] = set()
@@ -232,7 +242,9 @@ def _parse_parts(where: str, raw: Any, scene: Scene | None, problems: list[str])
             problems.append(f"{at}: {item!r} is neither a part name nor a table")
             continue
         if name not in PARTS and name != EXPRESSION:
-            problems.append(f"{at}: unknown part {name!r}; the parts are {', '.join(PARTS)}, {EXPRESSION}")
+            problems.append(
+                f"{at}: unknown part {name!r}; the parts are {', '.join(PARTS)}, {EXPRESSION}"
+            )
             continue
         if name == EXPRESSION:
             if not _check_quantity(at, quantity, scene, problems):
@@ -253,15 +265,19 @@ def _parse_parts(where: str, raw: Any, scene: Scene | None, problems: list[str])
 
 def _check_quantity(at: str, quantity: Any, scene: Scene | None, problems: list[str]) -> bool:
     if not isinstance(quantity, str):
-        problems.append(f"{at}.quantity: an {EXPRESSION!r} part names one of the scene's quantities")
+        problems.append(
+            f"{at}.quantity: an {EXPRESSION!r} part names one of the scene's quantities"
+        )
         return False
     if scene is None:
         return False
     declared = [q.name for q in scene.quantities]
     if quantity not in declared:
         offered = ", ".join(declared) if declared else "none"
-        problems.append(f"{at}.quantity: scene {scene.id!r} declares no quantity {quantity!r} "
-                        f"(it declares: {offered})")
+        problems.append(
+            f"{at}.quantity: scene {scene.id!r} declares no quantity {quantity!r} "
+            f"(it declares: {offered})"
+        )
         return False
     if quantity in PARTS:
         problems.append(f"{at}.quantity: {quantity!r} clashes with the part of that name")
@@ -275,7 +291,9 @@ def _scene_can_ask(at: str, name: str, scene: Scene, problems: list[str]) -> boo
         try:
             found = scene.default.conserved_quantities
         except Exception as exc:  # a scene's own derivation failing is worth naming here
-            problems.append(f"{at}: scene {scene.id!r} cannot derive its conserved quantities: {exc}")
+            problems.append(
+                f"{at}: scene {scene.id!r} cannot derive its conserved quantities: {exc}"
+            )
             return False
         if not found:
             problems.append(f"{at}: scene {scene.id!r} has no conserved quantity to ask for")
@@ -324,7 +342,7 @@ def _parse_choices(
 ) -> dict[str, tuple[str, ...]]:
     """Restrictions of the scene's renames or options to a non-empty subset of what it offers."""
     if not isinstance(raw, dict):
-        problems.append(f"{where}.{label}: {raw!r} is not a table such as {{ theta = [\"theta\"] }}")
+        problems.append(f'{where}.{label}: {raw!r} is not a table such as {{ theta = ["theta"] }}')
         return {}
     if not offered and not raw:
         return {}
@@ -336,13 +354,19 @@ def _parse_choices(
             problems.append(f"{at}: the scene has no {label[:-1]} {key!r} (it has: {known})")
             continue
         values = [value] if isinstance(value, str) else value
-        if not isinstance(values, list) or not values or not all(isinstance(v, str) for v in values):
+        if (
+            not isinstance(values, list)
+            or not values
+            or not all(isinstance(v, str) for v in values)
+        ):
             problems.append(f"{at}: {value!r} is not a non-empty list of strings")
             continue
         bad = [v for v in values if v not in offered[key]]
         if bad:
-            problems.append(f"{at}: {', '.join(map(repr, bad))} not offered (offered: "
-                            f"{', '.join(offered[key])})")
+            problems.append(
+                f"{at}: {', '.join(map(repr, bad))} not offered (offered: "
+                f"{', '.join(offered[key])})"
+            )
             continue
         chosen[key] = tuple(dict.fromkeys(values))
     return chosen

@@ -133,15 +133,21 @@ class _Geometry:
         return (x + _OBLIQUE[0] * y, z + _OBLIQUE[1] * y)
 
     def _length_scale(self) -> float:
-        lengths = [v for p in self.variant.scene.parameters if p.unit == "m"
-                   for s, v in self.values.items() if s.name == p.name]
+        lengths = [
+            v
+            for p in self.variant.scene.parameters
+            if p.unit == "m"
+            for s, v in self.values.items()
+            if s.name == p.name
+        ]
         return float(np.median(lengths)) if lengths else 1.0
 
     def _pose(self, ns: SimpleNamespace) -> dict[sp.Symbol, float]:
         pose: dict[sp.Symbol, float] = {}
         for i, j in enumerate(self.jets):
             pose[j.q] = (_ANGLE_POSES if self.is_angle(j.q) else _LENGTH_POSES)[i % 4] * (
-                1.0 if self.is_angle(j.q) else self.scale)
+                1.0 if self.is_angle(j.q) else self.scale
+            )
         for canonical, value in self.hint.poses.items():
             j = self.jets[self.variant.scene.coordinates.index(canonical)]
             pose[j.q] = self.number(value(ns), pose)
@@ -149,7 +155,11 @@ class _Geometry:
 
     def number(self, expr: Any, pose: Mapping[sp.Symbol, float] | None = None) -> float:
         """A hint's expression as a number at the representative values and pose."""
-        subs = dict(self.values) | dict(pose if pose is not None else self.pose) | {mech.t: self.hint.t}
+        subs = (
+            dict(self.values)
+            | dict(pose if pose is not None else self.pose)
+            | {mech.t: self.hint.t}
+        )
         return float(sp.sympify(expr).xreplace(subs))
 
     def is_angle(self, q: sp.Symbol) -> bool:
@@ -186,8 +196,10 @@ class _Geometry:
         rng = random.Random(1)
         points = []
         for _ in range(3):
-            point = {s: rng.uniform(*self.variant.domains[s.name].sample_range())
-                     for s in self.variant.parameter_symbols.values()}
+            point = {
+                s: rng.uniform(*self.variant.domains[s.name].sample_range())
+                for s in self.variant.parameter_symbols.values()
+            }
             point |= {j.q: rng.uniform(0.3, 1.3) for j in self.jets} | {mech.t: rng.uniform(0, 1)}
             points.append(point)
         return points
@@ -200,8 +212,11 @@ class _Geometry:
             return False
 
     def parameters_with_unit(self, unit: str) -> list[sp.Symbol]:
-        return [self.variant.parameter_symbols[p.name] for p in self.variant.scene.parameters
-                if p.unit == unit]
+        return [
+            self.variant.parameter_symbols[p.name]
+            for p in self.variant.scene.parameters
+            if p.unit == unit
+        ]
 
 
 class _Drawing:
@@ -228,12 +243,18 @@ def _circle(geometry: _Geometry, body: int, q: sp.Symbol) -> tuple[np.ndarray, f
     radii = np.hypot(*(check - centre).T)
     if geometry.three_d:
         # the projection of a tilted circle is an ellipse; test the circle in 3-D instead
-        raw = [sp.lambdify(geometry.args, [sp.sympify(x).xreplace(geometry.values)
-                                           for x in geometry.bodies[body].position],
-                           modules="numpy")]
+        raw = [
+            sp.lambdify(
+                geometry.args,
+                [sp.sympify(x).xreplace(geometry.values) for x in geometry.bodies[body].position],
+                modules="numpy",
+            )
+        ]
         base = dict(geometry.pose) | {mech.t: geometry.hint.t}
+
         def point3(a: float) -> np.ndarray:
             return np.array(raw[0](*[a if s == q else base[s] for s in geometry.args]), dtype=float)
+
         c3 = np.mean([point3(a) for a in angles], axis=0)
         radii = np.array([np.linalg.norm(point3(a) - c3) for a in (0.3, 1.1, 2.0, 4.4)])
     radius = float(radii.mean())
@@ -255,18 +276,24 @@ def _plan(geometry: _Geometry) -> _Drawing:
     g = geometry
     ns = g.variant.namespace
     shaped = set(g.hint.shapes)
-    for i, b in enumerate(g.bodies):
+    for i in range(len(g.bodies)):
         d.add_points(g.at(i))
     for body_name, shape in g.hint.shapes.items():
         vertices = np.array([[g.number(c) for c in g.project(v)] for v in shape(ns)])
         d.add_points(vertices)
-        d.ops.append(lambda ax, u, v=vertices: ax.fill(*v.T, facecolor="#e4e4e4", edgecolor=_INK,
-                                                       linewidth=1.2, zorder=2))
+        d.ops.append(
+            lambda ax, u, v=vertices: ax.fill(
+                *v.T, facecolor="#e4e4e4", edgecolor=_INK, linewidth=1.2, zorder=2
+            )
+        )
         index = next((k for k, b in enumerate(g.bodies) if b.name == body_name), None)
         if index is not None:
             centroid = vertices.mean(axis=0)
-            d.ops.append(lambda ax, u, c=centroid, b=g.bodies[index]: _text(
-                ax, c, f"${sp.latex(b.mass)}$", zorder=6))
+            d.ops.append(
+                lambda ax, u, c=centroid, b=g.bodies[index]: _text(
+                    ax, c, f"${sp.latex(b.mass)}$", zorder=6
+                )
+            )
     centre_of = np.mean(np.vstack(d.points), axis=0)
     for k, j in enumerate(g.jets):
         canonical = g.variant.scene.coordinates[k]
@@ -296,8 +323,11 @@ def _plan(geometry: _Geometry) -> _Drawing:
     _plan_time(d)
     for name, ends in g.hint.dimensions:
         a, b = (np.array([g.number(c) for c in g.project(p)]) for p in ends(ns))
-        d.ops.append(lambda ax, u, a=a, b=b, n=name: _dimension(ax, u, a, b, f"${name_latex(n)}$",
-                                                               centre_of, both=True))
+        d.ops.append(
+            lambda ax, u, a=a, b=b, n=name: _dimension(
+                ax, u, a, b, f"${name_latex(n)}$", centre_of, both=True
+            )
+        )
     for i, b in enumerate(g.bodies):
         if b.name in shaped:
             continue
@@ -319,30 +349,50 @@ def _plan_angle(d: _Drawing, body: int, j: mech.Jet, label: str, canonical: str)
         return
     centre, radius = found
     position = g.at(body)[0]
-    pivot_body = next((k for k in range(len(g.bodies)) if k != body
-                       and np.allclose(g.at(k)[0], centre, atol=1e-6 * max(radius, 1))), None)
+    pivot_body = next(
+        (
+            k
+            for k in range(len(g.bodies))
+            if k != body and np.allclose(g.at(k)[0], centre, atol=1e-6 * max(radius, 1))
+        ),
+        None,
+    )
     # the rod's length, symbolically: |P - C|² with C the mean of three points on the circle
     p_sym = [g.project(g.bodies[body].position)[k] for k in range(2)]
-    c_sym = [sum(sp.sympify(p).subs(j.q, a) for a in (0, 2 * sp.pi / 3, 4 * sp.pi / 3)) / 3
-             for p in p_sym]
-    length = None if g.three_d else _label_for_length(
-        g, sum((p - c) ** 2 for p, c in zip(p_sym, c_sym, strict=True)))
+    c_sym = [
+        sum(sp.sympify(p).subs(j.q, a) for a in (0, 2 * sp.pi / 3, 4 * sp.pi / 3)) / 3
+        for p in p_sym
+    ]
+    length = (
+        None
+        if g.three_d
+        else _label_for_length(g, sum((p - c) ** 2 for p, c in zip(p_sym, c_sym, strict=True)))
+    )
     if g.three_d:
         raw = g.bodies[body].position
-        c3 = [sum(sp.sympify(p).subs(j.q, a) for a in (0, 2 * sp.pi / 3, 4 * sp.pi / 3)) / 3
-              for p in raw]
-        length = _label_for_length(g, sum((sp.sympify(p) - c) ** 2 for p, c in zip(raw, c3,
-                                                                                  strict=True)))
+        c3 = [
+            sum(sp.sympify(p).subs(j.q, a) for a in (0, 2 * sp.pi / 3, 4 * sp.pi / 3)) / 3
+            for p in raw
+        ]
+        length = _label_for_length(
+            g, sum((sp.sympify(p) - c) ** 2 for p, c in zip(raw, c3, strict=True))
+        )
     zero = g.at(body, {j.q: np.array([0.0])})[0]
     arc = g.at(body, {j.q: np.linspace(0.0, pose, 40)})
     rods = g.hint.rods
 
     def draw(ax: Any, unit: float) -> None:
-        ax.plot(*np.array([centre, zero]).T, color=_GREY, linewidth=0.8, linestyle=(0, (4, 3)),
-                zorder=1)
+        ax.plot(
+            *np.array([centre, zero]).T, color=_GREY, linewidth=0.8, linestyle=(0, (4, 3)), zorder=1
+        )
         if rods:
-            ax.plot(*np.array([centre, position]).T, color=_INK, linewidth=2.2, zorder=3,
-                    solid_capstyle="round")
+            ax.plot(
+                *np.array([centre, position]).T,
+                color=_INK,
+                linewidth=2.2,
+                zorder=3,
+                solid_capstyle="round",
+            )
             if pivot_body is None:
                 _pivot(ax, centre, unit)
         else:
@@ -359,8 +409,9 @@ def _plan_angle(d: _Drawing, body: int, j: mech.Jet, label: str, canonical: str)
     d.ops.append(draw)
 
 
-def _plan_length(d: _Drawing, body: int, j: mech.Jet, label: str, trace: np.ndarray,
-                 centre_of: np.ndarray) -> None:
+def _plan_length(
+    d: _Drawing, body: int, j: mech.Jet, label: str, trace: np.ndarray, centre_of: np.ndarray
+) -> None:
     g = d.g
     pose = g.pose[j.q]
     pts = g.at(body, {j.q: np.linspace(0.0, pose, 30)})
@@ -374,8 +425,9 @@ def _plan_length(d: _Drawing, body: int, j: mech.Jet, label: str, trace: np.ndar
     direction = [sp.diff(sp.sympify(c), j.q) for c in position]
     for a in g.parameters_with_unit("rad"):
         for sign in (1, -1):
-            if g.identically_zero(direction[1] * sp.cos(a) - sign * direction[0] * sp.sin(a)) \
-                    and not g.identically_zero(direction[0]):
+            if g.identically_zero(
+                direction[1] * sp.cos(a) - sign * direction[0] * sp.sin(a)
+            ) and not g.identically_zero(direction[0]):
                 d.ops.append(lambda ax, u, a=a: _incline_angle(ax, u, trace, name_latex(a.name)))
                 return
 
@@ -385,14 +437,20 @@ def _plan_rotation(d: _Drawing, j: mech.Jet, label: str) -> None:
     g = d.g
     for i, b in enumerate(g.bodies):
         if isinstance(b, RigidBody) and sp.sympify(b.angle).has(j.q):
+
             def draw(ax: Any, unit: float, i: int = i) -> None:
                 centre = g.at(i)[0]
                 r = 1.5 * _body_radius(g, i, unit)
                 angles = np.linspace(0.3, 0.3 + g.pose[j.q] + 0.8, 40)
                 pts = centre + r * np.column_stack([np.cos(angles), np.sin(angles)])
                 _arc_arrow(ax, pts, label)
-                _text(ax, centre + 1.3 * r * np.array([math.cos(0.2), math.sin(0.2)]), label,
-                      color=_ACCENT)
+                _text(
+                    ax,
+                    centre + 1.3 * r * np.array([math.cos(0.2), math.sin(0.2)]),
+                    label,
+                    color=_ACCENT,
+                )
+
             d.ops.append(draw)
             return
 
@@ -420,17 +478,24 @@ def _plan_time(d: _Drawing) -> None:
         d.add_points(pts)
         d.traces.append((pts, "time"))
         axis = _rotation_axis(g, i, times) if label != "$t$" else None
-        d.ops.append(lambda ax, u, pts=pts, label=label, axis=axis: _time_mark(ax, u, pts, label,
-                                                                               axis))
+        d.ops.append(
+            lambda ax, u, pts=pts, label=label, axis=axis: _time_mark(ax, u, pts, label, axis)
+        )
 
 
-def _rotation_axis(g: _Geometry, body: int, times: np.ndarray) -> tuple[np.ndarray, np.ndarray] | None:
+def _rotation_axis(
+    g: _Geometry, body: int, times: np.ndarray
+) -> tuple[np.ndarray, np.ndarray] | None:
     """(projected centre, projected unit direction) of the axis a body circles about in time."""
     position = [sp.sympify(x).xreplace(g.values) for x in g.bodies[body].position]
     f = sp.lambdify(g.args, position, modules="numpy")
     base = dict(g.pose)
-    pts = np.array([np.broadcast_to(np.asarray(v, dtype=float), times.shape) for v in
-                    f(*[times if s == mech.t else base[s] for s in g.args])]).T[:-1]
+    pts = np.array(
+        [
+            np.broadcast_to(np.asarray(v, dtype=float), times.shape)
+            for v in f(*[times if s == mech.t else base[s] for s in g.args])
+        ]
+    ).T[:-1]
     if pts.shape[1] != 3:
         return None
     centre = pts.mean(axis=0)
@@ -447,9 +512,18 @@ def _rotation_axis(g: _Geometry, body: int, times: np.ndarray) -> tuple[np.ndarr
 
 # --- drawing primitives ------------------------------------------------------------------------
 
+
 def _text(ax: Any, at: np.ndarray, text: str, color: str = _INK, zorder: int = 7) -> None:
-    ax.text(float(at[0]), float(at[1]), text, ha="center", va="center", color=color,
-            fontsize=12, zorder=zorder)
+    ax.text(
+        float(at[0]),
+        float(at[1]),
+        text,
+        ha="center",
+        va="center",
+        color=color,
+        fontsize=12,
+        zorder=zorder,
+    )
 
 
 def _unit_normal(a: np.ndarray, b: np.ndarray) -> np.ndarray:
@@ -466,15 +540,34 @@ def _away(a: np.ndarray, b: np.ndarray, centre_of: np.ndarray | None) -> np.ndar
     return n
 
 
-def _dimension(ax: Any, unit: float, a: np.ndarray, b: np.ndarray, label: str,
-               centre_of: np.ndarray, both: bool = False, path: np.ndarray | None = None) -> None:
+def _dimension(
+    ax: Any,
+    unit: float,
+    a: np.ndarray,
+    b: np.ndarray,
+    label: str,
+    centre_of: np.ndarray,
+    both: bool = False,
+    path: np.ndarray | None = None,
+) -> None:
     n = _away(a, b, centre_of)
     off = 0.08 * unit * n
     pts = (path if path is not None else np.array([a, b])) + off
     style = "<|-|>" if both else "-|>"
-    ax.annotate("", xy=pts[-1], xytext=pts[-2] if len(pts) > 2 else pts[0],
-                arrowprops=dict(arrowstyle=style if not both else "<|-|>", color=_ACCENT,
-                                linewidth=1.0, shrinkA=0, shrinkB=0, mutation_scale=9), zorder=5)
+    ax.annotate(
+        "",
+        xy=pts[-1],
+        xytext=pts[-2] if len(pts) > 2 else pts[0],
+        arrowprops=dict(
+            arrowstyle=style if not both else "<|-|>",
+            color=_ACCENT,
+            linewidth=1.0,
+            shrinkA=0,
+            shrinkB=0,
+            mutation_scale=9,
+        ),
+        zorder=5,
+    )
     ax.plot(*pts.T, color=_ACCENT, linewidth=1.0, zorder=5)
     for end in (a, b):
         tick = np.array([end + 0.03 * unit * n, end + 0.11 * unit * n])
@@ -482,8 +575,9 @@ def _dimension(ax: Any, unit: float, a: np.ndarray, b: np.ndarray, label: str,
     _text(ax, (a + b) / 2 + 0.16 * unit * n, label, color=_ACCENT)
 
 
-def _along_label(ax: Any, a: np.ndarray, b: np.ndarray, label: str, unit: float,
-                 centre_of: np.ndarray | None) -> None:
+def _along_label(
+    ax: Any, a: np.ndarray, b: np.ndarray, label: str, unit: float, centre_of: np.ndarray | None
+) -> None:
     n = _unit_normal(a, b)
     if n[1] < 0 or (abs(n[1]) < 1e-9 and n[0] < 0):
         n = -n
@@ -494,9 +588,15 @@ def _arc_arrow(ax: Any, pts: np.ndarray, label: str) -> None:
     if len(pts) < 2 or np.hypot(*(pts[-1] - pts[0])) < 1e-12:
         return
     ax.plot(*pts.T, color=_ACCENT, linewidth=1.0, zorder=5)
-    ax.annotate("", xy=pts[-1], xytext=pts[-2], arrowprops=dict(
-        arrowstyle="-|>", color=_ACCENT, linewidth=1.0, shrinkA=0, shrinkB=0, mutation_scale=9),
-        zorder=5)
+    ax.annotate(
+        "",
+        xy=pts[-1],
+        xytext=pts[-2],
+        arrowprops=dict(
+            arrowstyle="-|>", color=_ACCENT, linewidth=1.0, shrinkA=0, shrinkB=0, mutation_scale=9
+        ),
+        zorder=5,
+    )
 
 
 def _arrow_along(ax: Any, pts: np.ndarray, label: str, unit: float) -> None:
@@ -522,16 +622,22 @@ def _incline_angle(ax: Any, unit: float, trace: np.ndarray, name: str) -> None:
     pts = low + r * np.column_stack([np.cos(angles), np.sin(angles)])
     ax.plot(*pts.T, color=_ACCENT, linewidth=1.0, zorder=5)
     mid = (base + up) / 2
-    _text(ax, low + 1.35 * r * np.array([math.cos(mid), math.sin(mid)]), f"${name}$",
-          color=_ACCENT)
+    _text(ax, low + 1.35 * r * np.array([math.cos(mid), math.sin(mid)]), f"${name}$", color=_ACCENT)
 
 
-def _time_mark(ax: Any, unit: float, pts: np.ndarray, label: str,
-               axis: tuple[np.ndarray, np.ndarray] | None) -> None:
+def _time_mark(
+    ax: Any, unit: float, pts: np.ndarray, label: str, axis: tuple[np.ndarray, np.ndarray] | None
+) -> None:
     k = 3 * len(pts) // 8
-    ax.annotate("", xy=pts[k + 4], xytext=pts[k], arrowprops=dict(
-        arrowstyle="-|>", color=_ACCENT, linewidth=1.0, shrinkA=0, shrinkB=0, mutation_scale=10),
-        zorder=5)
+    ax.annotate(
+        "",
+        xy=pts[k + 4],
+        xytext=pts[k],
+        arrowprops=dict(
+            arrowstyle="-|>", color=_ACCENT, linewidth=1.0, shrinkA=0, shrinkB=0, mutation_scale=10
+        ),
+        zorder=5,
+    )
     centre = pts.mean(axis=0)
     out = pts[k + 2] - centre
     out = out / (np.hypot(*out) or 1.0)
@@ -566,8 +672,9 @@ def _body(ax: Any, unit: float, g: _Geometry, i: int, b: Any) -> None:
     at = g.at(i)[0]
     r = _body_radius(g, i, unit)
     if isinstance(b, RigidBody):
-        ax.add_patch(Circle(tuple(at), r, facecolor="#f2f2f2", edgecolor=_INK, linewidth=1.4,
-                            zorder=4))
+        ax.add_patch(
+            Circle(tuple(at), r, facecolor="#f2f2f2", edgecolor=_INK, linewidth=1.4, zorder=4)
+        )
         phi = g.number(b.angle)
         tip = at + r * np.array([math.cos(phi), math.sin(phi)])
         ax.plot(*np.array([at, tip]).T, color=_INK, linewidth=1.2, zorder=5)
@@ -580,8 +687,14 @@ def _body(ax: Any, unit: float, g: _Geometry, i: int, b: Any) -> None:
 def _gravity(ax: Any, unit: float, d: _Drawing) -> None:
     allpts = np.vstack(d.points)
     top = np.array([allpts[:, 0].max() + 0.12 * unit, allpts[:, 1].max()])
-    ax.annotate("", xy=top - np.array([0, 0.2 * unit]), xytext=top, arrowprops=dict(
-        arrowstyle="-|>", color=_INK, linewidth=1.2, shrinkA=0, shrinkB=0, mutation_scale=10))
+    ax.annotate(
+        "",
+        xy=top - np.array([0, 0.2 * unit]),
+        xytext=top,
+        arrowprops=dict(
+            arrowstyle="-|>", color=_INK, linewidth=1.2, shrinkA=0, shrinkB=0, mutation_scale=10
+        ),
+    )
     _text(ax, top - np.array([-0.06 * unit, 0.1 * unit]), "$g$")
 
 
@@ -589,8 +702,14 @@ def _axes3d(ax: Any, unit: float, g: _Geometry) -> None:
     origin = np.zeros(2)
     for name, vec in (("x", (1, 0, 0)), ("y", (0, 1, 0)), ("z", (0, 0, 1))):
         tip = np.array([float(c) for c in g.project(vec)]) * 0.25 * unit
-        ax.annotate("", xy=tip, xytext=origin, arrowprops=dict(
-            arrowstyle="-|>", color=_GREY, linewidth=0.8, shrinkA=0, shrinkB=0, mutation_scale=8))
+        ax.annotate(
+            "",
+            xy=tip,
+            xytext=origin,
+            arrowprops=dict(
+                arrowstyle="-|>", color=_GREY, linewidth=0.8, shrinkA=0, shrinkB=0, mutation_scale=8
+            ),
+        )
         _text(ax, tip * 1.18, f"${name}$", color=_GREY)
 
 
@@ -616,7 +735,10 @@ def draw(variant: SceneVariant) -> Figure:
         raise FigureError(f"scene {variant.scene.id!r}: cannot draw its figure ({exc})") from exc
     allpts = np.vstack(plan.points)
     lo, hi = allpts.min(axis=0), allpts.max(axis=0)
-    unit = float(max(hi - lo)) or 1.0
+    unit = float(max(hi - lo))
+    if unit < 1e-6 * geometry.scale:  # nothing moves in space (a wheel turning in place)
+        unit = geometry.scale
+        lo, hi = lo - 0.5 * unit, hi + 0.5 * unit
     with matplotlib.rc_context(_RC):
         fig = MplFigure(figsize=(4.6, 3.6))
         ax = fig.add_axes((0, 0, 1, 1))

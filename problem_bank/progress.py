@@ -14,8 +14,13 @@ from typing import TextIO
 class ProgressBar:
     """`bar(done, total, label)` redraws one line; `close()` ends it with a newline."""
 
-    def __init__(self, stream: TextIO | None = None, enabled: bool | None = None, width: int = 30,
-                 min_interval: float = 0.1):
+    def __init__(
+        self,
+        stream: TextIO | None = None,
+        enabled: bool | None = None,
+        width: int = 30,
+        min_interval: float = 0.1,
+    ):
         self.stream = stream if stream is not None else sys.stderr
         isatty = getattr(self.stream, "isatty", lambda: False)
         self.enabled = isatty() if enabled is None else enabled

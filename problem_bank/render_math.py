@@ -114,7 +114,9 @@ class Math:
 def render(expr: sp.Basic, coordinates: Iterable[str] = ()) -> Math:
     """All notations of `expr` at once (inline and display MathML)."""
     coords = tuple(coordinates)
-    return Math(latex(expr, coords), mathml(expr, coords), mathml(expr, coords, "block"), plain(expr))
+    return Math(
+        latex(expr, coords), mathml(expr, coords), mathml(expr, coords, "block"), plain(expr)
+    )
 
 
 def equation(lhs: sp.Basic, rhs: sp.Basic, coordinates: Iterable[str] = ()) -> Math:

@@ -54,7 +54,9 @@ def parse_roster(text: str, source: str = "roster") -> tuple[Student, ...]:
     try:
         header = next(reader)
     except StopIteration:
-        raise AssignmentError(f"{source} is empty; it needs a header line with id and name") from None
+        raise AssignmentError(
+            f"{source} is empty; it needs a header line with id and name"
+        ) from None
     except csv.Error as exc:
         raise AssignmentError(f"{source}, line 1: {exc}") from None
     columns = [h.strip() for h in header]
@@ -99,12 +101,17 @@ def parse_roster(text: str, source: str = "roster") -> tuple[Student, ...]:
             continue
         folded = sid.casefold()
         if folded in seen:
-            problems.append(f"line {line}: duplicate id {sid!r} (already on line {seen[folded]}; "
-                            "ids are compared ignoring case)")
+            problems.append(
+                f"line {line}: duplicate id {sid!r} (already on line {seen[folded]}; "
+                "ids are compared ignoring case)"
+            )
             continue
         seen[folded] = line
-        extra = {c: v.strip() for i, (c, v) in enumerate(zip(columns, row, strict=True))
-                 if i not in (id_at, name_at)}
+        extra = {
+            c: v.strip()
+            for i, (c, v) in enumerate(zip(columns, row, strict=True))
+            if i not in (id_at, name_at)
+        }
         students.append(Student(sid, name, extra, line))
     if not students and not problems:
         problems.append("no student rows after the header")

@@ -83,13 +83,18 @@ def build_pool(problem: Problem, assignment_seed: int, wanted: int) -> tuple[Var
 
 
 def assign(
-    problem: Problem, assignment_seed: int, student_ids: Sequence[str], pool: Sequence[VariantChoice]
+    problem: Problem,
+    assignment_seed: int,
+    student_ids: Sequence[str],
+    pool: Sequence[VariantChoice],
 ) -> dict[str, VariantChoice]:
     """Each student's variant from the pool, spread evenly (see the module docstring)."""
     if not pool:
         raise AssertionError(f"empty variant pool for problem {problem.index}")
-    order = sorted(student_ids, key=lambda sid: (digest("lagrade-student", assignment_seed,
-                                                        problem.index, sid), sid))
+    order = sorted(
+        student_ids,
+        key=lambda sid: (digest("lagrade-student", assignment_seed, problem.index, sid), sid),
+    )
     used = [0] * len(pool)
     chosen: dict[str, VariantChoice] = {}
     for sid in order:

@@ -1,0 +1,48 @@
+"""Hostile roster names are shown, never run or interpreted, in every format."""
+
+from __future__ import annotations
+
+import tomllib
+from pathlib import Path
+
+from problem_bank.assign import md_escape, tex_escape, toml_string
+
+from .conftest import write_roster
+
+HOSTILE = [
+    ("h1", "<script>alert(1)</script>"),
+    ("h2", '"; rm -rf /'),
+    ("h3", "{{7*7}}"),
+    ("h4", r"\input{/etc/passwd} & 100% $x$ #1 _a {b} ~c ^d"),
+    ("h5", "Robert'); DROP TABLE students;--\nsecond line"),
+]
+
+
+def test_hostile_names(small_assignment: Path, tmp_path: Path) -> None:
+    from problem_bank.assign import generate
+
+    roster = write_roster(tmp_path / "r.csv", HOSTILE)
+    out = tmp_path / "out"
+    generate(small_assignment, roster, 5, out, "md,html,tex")
+    html = (out / "handouts" / "h1.html").read_text()
+    assert "<script>" not in html and "&lt;script&gt;alert(1)&lt;/script&gt;" in html
+    assert "&#34;; rm -rf /" in (out / "handouts" / "h2.html").read_text()
+    for fmt in ("md", "html", "tex"):
+        text = (out / "handouts" / f"h3.{fmt}").read_text()
+        assert "49" not in text.split("Problem 1")[0]
+    tex = (out / "handouts" / "h4.tex").read_text()
+    assert (
+        r"\textbackslash{}input\{/etc/passwd\} \& 100\% \$x\$ \#1 \_a \{b\} "
+        r"\textasciitilde{}c \textasciicircum{}d" in tex
+    )
+    md = (out / "handouts" / "h1.md").read_text()
+    assert "<script>" not in md
+    for sid, name in HOSTILE:
+        sheet = tomllib.loads((out / "answer_sheets" / f"{sid}.toml").read_text())
+        assert sheet["name"] == name.strip()
+
+
+def test_filters() -> None:
+    assert tex_escape("a_b & c") == r"a\_b \& c"
+    assert md_escape("<b>*x*</b>") == r"\<b\>\*x\*\</b\>"
+    assert tomllib.loads("v = " + toml_string('a"b\\c\nd\x01'))["v"] == 'a"b\\c\nd\x01'

@@ -1,0 +1,172 @@
+"""The numeric core: the whitelist evaluator, term-scaled tolerances, 50-digit confirmation,
+Euler–Lagrange values by hyper-dual numbers, spans and accelerations at sample points."""
+
+from __future__ import annotations
+
+import mpmath
+import numpy as np
+import pytest
+import sympy as sp
+
+from grader.equivalence import (
+    Compiled,
+    Space,
+    equation_rows,
+    euler_lagrange_values,
+    expressions_equal,
+    decide,
+    in_span,
+    lagrangians_match,
+    finite_mask,
+    row_rank,
+    seed_for,
+    solve_accelerations,
+    time_derivative_on_shell,
+)
+from grader.evaluate import FLOAT, MP, UnsupportedExpression, compile_program, run
+from problem_bank import Domain, get_scene
+from problem_bank.mechanics import jet, t
+
+x, y = sp.symbols("x y", real=True)
+q = jet("q")
+th = jet("theta")
+m, g, l = (sp.Symbol(n, positive=True) for n in "mgl")
+
+
+def space_of(jets=(), **params):
+    return Space(tuple(jets), {sp.Symbol(n, positive=True): Domain.parse(d) for n, d in params.items()})
+
+
+@pytest.fixture(scope="module")
+def pend():
+    """A simple pendulum: L = ½ m l² θ̇² + m g l cos θ."""
+    space = Space((th,), {s: Domain.parse("positive") for s in (m, g, l)})
+    L = m * l**2 * th.dot**2 / 2 + m * g * l * sp.cos(th.q)
+    points = space.draw(1, valid=finite_mask([Compiled.of(L)]))
+    return space, L, points
+
+
+@pytest.mark.parametrize("expr", [
+    sp.sin(x) * sp.cos(y) + sp.tan(x / 3), sp.exp(-x) * sp.log(y**2 + 1), sp.sqrt(x**2 + 1),
+    sp.asin(x / 5) + sp.acos(y / 4) + sp.atan(x), sp.sinh(x) - sp.cosh(y) + sp.tanh(x * y),
+    sp.sec(x) + sp.csc(y) + sp.cot(x + y), sp.Abs(x - y) + sp.pi * sp.E, (x**2 + 1) ** sp.Rational(3, 2),
+    x**y if False else (x**2 + 1) ** (y**2),
+])
+def test_evaluator_agrees_with_sympy(expr):
+    program = compile_program([expr])
+    env = {x: np.array([0.7, -1.3]), y: np.array([1.1, 0.4])}
+    got = run(program, env)[0]
+    for i in range(2):
+        want = float(expr.evalf(30, subs={x: env[x][i], y: env[y][i]}))
+        assert got[i] == pytest.approx(want, rel=1e-12)
+
+
+@pytest.mark.parametrize("bad", [sp.Function("f")(x), sp.Derivative(sp.Function("f")(x), x),
+                                 sp.I * x, sp.gamma(x), sp.zoo])
+def test_evaluator_rejects_what_it_does_not_know(bad):
+    with pytest.raises(UnsupportedExpression):
+        compile_program([bad])
+
+
+def test_mp_backend_gives_50_digits():
+    program = compile_program([sp.sin(x) ** 2 + sp.cos(x) ** 2 - 1])
+    with mpmath.workdps(50):
+        value = run(program, {x: MP.array(np.array([0.3]))}, MP)[0][0]
+    assert abs(value) < mpmath.mpf(10) ** -45
+
+
+def test_cancellation_is_measured_against_the_terms():
+    """(x + 10⁶)³ expanded and cancelled leaves small terms; the tolerance sees the big ones."""
+    big = sp.Integer(10**6)
+    a = Compiled.of((x + big) ** 3 - big**3 - 3 * big**2 * x)
+    b = Compiled.of(x**3 + 3 * big * x**2)
+    points = Space((), {x: Domain.parse("real")}).draw(3)
+    assert expressions_equal(a, b, points).equal
+
+
+def test_tiny_difference_is_decided_at_50_digits():
+    a = Compiled.of(sp.sin(x) ** 2 + sp.Rational(1, 10**8) * x)
+    b = Compiled.of(1 - sp.cos(x) ** 2)
+    out = expressions_equal(a, b, Space((), {x: Domain.parse("real")}).draw(4))
+    assert not out.equal and out.method == "numeric+mpmath50" and out.where is not None
+
+
+def test_answer_undefined_where_reference_is_defined_is_wrong():
+    points = Space((q,), {}).draw(5)
+    out = expressions_equal(Compiled.of(sp.log(q.q)), Compiled.of(q.q), points)
+    assert not out.equal and out.reason == "undefined"
+
+
+def test_points_where_the_reference_is_undefined_are_redrawn():
+    ref = Compiled.of(sp.sqrt(q.q - 1))
+    points = Space((q,), {}).draw(6, valid=finite_mask([ref]))
+    assert np.all(points.env[q.q] > 1)
+    assert expressions_equal(Compiled.of(sp.sqrt(q.q - 1)), ref, points).equal
+
+
+def test_sqrt_of_a_square_is_not_the_function():
+    points = Space((th,), {}).draw(7)
+    out = expressions_equal(Compiled.of(sp.sqrt(1 - sp.cos(th.q) ** 2)), Compiled.of(sp.sin(th.q)), points)
+    assert not out.equal
+
+
+def test_euler_lagrange_values_match_the_symbolic_equations(pend):
+    space, L, points = pend
+    E, S = euler_lagrange_values(Compiled.of(L), (th,), points.env)
+    symbolic = m * l**2 * th.ddot + m * g * l * sp.sin(th.q)
+    want = Compiled.of(symbolic).values(points.env)[0]
+    assert np.allclose(E[:, 0], want, rtol=1e-13)
+    assert np.all(S[:, 0] >= np.abs(E[:, 0]))
+
+
+@pytest.mark.parametrize("factor, extra, equal", [
+    (1, 0, True), (2, 0, True), (-1, 0, True), (1, 5 * m * g, True),
+    (1, sp.cos(th.q) * th.dot * m, True),      # d/dt(m sin θ): a total derivative
+    (1, th.q * th.dot**2 * m, False),
+])
+def test_lagrangians_match_up_to_factor_constant_and_total_derivative(pend, factor, extra, equal):
+    space, L, points = pend
+    match = lagrangians_match(Compiled.of(factor * L + extra), Compiled.of(L), (th,), points)
+    assert match.outcome.equal is equal
+    if equal:
+        assert match.factor == pytest.approx(factor)
+
+
+def test_factor_depending_on_parameters_is_per_group(pend):
+    space, L, points = pend
+    match = lagrangians_match(Compiled.of(L / m), Compiled.of(L), (th,), points)
+    assert match.outcome.equal and match.factor is None
+
+
+def test_rows_span_and_accelerations():
+    wedge = get_scene("wedge").default
+    problem_space = Space(wedge.jets, {wedge.parameter_symbols[n]: d for n, d in wedge.domains.items()})
+    E = [Compiled.of(e) for e in wedge.euler_lagrange]
+    points = problem_space.draw(seed_for("test"))
+    ref = equation_rows(E, wedge.jets, points.env)
+    acc = solve_accelerations(ref)
+    exact = [Compiled.of(a).values(points.env)[0] for a in wedge.system.accelerations]
+    assert np.allclose(acc[:, 0], exact[0]) and np.allclose(acc[:, 1], exact[1])
+    combos = [Compiled.of(sp.expand(3 * wedge.euler_lagrange[0] - wedge.euler_lagrange[1])),
+              Compiled.of(wedge.euler_lagrange[1] + 1)]
+    rows = equation_rows(combos, wedge.jets, points.env)
+    assert decide(lambda b: in_span(rows, ref, 0)).equal
+    assert not decide(lambda b: in_span(rows, ref, 1)).equal
+    assert row_rank(ref.coef, [0, 1]) == 2
+
+
+def test_time_derivative_on_shell_of_energy(pend):
+    space, L, points = pend
+    ref = equation_rows([Compiled.of(m * l**2 * th.ddot + m * g * l * sp.sin(th.q))], (th,), points.env)
+    acc = solve_accelerations(ref)
+    h = Compiled.of(m * l**2 * th.dot**2 / 2 - m * g * l * sp.cos(th.q))
+    total, size, grad = time_derivative_on_shell(h, (th,), points.env, acc)
+    assert np.all(np.abs(total) <= 1e-12 * size)
+    assert np.all(grad[:, 0] == 0)  # no explicit t
+
+
+def test_same_request_same_points():
+    s = Space((q,), {m: Domain.parse("positive")})
+    a, b = s.draw(seed_for("p", "lagrangian")), s.draw(seed_for("p", "lagrangian"))
+    assert all(np.array_equal(a.env[k], b.env[k]) for k in a.env)
+    assert t in a.env

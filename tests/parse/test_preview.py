@@ -1,0 +1,29 @@
+"""The 'interpreted as' preview behind `lagrade parse`."""
+
+from __future__ import annotations
+
+from grader.preview import preview_command
+
+
+def test_preview_of_a_good_answer() -> None:
+    status, text = preview_command("1/2 m R^2 thetadot^2", ["theta", "phi"], ["m", "R"], None)
+    assert status == 0
+    assert text.splitlines() == [
+        "Interpreted as: R^2*m*theta_dot^2/2",
+        "LaTeX:          \\frac{R^{2} \\cdot m \\cdot \\dot{\\theta}^{2}}{2}",
+        "Symbols found:  R, m, theta_dot",
+        "Warning: the coordinate phi does not appear (nor its velocity).",
+    ]
+
+
+def test_preview_of_an_error_shows_the_caret() -> None:
+    status, text = preview_command("m g/2 R", ["theta"], ["m", "g", "R"], None)
+    assert status == 1
+    assert text == "Ambiguous division: write m g/(2*R) or (m g/2)*R.\n  m g/2 R\n  ^^^^^^^"
+
+
+def test_preview_with_primes_and_forced_latex() -> None:
+    assert preview_command("x'", ["x"], [], None, allow_primes=True)[0] == 0
+    assert preview_command("x'", ["x"], [], None)[0] == 1
+    status, text = preview_command(r"\dot{x}_M", ["x_M"], [], True)
+    assert status == 0 and "\\dot{x}_{M}" in text
