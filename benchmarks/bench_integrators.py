@@ -34,6 +34,9 @@ from problem_bank.integrate import METHOD, RTOL, integrate, parameter_values, ri
 DOCS = ROOT / "docs"
 METHODS = ("RK45", "DOP853", "Radau", "LSODA")
 TOLERANCES = (1e-6, 1e-9, 1e-12)
+#: Radau at 1e-12 costs 4–23 s per run even at a tenth of these lengths (measured with --quick)
+#: for drifts no better than DOP853's: it is left out of the long runs to keep them bounded.
+SKIP = {("Radau", 1e-12)}
 
 
 @dataclass(frozen=True)
@@ -45,10 +48,10 @@ class Case:
 
 
 CASES = (
-    Case("simple_pendulum", (1.0, 0.0), 1000.0, "released at 1 rad, ~200 periods"),
+    Case("simple_pendulum", (1.0, 0.0), 500.0, "released at 1 rad, ~100 periods"),
     Case("double_pendulum", (2.0, 2.5, 0.0, 0.0), 200.0, "released at (2, 2.5) rad: chaotic"),
-    Case("kepler", (1.0, 0.0, 0.0, 1.2), 500.0, "eccentric bound orbit (θ̇₀ = 1.2, below circular)"),
-    Case("hoop", (0.5, 0.3), 1000.0, "bead on the rotating hoop; Jacobi integral h"),
+    Case("kepler", (1.0, 0.0, 0.0, 1.2), 200.0, "eccentric bound orbit (θ̇₀ = 1.2, below circular)"),
+    Case("hoop", (0.5, 0.3), 500.0, "bead on the rotating hoop; Jacobi integral h"),
 )
 
 
@@ -96,7 +99,9 @@ def separable(variant) -> bool:
     jets = variant.jets
     M, b = variant.system.mass_matrix, variant.system.forcing
     moving = {j.q for j in jets} | {j.dot for j in jets} | {mech.t}
-    return not (M.free_symbols & moving) and not (b.free_symbols & ({j.dot for j in jets} | {mech.t}))
+    return not (M.free_symbols & moving) and not (
+        b.free_symbols & ({j.dot for j in jets} | {mech.t})
+    )
 
 
 def run(cases, methods, tolerances) -> list[dict]:
@@ -111,17 +116,32 @@ def run(cases, methods, tolerances) -> list[dict]:
         t_eval = np.linspace(0.0, case.t_end, 2001)
         for method in methods:
             for tol in tolerances:
+                if (method, tol) in SKIP:
+                    continue
                 start = time.perf_counter()
                 try:
-                    sol = integrate(variant, case.y0, case.t_end, method=method, rtol=tol, atol=tol, t_eval=t_eval)
+                    sol = integrate(
+                        variant,
+                        case.y0,
+                        case.t_end,
+                        method=method,
+                        rtol=tol,
+                        atol=tol,
+                        t_eval=t_eval,
+                    )
                     seconds, ok, nfev = time.perf_counter() - start, True, sol.nfev
-                    drifts = {k: drift(variant, q, params, sol.t, sol.y) for k, q in quantities.items()}
+                    drifts = {
+                        k: drift(variant, q, params, sol.t, sol.y) for k, q in quantities.items()
+                    }
                 except Exception as error:  # noqa: BLE001 - a failed run is a result, recorded
                     seconds, ok, nfev, drifts = time.perf_counter() - start, False, 0, {}
                     print(f"  {case.scene} {method} {tol:g}: failed: {error}")
                 rows.append(_row(case, method, tol, seconds, nfev, ok, drifts))
-                print(f"{case.scene:16} {method:7} tol {tol:7.0e}  {seconds:7.2f} s  nfev {nfev:8}  "
-                      + "  ".join(f"drift {k} {v:.2e}" for k, v in drifts.items()), flush=True)
+                print(
+                    f"{case.scene:16} {method:7} tol {tol:7.0e}  {seconds:7.2f} s  nfev {nfev:8}  "
+                    + "  ".join(f"drift {k} {v:.2e}" for k, v in drifts.items()),
+                    flush=True,
+                )
         if separable(variant):
             for h in (0.01, 0.001):
                 start = time.perf_counter()
@@ -129,17 +149,47 @@ def run(cases, methods, tolerances) -> list[dict]:
                 seconds = time.perf_counter() - start
                 drifts = {k: drift(variant, q, params, ts, ys) for k, q in quantities.items()}
                 rows.append(_row(case, "Verlet", h, seconds, steps, True, drifts, step=True))
-                print(f"{case.scene:16} Verlet  h {h:7.0e}  {seconds:7.2f} s  steps {steps:8}  "
-                      + "  ".join(f"drift {k} {v:.2e}" for k, v in drifts.items()), flush=True)
+                print(
+                    f"{case.scene:16} Verlet  h {h:7.0e}  {seconds:7.2f} s  steps {steps:8}  "
+                    + "  ".join(f"drift {k} {v:.2e}" for k, v in drifts.items()),
+                    flush=True,
+                )
     return rows
 
 
 def _row(case, method, tol, seconds, nfev, ok, drifts, step=False) -> dict:
     worst = max(drifts.values()) if drifts else float("nan")
-    return {"scene": case.scene, "method": method, "tolerance": "" if step else f"{tol:.0e}",
-            "step": f"{tol:g}" if step else "", "t_end": case.t_end, "seconds": f"{seconds:.3f}",
-            "evaluations": nfev, "success": int(ok), "drift": f"{worst:.3e}",
-            "drifts": "; ".join(f"{k}={v:.3e}" for k, v in drifts.items()), "note": case.note}
+    return {
+        "scene": case.scene,
+        "method": method,
+        "tolerance": "" if step else f"{tol:.0e}",
+        "step": f"{tol:g}" if step else "",
+        "t_end": case.t_end,
+        "seconds": f"{seconds:.3f}",
+        "evaluations": nfev,
+        "success": int(ok),
+        "drift": f"{worst:.3e}",
+        "drifts": "; ".join(f"{k}={v:.3e}" for k, v in drifts.items()),
+        "note": case.note,
+    }
+
+
+def choose(rows) -> dict | None:
+    """The fastest (method, tolerance) whose drift stays below 1e-8 in every scene (total time)."""
+    totals: dict[tuple[str, str], list] = {}
+    scenes = {r["scene"] for r in rows}
+    for r in rows:
+        if r["tolerance"]:
+            totals.setdefault((r["method"], r["tolerance"]), []).append(r)
+    fit = [
+        (sum(float(r["seconds"]) for r in rs), key)
+        for key, rs in totals.items()
+        if len(rs) == len(scenes) and all(r["success"] and float(r["drift"]) < 1e-8 for r in rs)
+    ]
+    if not fit:
+        return None
+    seconds, (method, tol) = min(fit)
+    return {"method": method, "tolerance": tol, "seconds": seconds}
 
 
 def write_csv(rows, path: Path) -> None:
@@ -163,11 +213,18 @@ def chart(rows, stem: Path) -> bool:
     scenes = list(dict.fromkeys(r["scene"] for r in rows))
     fig, axes = plt.subplots(1, len(scenes), figsize=(4.2 * len(scenes), 4.4), dpi=110, sharey=True)
     axes = np.atleast_1d(axes)
-    colors = {"RK45": "tab:blue", "DOP853": "tab:green", "Radau": "tab:red", "LSODA": "tab:orange",
-              "Verlet": "tab:purple"}
+    colors = {
+        "RK45": "tab:blue",
+        "DOP853": "tab:green",
+        "Radau": "tab:red",
+        "LSODA": "tab:orange",
+        "Verlet": "tab:purple",
+    }
     for ax, scene in zip(axes, scenes, strict=True):
         for method in colors:
-            sel = [r for r in rows if r["scene"] == scene and r["method"] == method and r["success"]]
+            sel = [
+                r for r in rows if r["scene"] == scene and r["method"] == method and r["success"]
+            ]
             if not sel:
                 continue
             xs = [float(r["seconds"]) for r in sel]
@@ -186,8 +243,11 @@ def chart(rows, stem: Path) -> bool:
         ax.grid(True, which="both", alpha=0.3)
     axes[0].set_ylabel("relative drift of the conserved quantity (log)")
     axes[0].legend(fontsize=7)
-    fig.suptitle(f"Integrators: time against drift (★ default {METHOD}, rtol = atol = {RTOL:g}; dotted: 1e-8)",
-                 fontsize=10)
+    fig.suptitle(
+        f"Integrators: time against drift (★ default {METHOD}, rtol = atol = {RTOL:g}; "
+        "dotted: 1e-8)",
+        fontsize=10,
+    )
     fig.tight_layout()
     fig.savefig(stem.with_suffix(".png"), metadata={"Software": None})
     fig.savefig(stem.with_suffix(".svg"), metadata={"Date": None, "Creator": None})
@@ -196,7 +256,9 @@ def chart(rows, stem: Path) -> bool:
 
 
 def main() -> int:
-    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser = argparse.ArgumentParser(
+        description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter
+    )
     parser.add_argument("--quick", action="store_true", help="one tenth of each run's length")
     parser.add_argument("--out", type=Path, default=DOCS / "integrators.csv")
     args = parser.parse_args()
@@ -206,6 +268,12 @@ def main() -> int:
     rows = run(cases, METHODS, TOLERANCES)
     write_csv(rows, args.out)
     print(f"wrote {args.out}")
+    best = choose(rows)
+    if best:
+        print(
+            f"fastest with drift < 1e-8 in every scene: {best['method']} at rtol = atol = "
+            f"{best['tolerance']} ({best['seconds']:.2f} s over all scenes)"
+        )
     if chart(rows, args.out.with_suffix("")):
         print(f"wrote {args.out.with_suffix('.png').name} and {args.out.with_suffix('.svg').name}")
     return 0

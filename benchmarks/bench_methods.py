@@ -50,7 +50,12 @@ class Result:
 
     @property
     def wrong(self) -> int:
-        return len(self.false_accepts) + len(self.false_rejects) + len(self.undecided) + len(self.timeouts)
+        return (
+            len(self.false_accepts)
+            + len(self.false_rejects)
+            + len(self.undecided)
+            + len(self.timeouts)
+        )
 
     @property
     def error_rate(self) -> float:
@@ -91,7 +96,9 @@ class Worker:
 
     def _start(self) -> None:
         self.conn, child = _FORK.Pipe()
-        self.process = _FORK.Process(target=_worker, args=(child, self.method, self.pairs), daemon=True)
+        self.process = _FORK.Process(
+            target=_worker, args=(child, self.method, self.pairs), daemon=True
+        )
         self.process.start()
         child.close()
 
@@ -152,13 +159,38 @@ def write_csv(results: list[Result], path: Path) -> None:
     path.parent.mkdir(parents=True, exist_ok=True)
     with open(path, "w", newline="", encoding="utf-8") as f:
         w = csv.writer(f, lineterminator="\n")
-        w.writerow(["method", "checks", "median_ms", "p99_ms", "false_accepts", "false_rejects",
-                    "undecided", "timeouts", "error_rate", "pareto", "default"])
+        w.writerow(
+            [
+                "method",
+                "checks",
+                "median_ms",
+                "p99_ms",
+                "false_accepts",
+                "false_rejects",
+                "undecided",
+                "timeouts",
+                "error_rate",
+                "pareto",
+                "default",
+            ]
+        )
         front = pareto_front(results)
         for r in results:
-            w.writerow([r.method, r.checks, f"{r.median * 1e3:.3f}", f"{r.p99 * 1e3:.3f}",
-                        len(r.false_accepts), len(r.false_rejects), len(r.undecided), len(r.timeouts),
-                        f"{r.error_rate:.4f}", int(r.method in front), int(r.method == DEFAULT_NAME)])
+            w.writerow(
+                [
+                    r.method,
+                    r.checks,
+                    f"{r.median * 1e3:.3f}",
+                    f"{r.p99 * 1e3:.3f}",
+                    len(r.false_accepts),
+                    len(r.false_rejects),
+                    len(r.undecided),
+                    len(r.timeouts),
+                    f"{r.error_rate:.4f}",
+                    int(r.method in front),
+                    int(r.method == DEFAULT_NAME),
+                ]
+            )
 
 
 def pareto_front(results: list[Result]) -> list[str]:
@@ -180,8 +212,10 @@ def chart(results: list[Result], stem: Path) -> bool:
     try:
         import matplotlib  # noqa: PLC0415
     except ImportError:
-        print("matplotlib is not installed: no chart drawn. Install the optional extra with\n"
-              '    pip install -e ".[charts]"\nand run this benchmark again.')
+        print(
+            "matplotlib is not installed: no chart drawn. Install the optional extra with\n"
+            '    pip install -e ".[charts]"\nand run this benchmark again.'
+        )
         return False
     matplotlib.use("Agg")
     matplotlib.rcParams["svg.hashsalt"] = "lagrade-methods"
@@ -189,19 +223,40 @@ def chart(results: list[Result], stem: Path) -> bool:
 
     fig, ax = plt.subplots(figsize=(10, 6.5), dpi=120)
     front = set(pareto_front(results))
-    families = {"float": "tab:blue", "mp": "tab:purple", "structural": "tab:gray", "simplify": "tab:red",
-                "equals": "tab:orange", "exact": "tab:green", "webwork": "tab:brown", "numbas": "tab:pink",
-                "hybrid": "black"}
+    families = {
+        "float": "tab:blue",
+        "mp": "tab:purple",
+        "structural": "tab:gray",
+        "simplify": "tab:red",
+        "equals": "tab:orange",
+        "exact": "tab:green",
+        "webwork": "tab:brown",
+        "numbas": "tab:pink",
+        "hybrid": "black",
+    }
     for r in results:
         family = next((k for k in families if r.method.startswith(k)), "float")
         x, y = r.median * 1e3, 100 * r.error_rate
         marker = "*" if r.method == DEFAULT_NAME else ("D" if r.method in front else "o")
         size = 220 if r.method == DEFAULT_NAME else 46
-        ax.scatter([x], [y], s=size, marker=marker, color=families[family], zorder=3,
-                   edgecolors="black" if r.method in front else "none", linewidths=0.8)
+        ax.scatter(
+            [x],
+            [y],
+            s=size,
+            marker=marker,
+            color=families[family],
+            zorder=3,
+            edgecolors="black" if r.method in front else "none",
+            linewidths=0.8,
+        )
         if not r.method.startswith("float") or r.method in front:
-            ax.annotate(r.method + (" (default)" if r.method == DEFAULT_NAME else ""), (x, y),
-                        textcoords="offset points", xytext=(6, 4), fontsize=8)
+            ax.annotate(
+                r.method + (" (default)" if r.method == DEFAULT_NAME else ""),
+                (x, y),
+                textcoords="offset points",
+                xytext=(6, 4),
+                fontsize=8,
+            )
     pts = sorted((r.median * 1e3, 100 * r.error_rate) for r in results if r.method in front)
     if pts:
         xs, ys = [pts[0][0]], [pts[0][1]]
@@ -211,11 +266,17 @@ def chart(results: list[Result], stem: Path) -> bool:
         ax.plot(xs, ys, color="tab:green", lw=1.2, ls="--", zorder=2, label="Pareto front")
     floats = [r for r in results if r.method.startswith("float")]
     if floats:
-        ax.scatter([], [], color=families["float"], s=46, label="float64, 1–50 points, rtol 1e-3/1e-6/1e-9")
+        ax.scatter(
+            [], [], color=families["float"], s=46, label="float64, 1–50 points, rtol 1e-3/1e-6/1e-9"
+        )
     ax.scatter([], [], marker="*", s=150, color="black", label=f"default ({DEFAULT_NAME})")
     ax.set_xscale("log")
+    ax.set_yscale("symlog", linthresh=1.0, linscale=0.6)  # 0 % stays on the chart
+    ax.set_ylim(bottom=-0.3)
     ax.set_xlabel("median time per check (ms, log scale)")
-    ax.set_ylabel("wrong verdicts (% of pairs: false accepts + false rejects + undecided + timeouts)")
+    ax.set_ylabel(
+        "wrong verdicts (% of pairs: false accepts + false rejects + undecided + timeouts)"
+    )
     n = results[0].checks if results else 0
     ax.set_title(f"Expression equivalence: speed against accuracy ({n} labelled pairs)")
     ax.grid(True, which="both", alpha=0.3)
@@ -228,7 +289,9 @@ def chart(results: list[Result], stem: Path) -> bool:
 
 
 def main() -> int:
-    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser = argparse.ArgumentParser(
+        description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter
+    )
     parser.add_argument("--limit", type=float, default=2.0, help="seconds per check (default 2)")
     parser.add_argument("--methods", nargs="*", help="only these methods (names as in the CSV)")
     parser.add_argument("--every", type=int, default=1, help="every K-th pair only (a quick run)")
@@ -243,11 +306,18 @@ def main() -> int:
         t0 = time.perf_counter()
         r = run_method(m, pairs, args.limit)
         results.append(r)
-        print(f"{r.method:24} median {r.median * 1e3:9.3f} ms  p99 {r.p99 * 1e3:9.3f} ms  "
-              f"FA {len(r.false_accepts):3}  FR {len(r.false_rejects):3}  undecided {len(r.undecided):3}  "
-              f"timeouts {len(r.timeouts):3}  ({time.perf_counter() - t0:.0f} s)", flush=True)
-        for label, ids in (("false accept", r.false_accepts), ("false reject", r.false_rejects),
-                           ("timeout", r.timeouts)):
+        print(
+            f"{r.method:24} median {r.median * 1e3:9.3f} ms  p99 {r.p99 * 1e3:9.3f} ms  "
+            f"FA {len(r.false_accepts):3}  FR {len(r.false_rejects):3}  "
+            f"undecided {len(r.undecided):3}  "
+            f"timeouts {len(r.timeouts):3}  ({time.perf_counter() - t0:.0f} s)",
+            flush=True,
+        )
+        for label, ids in (
+            ("false accept", r.false_accepts),
+            ("false reject", r.false_rejects),
+            ("timeout", r.timeouts),
+        ):
             hard = [i for i in ids if i.startswith("hard/")]
             if hard:
                 print(f"    {label}: " + ", ".join(i.removeprefix("hard/") for i in hard))

@@ -9,6 +9,7 @@ from __future__ import annotations
 import argparse
 import sys
 from collections.abc import Callable, Sequence
+from pathlib import Path
 
 from problem_bank.errors import LagradeError
 
@@ -16,6 +17,7 @@ EPILOG = """examples:
   lagrade bank list
   lagrade bank show wedge --seed 3 --format json
   lagrade parse "1/2 m R^2 thetadot^2 + m g R cos(theta)" --coordinates theta --parameters m,g,R
+  lagrade generate examples/assignment.toml --roster examples/roster.csv --seed 2025 --out ps3
 """
 
 
@@ -53,6 +55,32 @@ def _parse(args: argparse.Namespace) -> int:
     return status
 
 
+def _generate(args: argparse.Namespace) -> int:
+    from grader.verify import verify_variant
+    from problem_bank.assign import generate
+    from problem_bank.progress import ProgressBar
+
+    bar = ProgressBar()
+    try:
+        result = generate(
+            args.assignment,
+            args.roster,
+            args.seed,
+            args.out,
+            formats=args.formats,
+            templates_dir=args.templates,
+            force=args.force,
+            progress=bar,
+            verify=None if args.no_verify else verify_variant,
+        )
+    finally:
+        bar.close()
+    for warning in result.warnings:
+        print(f"warning: {warning}", file=sys.stderr)
+    print(f"wrote {result.files} files for {result.students} students to {result.out_dir}")
+    return 0
+
+
 def _split(csv: str) -> list[str]:
     return [s.strip() for s in csv.split(",") if s.strip()]
 
@@ -88,6 +116,29 @@ def build_parser() -> argparse.ArgumentParser:
     parse.add_argument("--latex", action="store_true", help="read TEXT as LaTeX (default: auto-detect)")
     parse.add_argument("--allow-primes", action="store_true", help="read x' as x_dot")
     parse.set_defaults(run=_parse)
+
+    generate = commands.add_parser(
+        "generate",
+        help="handouts, answer keys, answer sheets and a manifest for a roster",
+        description="Generate one variant per student of every problem in ASSIGNMENT.toml: "
+        "handouts with figures, answer keys, blank answer sheets and manifest.json. Every "
+        "variant's key is checked by the grader before anything is written.",
+        epilog="example: lagrade generate examples/assignment.toml --roster examples/roster.csv "
+        "--seed 2025 --out ps3 --formats md,html,tex,pdf",
+    )
+    generate.add_argument("assignment", type=Path, metavar="ASSIGNMENT.toml")
+    generate.add_argument("--roster", type=Path, required=True, help="CSV with columns id and name")
+    generate.add_argument("--seed", type=int, required=True, help="fixes every student's variant")
+    generate.add_argument("--out", type=Path, required=True, help="output folder (must not exist)")
+    generate.add_argument(
+        "--formats", default="md,html,tex", help="comma list of md,html,tex,pdf (default md,html,tex)"
+    )
+    generate.add_argument("--templates", type=Path, default=None, help="folder of *.j2 overrides")
+    generate.add_argument("--force", action="store_true", help="replace an existing output folder")
+    generate.add_argument(
+        "--no-verify", action="store_true", help="skip grading each key before writing (faster)"
+    )
+    generate.set_defaults(run=_generate)
     return parser
 
 

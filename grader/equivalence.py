@@ -523,8 +523,11 @@ def lagrangian_rows(L: Compiled, jets: Sequence[Jet], env: Mapping, backend=FLOA
 def in_span(student: Rows, reference: Rows, k: int, backend=FLOAT) -> tuple[np.ndarray, np.ndarray]:
     """Residual of student row k outside the span of the reference rows, and its size, per
     point. The size counts the student's terms and the rounding the reference rows carry."""
+    if backend is FLOAT:
+        return _in_span_float(student.coef[:, k, :].astype(float), student.size[:, k].astype(float),
+                              reference.coef.astype(float), reference.size.astype(float))
     n_pts = student.coef.shape[0]
-    dtype = float if backend is FLOAT else object
+    dtype = object
     r = np.zeros(n_pts, dtype=dtype)
     s = np.zeros(n_pts, dtype=dtype)
     for p in range(n_pts):
@@ -538,6 +541,17 @@ def in_span(student: Rows, reference: Rows, k: int, backend=FLOAT) -> tuple[np.n
         r[p] = _norm(res)
         s[p] = student.size[p, k] + _norm(x) * rel_ref
     return r, s
+
+
+def _in_span_float(x: np.ndarray, size: np.ndarray, R: np.ndarray, R_size: np.ndarray):
+    """in_span for all points at once: x (points, n+1), R (points, m, n+1)."""
+    with np.errstate(all="ignore"):
+        Q, _ = np.linalg.qr(np.transpose(R, (0, 2, 1)))  # (points, n+1, m): basis of the rows
+        res = x - np.einsum("pij,pj->pi", Q, np.einsum("pji,pj->pi", Q, x))
+        ref_norm = np.linalg.norm(R, axis=2)
+        rel_ref = np.max(np.where(ref_norm > 0, R_size / np.where(ref_norm > 0, ref_norm, 1), 0),
+                         axis=1)
+        return np.linalg.norm(res, axis=1), size + np.linalg.norm(x, axis=1) * rel_ref
 
 
 def _norm(v):

@@ -12,7 +12,8 @@ The families (`all_methods()` lists them, named as in docs/methods.csv):
 
 - `structural`, `structural_expand`: a == b after sympy's automatic canonicalisation (and expand).
 - `simplify`: sympy.simplify(a − b) == 0.   `equals`: sympy's Expr.equals (may answer None).
-- `float{n}pt_rtol{ε}`: float64 at n points drawn in the declared domains, |a − b| ≤ ε max(|a|, |b|).
+- `float{n}pt_rtol{ε}`: float64 at n points drawn in the declared domains,
+  |a − b| ≤ ε max(|a|, |b|).
 - `mp{d}_{n}pt`: the same in mpmath at d digits, ε = 10^-(d − 8).
 - `exact_rational`: exact evaluation at random rational points of rational functions of the symbols
   and of sin, cos, tan of their integer combinations (Weierstrass substitution, see below).
@@ -53,6 +54,7 @@ class Method(Protocol):
 
 # --- sampling ---------------------------------------------------------------------------------
 
+
 def _free_symbols(*exprs: sp.Expr) -> list[sp.Symbol]:
     """Free symbols of all exprs in a stable order (by name), so that seeded draws repeat."""
     found: set[sp.Symbol] = set()
@@ -66,7 +68,9 @@ def _ranges(symbols: Sequence[sp.Symbol], domains: Domains) -> list[tuple[float,
 
 
 def draw(
-    symbols: Sequence[sp.Symbol], ranges: Sequence[tuple[float, float]], n: int,
+    symbols: Sequence[sp.Symbol],
+    ranges: Sequence[tuple[float, float]],
+    n: int,
     rng: np.random.Generator,
 ) -> dict[sp.Symbol, np.ndarray]:
     """n points, each coordinate uniform in its range (float64 arrays keyed by symbol)."""
@@ -92,7 +96,12 @@ def _evaluate_float(program: ev.Program, env: Mapping[sp.Symbol, np.ndarray], n:
 
 
 def _usable_points(
-    program: ev.Program, symbols, ranges, n: int, rng, rounds: int = 6,
+    program: ev.Program,
+    symbols,
+    ranges,
+    n: int,
+    rng,
+    rounds: int = 6,
 ) -> tuple[np.ndarray, np.ndarray, dict] | None:
     """Values of (answer, reference) at n points where the reference is defined (finite and
     real); points where it is not are redrawn, `rounds` times at most. None: too few points."""
@@ -119,6 +128,7 @@ def _usable_points(
 
 
 # --- structural and symbolic -----------------------------------------------------------------
+
 
 @dataclass(frozen=True)
 class Structural:
@@ -163,6 +173,7 @@ class Equals:
 
 
 # --- numeric at sample points -----------------------------------------------------------------
+
 
 def _fmt_tol(rtol: float) -> str:
     return f"{rtol:.0e}".replace("e-0", "e-")
@@ -221,9 +232,13 @@ class MultiPrecision:
         with mpmath.workdps(self.digits):
             have = 0
             for _ in range(6):
-                env = {s: ev.MP.array(v) for s, v in draw(symbols, ranges, self.points, rng).items()}
-                a, b = (np.broadcast_to(np.asarray(x, dtype=object), (self.points,))
-                        for x in ev.run(program, env, ev.MP))
+                env = {
+                    s: ev.MP.array(v) for s, v in draw(symbols, ranges, self.points, rng).items()
+                }
+                a, b = (
+                    np.broadcast_to(np.asarray(x, dtype=object), (self.points,))
+                    for x in ev.run(program, env, ev.MP)
+                )
                 for x, y in zip(a, b, strict=True):
                     if not mpmath.isfinite(y):
                         continue
@@ -264,8 +279,9 @@ def _check_rational_trig(expr: sp.Expr, inside_trig: bool = False) -> None:
         return
     if isinstance(expr, _TRIG) and not inside_trig:
         arg = expr.args[0]
-        if not all(_is_linear(term) or _monomial_symbol(term) is not None
-                   for term in sp.Add.make_args(arg)):
+        if not all(
+            _is_linear(term) or _monomial_symbol(term) is not None for term in sp.Add.make_args(arg)
+        ):
             raise _OutOfScope(f"non-linear trig argument {arg}")
         _check_rational_trig(arg, inside_trig=True)
         return
@@ -273,7 +289,7 @@ def _check_rational_trig(expr: sp.Expr, inside_trig: bool = False) -> None:
 
 
 def _is_linear(arg: sp.Expr) -> bool:
-    """arg = Σ r_i x_i + r π with rational r_i, r (what expand_trig can split into single symbols)."""
+    """arg = Σ r_i x_i + r π with rational r_i, r: what expand_trig splits into single symbols."""
     for term in sp.Add.make_args(arg):
         coeff, rest = term.as_coeff_Mul()
         if not coeff.is_Rational or not (rest.is_Symbol or rest is sp.pi or rest == 1):
@@ -341,8 +357,13 @@ def _flatten_monomials(answer: sp.Expr, reference: sp.Expr) -> tuple[sp.Expr, sp
     expressions at once: a change of variables (ω ≠ 0 on its domain) after which every trig
     argument is linear."""
     for _ in range(4):
-        monomials = {term for e in (answer, reference) for f in e.atoms(*_TRIG)
-                     for term in sp.Add.make_args(f.args[0]) if not _is_linear(term)}
+        monomials = {
+            term
+            for e in (answer, reference)
+            for f in e.atoms(*_TRIG)
+            for term in sp.Add.make_args(f.args[0])
+            if not _is_linear(term)
+        }
         if not monomials:
             return answer, reference
         arg = min(monomials, key=str)
@@ -399,9 +420,12 @@ def _exact_compare(a: sp.Expr, b: sp.Expr, domains: Domains, points: int, rng) -
             u = _rational_in(u_lo, u_hi, rng)
             den = 1 + u**2
             s_val, c_val = 2 * u / den, (1 - u**2) / den
-            subs.update({
-                sp.sin(y): s_val, sp.cos(y): c_val,
-            })
+            subs.update(
+                {
+                    sp.sin(y): s_val,
+                    sp.cos(y): c_val,
+                }
+            )
             if c_val != 0:
                 subs[sp.tan(y)] = s_val / c_val
                 subs[sp.sec(y)] = 1 / c_val
@@ -629,6 +653,7 @@ class _MpScalar:
 
 # --- the project's default ---------------------------------------------------------------------
 
+
 @dataclass(frozen=True)
 class HybridDefault:
     """The project's default, exactly as `grader.checks.check_expression` runs it: a Problem of
@@ -646,9 +671,12 @@ class HybridDefault:
 
         try:
             problem = _expression_problem(reference, answer, domains)
-            points = problem.points("expression", frozenset(
-                s for s in answer.free_symbols if s in problem.domains))
-            return bool(expressions_equal(Compiled.of(answer), problem.reference_expression, points).equal)
+            points = problem.points(
+                "expression", frozenset(s for s in answer.free_symbols if s in problem.domains)
+            )
+            return bool(
+                expressions_equal(Compiled.of(answer), problem.reference_expression, points).equal
+            )
         except (ReferenceUndefined, ev.UnsupportedExpression):
             return None
 
@@ -661,19 +689,33 @@ def _expression_problem(reference: sp.Expr, answer: sp.Expr, domains: Domains):
 
     symbols = reference.free_symbols | answer.free_symbols
     names = {s.name for s in symbols}
-    coordinates = sorted({n.rsplit("_", 1)[0] for n in names if n.endswith("_dot")}
-                         | {n.rsplit("_", 1)[0] for n in names if n.endswith("_ddot")})
+    coordinates = sorted(
+        {n.rsplit("_", 1)[0] for n in names if n.endswith("_dot")}
+        | {n.rsplit("_", 1)[0] for n in names if n.endswith("_ddot")}
+    )
     jets = tuple(jet(c) for c in coordinates)
     jet_symbols = {s for j in jets for s in (j.q, j.dot, j.ddot)}
     parameters = {s.name: s for s in symbols if s not in jet_symbols and s != t}
     param_domains = {s: domains.get(s, REAL) for s in parameters.values()}
-    coordinate_domains = {j.name: domains[j.q].sample_range() for j in jets
-                          if j.q in domains and domains[j.q].text != "real"}
-    return Problem("methods:hybrid_default", "expression", jets, parameters, param_domains, {},
-                   expression=reference, coordinate_domains=coordinate_domains)
+    coordinate_domains = {
+        j.name: domains[j.q].sample_range()
+        for j in jets
+        if j.q in domains and domains[j.q].text != "real"
+    }
+    return Problem(
+        "methods:hybrid_default",
+        "expression",
+        jets,
+        parameters,
+        param_domains,
+        {},
+        expression=reference,
+        coordinate_domains=coordinate_domains,
+    )
 
 
 # --- other systems' documented rules -----------------------------------------------------------
+
 
 @dataclass(frozen=True)
 class WeBWorK:

@@ -23,7 +23,13 @@ PAIRS = Path(__file__).with_name("pairs.jsonl")
 
 #: Categories of the hand-written hard cases (the bank's pairs are `bank_rewrite`/`bank_mutation`).
 HARD_CATEGORIES = (
-    "trig_identity", "near_miss", "cancellation", "scale", "domain", "time", "undefined",
+    "trig_identity",
+    "near_miss",
+    "cancellation",
+    "scale",
+    "domain",
+    "time",
+    "undefined",
 )
 
 

@@ -45,10 +45,22 @@ class Undefined(Exception):
 
 
 _FUNCTIONS = {
-    sp.sin: mpmath.sin, sp.cos: mpmath.cos, sp.tan: mpmath.tan, sp.cot: mpmath.cot,
-    sp.sec: mpmath.sec, sp.csc: mpmath.csc, sp.asin: mpmath.asin, sp.acos: mpmath.acos,
-    sp.atan: mpmath.atan, sp.sinh: mpmath.sinh, sp.cosh: mpmath.cosh, sp.tanh: mpmath.tanh,
-    sp.exp: mpmath.exp, sp.log: mpmath.log, sp.Abs: abs, sp.sign: mpmath.sign,
+    sp.sin: mpmath.sin,
+    sp.cos: mpmath.cos,
+    sp.tan: mpmath.tan,
+    sp.cot: mpmath.cot,
+    sp.sec: mpmath.sec,
+    sp.csc: mpmath.csc,
+    sp.asin: mpmath.asin,
+    sp.acos: mpmath.acos,
+    sp.atan: mpmath.atan,
+    sp.sinh: mpmath.sinh,
+    sp.cosh: mpmath.cosh,
+    sp.tanh: mpmath.tanh,
+    sp.exp: mpmath.exp,
+    sp.log: mpmath.log,
+    sp.Abs: abs,
+    sp.sign: mpmath.sign,
 }
 
 
@@ -109,7 +121,9 @@ class Check:
 
     id: str
     label: bool
-    numeric: bool | None  # True: equal at every point; False: differs somewhere; None: too few points
+    numeric: (
+        bool | None
+    )  # True: equal at every point; False: differs somewhere; None: too few points
     defined_points: int
     worst: float  # largest relative difference seen (at the decisive precision)
     proof: str  # "proved by …", "unproved", or "" for false pairs / when proofs are skipped
@@ -119,7 +133,9 @@ class Check:
         return self.numeric is not None and self.numeric == self.label
 
 
-def numeric_verdict(pp: ParsedPair, points: int = 60, seed: int = 7) -> tuple[bool | None, int, float]:
+def numeric_verdict(
+    pp: ParsedPair, points: int = 60, seed: int = 7
+) -> tuple[bool | None, int, float]:
     """(equal?, number of points where the reference is defined, worst relative difference)."""
     symbols = sorted(pp.answer.free_symbols | pp.reference.free_symbols, key=lambda s: s.name)
     rng = np.random.default_rng(seed)
@@ -205,9 +221,15 @@ def fast_subset(pairs: list[ParsedPair]) -> list[ParsedPair]:
 
 
 def main() -> int:
-    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--points", type=int, default=60, help="random points per pair (default 60)")
-    parser.add_argument("--fast", action="store_true", help="hand-written pairs and every 8th bank pair")
+    parser = argparse.ArgumentParser(
+        description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter
+    )
+    parser.add_argument(
+        "--points", type=int, default=60, help="random points per pair (default 60)"
+    )
+    parser.add_argument(
+        "--fast", action="store_true", help="hand-written pairs and every 8th bank pair"
+    )
     parser.add_argument("--no-proofs", action="store_true", help="numbers only")
     args = parser.parse_args()
     start = time.perf_counter()
@@ -217,11 +239,15 @@ def main() -> int:
     results = [check(p, args.points, not args.no_proofs) for p in pairs]
     bad = [r for r in results if not r.ok]
     for r in bad:
-        print(f"LABEL WRONG OR UNDECIDED: {r.id}: label {r.label}, numbers say {r.numeric} "
-              f"({r.defined_points} points, worst relative difference {r.worst:.3g})")
+        print(
+            f"LABEL WRONG OR UNDECIDED: {r.id}: label {r.label}, numbers say {r.numeric} "
+            f"({r.defined_points} points, worst relative difference {r.worst:.3g})"
+        )
     proofs = Counter(r.proof for r in results if r.label and r.proof)
-    print(f"verified {len(results) - len(bad)}/{len(results)} labels at {args.points} points "
-          f"in {time.perf_counter() - start:.1f} s")
+    print(
+        f"verified {len(results) - len(bad)}/{len(results)} labels at {args.points} points "
+        f"in {time.perf_counter() - start:.1f} s"
+    )
     if proofs:
         true_pairs = sum(proofs.values())
         print(f"true pairs: {true_pairs - proofs.get('unproved', 0)}/{true_pairs} proved exactly")
