@@ -173,6 +173,17 @@ def main() -> None:
           f"time limit {args.limit:g} s per check; the same pairs as above):")
     ours_ms = [times[i] for i, _ in subset]
     ours_wrong = sum(results[i]["verdict"] != expected_status(it) for i, it in subset)
+    inproc_ms = []
+    for _i, it in subset:  # the same judgement on sympy input in this process: simplify's footing
+        from grader.check import check_request  # noqa: PLC0415
+
+        ans = it.pair[0] if it.part != "momenta" else [
+            it.pair[0] if a == plain(it.pair[0]) else a for a in it.answer]
+        if it.part == "momenta":
+            ans = [sp.S(x) if not isinstance(x, str) else x for x in ans]
+        start = time.perf_counter()
+        check_request({"problem": it.problem, "part": it.part, "answer": ans})
+        inproc_ms.append((time.perf_counter() - start) * 1e3)
     runner = MethodRunner(args.limit)
     report = {}
     for method in ("simplify", "equals"):
@@ -192,12 +203,18 @@ def main() -> None:
     print(f"  {'method':10} {'median ms':>10} {'total s':>9} {'wrong':>6} {'no verdict':>11}")
     print(f"  {'lagrade':10} {statistics.median(ours_ms):10.2f} {sum(ours_ms) / 1e3:9.2f} "
           f"{ours_wrong:6d} {0:11d}")
+    print(f"  {'lagrade*':10} {statistics.median(inproc_ms):10.2f} {sum(inproc_ms) / 1e3:9.2f}"
+          "      -           -   (* same judgement, sympy input in-process: no parsing, no pipe)")
     for method, (ms, wrong_n, undecided) in report.items():
         print(f"  {method:10} {statistics.median(ms):10.2f} {sum(ms) / 1e3:9.2f} {wrong_n:6d} "
               f"{undecided:11d}")
+    rewrites = [k for k, (_i, it) in enumerate(subset) if expected_status(it) == "correct"]
     for method, (ms, _w, _u) in report.items():
-        print(f"  speed ratio {method}/lagrade: median {statistics.median(ms) / statistics.median(ours_ms):.0f}×,"
-              f" total {sum(ms) / sum(ours_ms):.0f}×")
+        print(f"  speed ratio {method}/lagrade: median "
+              f"{statistics.median(ms) / statistics.median(ours_ms):.1f}× (batch round trip), "
+              f"{statistics.median(ms) / statistics.median(inproc_ms):.1f}× (in-process); total "
+              f"{sum(ms) / sum(ours_ms):.1f}×; on the {len(rewrites)} correct rewrites only: total "
+              f"{sum(ms[k] for k in rewrites) / sum(ours_ms[k] for k in rewrites):.1f}×")
     print("\n(simplify(a - b) == 0 and equals compare L literally, so a right L that differs by a "
           "constant,\n a total derivative or a factor counts as 'different' for them: those are "
           "among their wrong verdicts.)")

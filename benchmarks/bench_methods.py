@@ -8,8 +8,10 @@ Each method runs in its own forked worker process (fresh sympy caches, so no met
 another's work), which decides the corpus pairs one at a time; a check that takes longer than
 --limit seconds is killed with SIGKILL (C-level work included), counted as a timeout, and a new
 worker takes over. Times are measured inside the worker around `decide` alone (parsing is done
-once, before). A method's error rate counts every check that did not end in the right verdict:
-false accepts, false rejects, undecided (None or an exception) and timeouts.
+once, before). First every label is verified again by benchmarks/corpus/verify_labels.py
+(--skip-verify skips that); a label that does not verify stops the run. A method's error rate
+counts every check that did not end in the right verdict: false accepts, false rejects,
+undecided (None or an exception) and timeouts.
 """
 
 from __future__ import annotations
@@ -29,6 +31,7 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
+from benchmarks.corpus import verify_labels  # noqa: E402
 from benchmarks.corpus.corpus import ParsedPair, load  # noqa: E402
 from grader.methods import DEFAULT_NAME, Method, all_methods  # noqa: E402
 
@@ -296,8 +299,22 @@ def main() -> int:
     parser.add_argument("--methods", nargs="*", help="only these methods (names as in the CSV)")
     parser.add_argument("--every", type=int, default=1, help="every K-th pair only (a quick run)")
     parser.add_argument("--out", type=Path, default=DOCS / "methods.csv", help="CSV path")
+    parser.add_argument("--skip-verify", action="store_true", help="do not re-verify the labels")
     args = parser.parse_args()
     pairs = load()[:: args.every]
+    if not args.skip_verify:
+        t0 = time.perf_counter()
+        checks = [verify_labels.check(p) for p in pairs]
+        bad = [c.id for c in checks if not c.ok]
+        proved = sum(c.proof.startswith("proved") for c in checks if c.label)
+        print(
+            f"labels verified independently: {len(checks) - len(bad)}/{len(checks)} at 60 points "
+            f"(60, then 150 digits); {proved}/{sum(c.label for c in checks)} true pairs proved "
+            f"exactly ({time.perf_counter() - t0:.0f} s)"
+        )
+        if bad:
+            print("labels that do not verify: " + ", ".join(bad))
+            return 1
     methods = [m for m in all_methods() if not args.methods or m.name in args.methods]
     print(f"{len(methods)} methods × {len(pairs)} pairs, limit {args.limit:g} s per check")
     results = []

@@ -17,7 +17,10 @@ EPILOG = """examples:
   lagrade bank list
   lagrade bank show wedge --seed 3 --format json
   lagrade parse "1/2 m R^2 thetadot^2 + m g R cos(theta)" --coordinates theta --parameters m,g,R
+  lagrade check --scene wedge --part cyclic --answer x_M
   lagrade generate examples/assignment.toml --roster examples/roster.csv --seed 2025 --out ps3
+  lagrade grade ps3/manifest.json submissions/ --jobs 2
+  lagrade demo
 """
 
 
@@ -81,6 +84,50 @@ def _generate(args: argparse.Namespace) -> int:
     return 0
 
 
+def _check(args: argparse.Namespace) -> int:
+    from grader.check import run_check_command
+
+    status, text = run_check_command(args)
+    if text:
+        print(text)
+    return status
+
+
+def _grade(args: argparse.Namespace) -> int:
+    from grader.batch import grade
+    from problem_bank.progress import ProgressBar
+
+    bar = ProgressBar()
+    try:
+        summary = grade(args.manifest, args.submissions, args.out, jobs=args.jobs,
+                        part_time_limit=args.part_time_limit, progress=bar)
+    finally:
+        bar.close()
+    counts = ", ".join(f"{k} {v}" for k, v in summary.counts.items() if v)
+    print(f"{len(summary.results)} students: {counts} ({summary.reused} unchanged, reused)")
+    print(f"gradebook: {summary.out_dir / 'gradebook.csv'}")
+    print(f"summary:   {summary.out_dir / 'summary.md'}")
+    return 0 if summary.all_graded else 1
+
+
+def _demo(args: argparse.Namespace) -> int:
+    from grader.demo import run_demo, summary_table
+    from problem_bank.progress import ProgressBar
+
+    bar = ProgressBar()
+    try:
+        summary, where = run_demo(args.folder, jobs=args.jobs, progress=bar)
+    finally:
+        bar.close()
+    print(summary_table(summary))
+    print()
+    for label, path in where.items():
+        print(f"{label + ':':13} {path}")
+    # The demo plants a missing and a malformed submission on purpose: success is that every
+    # student has a row and nothing else went wrong.
+    return 0 if summary.counts["timeout"] + summary.counts["error"] == 0 else 1
+
+
 def _split(csv: str) -> list[str]:
     return [s.strip() for s in csv.split(",") if s.strip()]
 
@@ -139,6 +186,51 @@ def build_parser() -> argparse.ArgumentParser:
         "--no-verify", action="store_true", help="skip grading each key before writing (faster)"
     )
     generate.set_defaults(run=_generate)
+
+    from grader.check import add_check_arguments
+
+    check = commands.add_parser(
+        "check",
+        help="judge one answer, or a JSON-lines file of requests",
+        description="Judge an answer against a bank scene (--scene), an ad-hoc Lagrangian "
+        "(--lagrangian with --coordinates and --parameters) or a reference expression "
+        "(--expression). Exit 0 when correct (or when a --batch ran to its end), 1 otherwise.",
+        epilog="examples:\n  lagrade check --scene wedge --part cyclic --answer x_M\n"
+        '  lagrade check --scene hoop --part eom --answer "theta_ddot = omega^2 sin(theta) '
+        'cos(theta) - g/R sin(theta)"\n  lagrade check --batch requests.jsonl --out results.jsonl',
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+    )
+    add_check_arguments(check)
+    check.set_defaults(run=_check)
+
+    grade = commands.add_parser(
+        "grade",
+        help="grade a folder of answer sheets: gradebook, feedback, results.json, summary",
+        description="Grade every roster student's answer sheet (SUBMISSIONS/<id>.toml or .json) "
+        "against the manifest. Every student gets a row; a rerun reuses unchanged results. "
+        "Exit 0 when every student was graded, 1 when some are missing, invalid, timed out or "
+        "failed (their rows say why).",
+        epilog="example: lagrade grade ps3/manifest.json submissions/ --out grades --jobs 2",
+    )
+    grade.add_argument("manifest", type=Path, metavar="DIR/manifest.json")
+    grade.add_argument("submissions", type=Path, metavar="SUBMISSIONS")
+    grade.add_argument("--out", type=Path, default=None, help="output folder (default DIR/grades)")
+    grade.add_argument("--jobs", type=int, default=1, help="submissions graded in parallel")
+    grade.add_argument("--part-time-limit", type=float, default=2.0,
+                       help="seconds allowed per answer part (default 2)")
+    grade.set_defaults(run=_grade)
+
+    demo = commands.add_parser(
+        "demo",
+        help="generate, submit and grade a synthetic class of 30 end to end",
+        description="In FOLDER: write a demo assignment and a roster of 30, generate handouts "
+        "and keys, write synthetic submissions (varied notation, common mistakes, blank parts, "
+        "one malformed file, one missing), grade them and print the results.",
+    )
+    demo.add_argument("folder", type=Path, nargs="?", default=Path("lagrade-demo"),
+                      metavar="DIR", help="where to work (default ./lagrade-demo)")
+    demo.add_argument("--jobs", type=int, default=2, help="submissions graded in parallel")
+    demo.set_defaults(run=_demo)
     return parser
 
 

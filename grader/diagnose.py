@@ -25,15 +25,12 @@ from problem_bank.mechanics import Jet, LagrangianSystem
 from .equivalence import (
     Compiled,
     Points,
-    decide,
-    differ_by_constant,
+    _in_span_float,
     equation_rows,
     euler_lagrange_values,
-    expressions_equal,
     in_span,
-    lagrangians_match,
 )
-from .evaluate import FLOAT, UnsupportedExpression
+from .evaluate import UnsupportedExpression
 
 if TYPE_CHECKING:
     from .problem import Problem
@@ -305,55 +302,91 @@ class Catalogue:
         out.append(Mutant("lagrangian_not_conserved", "L itself is not a conserved quantity", sys_.L))
         return out
 
-    # --- matching -----------------------------------------------------------------------------------
-    def match(self, mutants: Sequence[Mutant], test: Callable[[Compiled], bool]) -> Mutant | None:
-        """The first mutant the answer matches (`test(compiled mutant)`), if any."""
-        for m in mutants:
-            try:
-                if test(self._compiled(m)):
-                    return m
-            except (UnsupportedExpression, ValueError, ZeroDivisionError):
-                continue
-        return None
-
+    # --- matching ---------------------------------------------------------------------------------
     def match_lagrangian(self, answer: Compiled, points: Points) -> Mutant | None:
-        jets = self.problem.jets
+        """The mutant with E(answer) = c E(mutant), c ≠ 0 per parameter group (float64 only:
+        a diagnosis names a likely mistake, the verdict is decided elsewhere)."""
+        Ea, Sa = euler_lagrange_values(answer, self.problem.jets, points.env)
 
-        def test(mut: Compiled) -> bool:
-            ref = self._el_values(mut, points)
-            result = lagrangians_match(answer, lambda b: ref if b is FLOAT else
-                                       euler_lagrange_values(mut, jets, points.arrays(b), b),
-                                       jets, points)
-            return result.outcome.equal and any(abs(c) > 1e-9 for c in result.factors)
+        def test(m: Mutant) -> bool:
+            Eb, Sb = self._el_values(self._compiled(m), points)
+            r, size = np.empty_like(Ea), np.empty_like(Ea)
+            for g in np.unique(points.group):
+                rows = points.group == g
+                den = float(np.sum(Eb[rows] ** 2))
+                if den == 0:
+                    return False
+                c = float(np.sum(Ea[rows] * Eb[rows])) / den
+                if abs(c) < 1e-9:
+                    return False
+                r[rows] = Ea[rows] - c * Eb[rows]
+                size[rows] = Sa[rows] + abs(c) * Sb[rows]
+            return _vanishes(r, size)
 
-        return self.match(self.lagrangian_mutants, test)
+        return self._first(self.lagrangian_mutants, test)
 
     def match_plain(self, mutants: Sequence[Mutant], answer: Compiled, points: Points) -> Mutant | None:
-        return self.match(mutants, lambda mut: expressions_equal(answer, mut, points).equal)
+        a, sa = _full(answer.values(points.env), points.n)
+
+        def test(m: Mutant) -> bool:
+            b, sb = self._values(m, points)
+            return _vanishes(a - b, sa + sb)
+
+        return self._first(mutants, test)
 
     def match_offset(self, mutants: Sequence[Mutant], answer: Compiled, points: Points) -> Mutant | None:
-        return self.match(mutants, lambda mut: differ_by_constant(answer, mut, points).equal)
+        a, sa = _full(answer.values(points.env), points.n)
+        starts = np.searchsorted(points.group, points.group)
+
+        def test(m: Mutant) -> bool:
+            b, sb = self._values(m, points)
+            d = a - b
+            return _vanishes(d - d[starts], sa + sb + np.abs(d[starts]))
+
+        return self._first(mutants, test)
 
     def match_row(self, student: Compiled, points: Points) -> Mutant | None:
         """The mutation whose mutated system has the student's equation in its span."""
         p = self.problem
         jets = p.jets
-        for i, m in self.row_mutants:
+        with np.errstate(all="ignore"):
+            s = equation_rows([student], jets, points.env)
+            ref = p.cached("rows", points, lambda: equation_rows(p.euler_lagrange, jets, points.env))
+        x, xs = s.coef[:, 0, :].astype(float), s.size[:, 0].astype(float)
+
+        def test(pair) -> bool:
+            i, m = pair
+            rows = p.cached(f"row:{id(m)}", points,
+                            lambda: equation_rows([self._compiled(m)], jets, points.env))
+            R = ref.coef.astype(float).copy()
+            Rs = ref.size.astype(float).copy()
+            R[:, i, :] = rows.coef[:, 0, :]
+            Rs[:, i] = rows.size[:, 0]
+            r, size = _in_span_float(x, xs, R, Rs)
+            return _vanishes(r, size)
+
+        found = self._first(self.row_mutants, test)
+        return None if found is None else found[1]
+
+    def match(self, mutants: Sequence[Mutant], test: Callable[[Compiled], bool]) -> Mutant | None:
+        """The first mutant the answer matches by `test(compiled mutant)`."""
+        return self._first(mutants, lambda m: test(self._compiled(m)))
+
+    @staticmethod
+    def _first(candidates, test):
+        for c in candidates:
             try:
-                mutated = list(p.euler_lagrange)
-                mutated[i] = self._compiled(m)
-
-                def residual(backend, mutated=mutated):
-                    env = points.arrays(backend)
-                    s = equation_rows([student], jets, env, backend)
-                    r = equation_rows(mutated, jets, env, backend)
-                    return in_span(s, r, 0, backend)
-
-                if decide(residual).equal:
-                    return m
-            except (UnsupportedExpression, ValueError, ZeroDivisionError):
+                with np.errstate(all="ignore"):
+                    if test(c):
+                        return c
+            except (UnsupportedExpression, ValueError, ZeroDivisionError, np.linalg.LinAlgError):
                 continue
         return None
+
+    def _values(self, m: Mutant, points: Points):
+        return self.problem.cached(
+            f"val:{id(m)}", points, lambda: _full(self._compiled(m).values(points.env), points.n)
+        )
 
     # --- helpers -----------------------------------------------------------------------------------
     def _compiled(self, m: Mutant) -> Compiled:
@@ -423,6 +456,17 @@ class Catalogue:
             seen.append((i, fp))
             kept.append((i, m))
         return kept
+
+
+def _full(pair, n: int) -> tuple[np.ndarray, np.ndarray]:
+    value, size = pair
+    return (np.broadcast_to(np.asarray(value, float), (n,)),
+            np.broadcast_to(np.asarray(size, float), (n,)))
+
+
+def _vanishes(r: np.ndarray, size: np.ndarray) -> bool:
+    r, size = np.asarray(r, float), np.asarray(size, float)
+    return bool(np.all(np.isfinite(r)) and np.all(np.abs(r) <= 1e-9 * size))
 
 
 def _close(a: np.ndarray, b: np.ndarray) -> bool:

@@ -96,6 +96,7 @@ def class_summary(manifest: Mapping[str, Any], results: Sequence[Mapping[str, An
     problems = []
     for problem in manifest["problems"]:
         parts, mistakes = [], Counter()
+        examples: dict[tuple[str, str], str] = {}
         for part in problem["parts"]:
             verdicts = [p for r in graded for pr in r["problems"] if pr["index"] == problem["index"]
                         for p in pr["parts"] if p["key"] == part["key"]]
@@ -105,11 +106,12 @@ def class_summary(manifest: Mapping[str, Any], results: Sequence[Mapping[str, An
                           "correct": correct,
                           "success_rate": round(correct / len(verdicts), 4) if verdicts else None})
             for v in verdicts:
-                for kind in v["mistakes"]:
-                    if kind != "blank":
-                        example = v["feedback"][0] if v["feedback"] else kind
-                        mistakes[(part["key"], kind, example)] += 1
-        top = [{"part": k[0], "mistake": k[1], "feedback": k[2], "count": n}
+                # The first named mistake is the diagnosis; its sentence leads the feedback.
+                kind = v["mistakes"][0] if v["mistakes"] else None
+                if kind and kind != "blank":
+                    mistakes[(part["key"], kind)] += 1
+                    examples.setdefault((part["key"], kind), v["feedback"][0] if v["feedback"] else kind)
+        top = [{"part": k[0], "mistake": k[1], "feedback": examples[k], "count": n}
                for k, n in sorted(mistakes.items(), key=lambda kv: (-kv[1], kv[0]))[:8]]
         problems.append({"index": problem["index"], "scene": problem["scene"],
                          "title": problem["title"], "parts": parts, "common_mistakes": top})
@@ -137,7 +139,7 @@ def summary_markdown(manifest: Mapping[str, Any], summary: Mapping[str, Any]) ->
             lines.append(f"| {p['key']} | {p['answered']} | {p['correct']} | {rate} |")
         if problem["common_mistakes"]:
             lines += ["", "Most common named mistakes:", ""]
-            lines += [f"- {m['count']} × {m['part']}: {m['feedback']} (`{m['mistake']}`)"
+            lines += [f"- {m['count']} × {m['part']}, `{m['mistake']}`, e.g. \"{m['feedback']}\""
                       for m in problem["common_mistakes"]]
         lines.append("")
     return "\n".join(lines)

@@ -10,7 +10,7 @@ from problem_bank.scene import SceneVariant
 
 from .checks import run_checker
 from .key import key_answer, plain
-from .problem import build_problem
+from .problem import Problem, build_problem
 
 
 def _spec(variant: SceneVariant, quantity: str | None = None) -> dict:
@@ -27,11 +27,15 @@ def verify_variant(variant: SceneVariant, parts: Iterable) -> list[str]:
     are the assignment's Part objects (`.part`, `.quantity`)."""
     problems: list[str] = []
     where = f"{variant.scene.id} (seed {variant.seed})"
+    built: dict[str | None, Problem] = {}
     for part in parts:
         name, quantity = part.part, getattr(part, "quantity", None)
         if name == "coordinates":
             continue  # names only; nothing the grader could disagree with
-        problem = build_problem(_spec(variant, quantity if name == "expression" else None))
+        which = quantity if name == "expression" else None
+        if which not in built:
+            built[which] = build_problem(_spec(variant, which))
+        problem = built[which]
         verdict = run_checker(problem, name, key_answer(variant, name, quantity))
         if verdict.status != "correct" or verdict.score < 1:
             problems.append(

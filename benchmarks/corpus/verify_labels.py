@@ -13,9 +13,9 @@ skipped; an answer undefined where the reference is defined differs.
 A true label needs agreement at every point (and at least 10 points where the reference is
 defined); a false label needs a difference at one point at least.
 
-Proofs: for true pairs, a − b is put through expand, ratsimp, trigsimp, expand_trig + ratsimp
-and simplify (each with a time limit); the first that gives 0 is recorded, or "unproved"
-(identities that hold only on the declared domain have no such proof).
+Proofs: for true pairs, a − b is put through expand, ratsimp, trigsimp, expand_trig + ratsimp,
+simplify and a half-angle substitution x = 2y (each with a time limit); the first that gives 0
+is recorded, or "unproved" (identities that hold only on the declared domain have no such proof).
 """
 
 from __future__ import annotations
@@ -176,12 +176,28 @@ def _alarm(signum, frame):
     raise _Timeout
 
 
+def _halve_angles(e: sp.Expr) -> sp.Expr:
+    """Substitute x = 2y for every symbol x that appears as x/2 in a trig argument, then
+    expand_trig and ratsimp: half-angle identities become polynomial identities in sin y, cos y."""
+    halves = {
+        s
+        for f in e.atoms(sp.sin, sp.cos, sp.tan, sp.cot)
+        for s in f.args[0].free_symbols
+        if sp.Rational(f.args[0].coeff(s)).q == 2
+    }
+    if not halves:
+        return e
+    e = e.xreplace({s: 2 * sp.Dummy(s.name, real=True) for s in halves})
+    return sp.ratsimp(sp.expand_trig(e).rewrite(sp.sin, sp.cos).rewrite(sp.tan, sp.sin))
+
+
 PROOFS = (
     ("expand", sp.expand),
     ("ratsimp", sp.ratsimp),
     ("trigsimp", sp.trigsimp),
     ("expand_trig+ratsimp", lambda e: sp.ratsimp(sp.expand_trig(e))),
     ("simplify", sp.simplify),
+    ("half-angle substitution", lambda e: sp.trigsimp(_halve_angles(e))),
 )
 
 
