@@ -46,8 +46,15 @@ def extra_items() -> list[Item]:
         cyc = list(v.system.cyclic_coordinates)
         items.append(Item(spec, "cyclic", cyc or "none", "correct", "right"))
         wrong = [c for c in v.coordinates if c not in cyc][:1] + cyc[1:]
-        items.append(Item(spec, "cyclic", wrong or "none", "incorrect" if wrong != cyc else "correct",
-                          "swapped"))
+        items.append(
+            Item(
+                spec,
+                "cyclic",
+                wrong or "none",
+                "incorrect" if wrong != cyc else "correct",
+                "swapped",
+            )
+        )
         T, V = v.kinetic_energy, v.potential_energy
         items.append(Item(spec, "T", plain(sp.factor(T)), "correct", "factored", (sp.factor(T), T)))
         items.append(Item(spec, "T", plain(2 * T), "incorrect", "double", (2 * T, T)))
@@ -62,7 +69,9 @@ def extra_items() -> list[Item]:
 def run_ours(items: list[Item]) -> tuple[list[float], list[dict], float]:
     lines = []
     for i, it in enumerate(items):
-        lines.append(json.dumps({"id": i, "problem": it.problem, "part": it.part, "answer": it.answer}))
+        lines.append(
+            json.dumps({"id": i, "problem": it.problem, "part": it.part, "answer": it.answer})
+        )
     times, results = [], []
     with Worker() as worker:
         start = time.perf_counter()
@@ -128,21 +137,27 @@ def percentile(xs: list[float], p: float) -> float:
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--subset", type=int, default=150, help="pairs run through simplify/equals")
-    parser.add_argument("--limit", type=float, default=2.0, help="seconds per simplify/equals check")
+    parser.add_argument(
+        "--limit", type=float, default=2.0, help="seconds per simplify/equals check"
+    )
     parser.add_argument("--per-part", type=int, default=12, help="mutations per part and scene")
     args = parser.parse_args()
 
     t0 = time.perf_counter()
     items = list(corpus(per_part=args.per_part)) + extra_items()
-    print(f"corpus: {len(items)} labelled requests from {len(scene_ids())} scenes "
-          f"(labels verified at 50 digits, built in {time.perf_counter() - t0:.1f} s)")
+    print(
+        f"corpus: {len(items)} labelled requests from {len(scene_ids())} scenes "
+        f"(labels verified at 50 digits, built in {time.perf_counter() - t0:.1f} s)"
+    )
     parts: dict[str, int] = {}
     for it in items:
         parts[it.part] = parts.get(it.part, 0) + 1
     print("  parts: " + ", ".join(f"{k} {v}" for k, v in sorted(parts.items())))
 
     times, results, total = run_ours(items)
-    wrong = [(it, r) for it, r in zip(items, results, strict=True) if r["verdict"] != expected_status(it)]
+    wrong = [
+        (it, r) for it, r in zip(items, results, strict=True) if r["verdict"] != expected_status(it)
+    ]
     worker_ms = [r["ms"] for r in results]
     first_touch = {}
     for i, it in enumerate(items):
@@ -150,12 +165,18 @@ def main() -> None:
     steady = [t for i, t in enumerate(times) if i not in set(first_touch.values())]
     print("\nlagrade check --batch (one worker process, round trip per request incl. parsing):")
     print(f"  requests        {len(items)}")
-    print(f"  median          {statistics.median(times):.2f} ms   (judging alone: "
-          f"{statistics.median(worker_ms):.2f} ms)")
-    print(f"  p99             {percentile(times, 99):.2f} ms   (excluding the {len(first_touch)} "
-          f"first requests per question, which derive it: {percentile(steady, 99):.2f} ms)")
-    print(f"  throughput      {len(items) / total:.0f} requests/s  ({total:.1f} s in all, "
-          "including deriving each question once)")
+    print(
+        f"  median          {statistics.median(times):.2f} ms   (judging alone: "
+        f"{statistics.median(worker_ms):.2f} ms)"
+    )
+    print(
+        f"  p99             {percentile(times, 99):.2f} ms   (excluding the {len(first_touch)} "
+        f"first requests per question, which derive it: {percentile(steady, 99):.2f} ms)"
+    )
+    print(
+        f"  throughput      {len(items) / total:.0f} requests/s  ({total:.1f} s in all, "
+        "including deriving each question once)"
+    )
     print(f"  wrong verdicts  {len(wrong)} of {len(items)}")
     for it, r in wrong[:10]:
         print(f"    {it.problem} {it.part} {it.kind} label={it.label} got={r['verdict']}")
@@ -166,19 +187,24 @@ def main() -> None:
     for i, it in pairs:
         by_part.setdefault(it.part, []).append((i, it))
     subset = []
-    for part, group in sorted(by_part.items()):
+    for _part, group in sorted(by_part.items()):
         share = max(1, round(args.subset * len(group) / len(pairs)))
         subset += rng.sample(group, min(share, len(group)))
-    print(f"\nsympy on {len(subset)} of the {len(pairs)} expression-level pairs (stratified by part; "
-          f"time limit {args.limit:g} s per check; the same pairs as above):")
+    print(
+        f"\nsympy on {len(subset)} of the {len(pairs)} expression-level pairs (stratified by part; "
+        f"time limit {args.limit:g} s per check; the same pairs as above):"
+    )
     ours_ms = [times[i] for i, _ in subset]
     ours_wrong = sum(results[i]["verdict"] != expected_status(it) for i, it in subset)
     inproc_ms = []
     for _i, it in subset:  # the same judgement on sympy input in this process: simplify's footing
         from grader.check import check_request  # noqa: PLC0415
 
-        ans = it.pair[0] if it.part != "momenta" else [
-            it.pair[0] if a == plain(it.pair[0]) else a for a in it.answer]
+        ans = (
+            it.pair[0]
+            if it.part != "momenta"
+            else [it.pair[0] if a == plain(it.pair[0]) else a for a in it.answer]
+        )
         if it.part == "momenta":
             ans = [sp.S(x) if not isinstance(x, str) else x for x in ans]
         start = time.perf_counter()
@@ -201,23 +227,33 @@ def main() -> None:
         report[method] = (ms, wrong_n, undecided)
     runner.close()
     print(f"  {'method':10} {'median ms':>10} {'total s':>9} {'wrong':>6} {'no verdict':>11}")
-    print(f"  {'lagrade':10} {statistics.median(ours_ms):10.2f} {sum(ours_ms) / 1e3:9.2f} "
-          f"{ours_wrong:6d} {0:11d}")
-    print(f"  {'lagrade*':10} {statistics.median(inproc_ms):10.2f} {sum(inproc_ms) / 1e3:9.2f}"
-          "      -           -   (* same judgement, sympy input in-process: no parsing, no pipe)")
+    print(
+        f"  {'lagrade':10} {statistics.median(ours_ms):10.2f} {sum(ours_ms) / 1e3:9.2f} "
+        f"{ours_wrong:6d} {0:11d}"
+    )
+    print(
+        f"  {'lagrade*':10} {statistics.median(inproc_ms):10.2f} {sum(inproc_ms) / 1e3:9.2f}"
+        "      -           -   (* same judgement, sympy input in-process: no parsing, no pipe)"
+    )
     for method, (ms, wrong_n, undecided) in report.items():
-        print(f"  {method:10} {statistics.median(ms):10.2f} {sum(ms) / 1e3:9.2f} {wrong_n:6d} "
-              f"{undecided:11d}")
+        print(
+            f"  {method:10} {statistics.median(ms):10.2f} {sum(ms) / 1e3:9.2f} {wrong_n:6d} "
+            f"{undecided:11d}"
+        )
     rewrites = [k for k, (_i, it) in enumerate(subset) if expected_status(it) == "correct"]
     for method, (ms, _w, _u) in report.items():
-        print(f"  speed ratio {method}/lagrade: median "
-              f"{statistics.median(ms) / statistics.median(ours_ms):.1f}× (batch round trip), "
-              f"{statistics.median(ms) / statistics.median(inproc_ms):.1f}× (in-process); total "
-              f"{sum(ms) / sum(ours_ms):.1f}×; on the {len(rewrites)} correct rewrites only: total "
-              f"{sum(ms[k] for k in rewrites) / sum(ours_ms[k] for k in rewrites):.1f}×")
-    print("\n(simplify(a - b) == 0 and equals compare L literally, so a right L that differs by a "
-          "constant,\n a total derivative or a factor counts as 'different' for them: those are "
-          "among their wrong verdicts.)")
+        print(
+            f"  speed ratio {method}/lagrade: median "
+            f"{statistics.median(ms) / statistics.median(ours_ms):.1f}× (batch round trip), "
+            f"{statistics.median(ms) / statistics.median(inproc_ms):.1f}× (in-process); total "
+            f"{sum(ms) / sum(ours_ms):.1f}×; on the {len(rewrites)} correct rewrites only: total "
+            f"{sum(ms[k] for k in rewrites) / sum(ours_ms[k] for k in rewrites):.1f}×"
+        )
+    print(
+        "\n(simplify(a - b) == 0 and equals compare L literally, so a right L that differs by a "
+        "constant,\n a total derivative or a factor counts as 'different' for them: those are "
+        "among their wrong verdicts.)"
+    )
 
 
 if __name__ == "__main__":

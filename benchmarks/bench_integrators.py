@@ -209,6 +209,7 @@ def chart(rows, stem: Path) -> bool:
     matplotlib.use("Agg")
     matplotlib.rcParams["svg.hashsalt"] = "lagrade-integrators"
     import matplotlib.pyplot as plt  # noqa: PLC0415
+    import matplotlib.ticker  # noqa: PLC0415
 
     scenes = list(dict.fromkeys(r["scene"] for r in rows))
     fig, axes = plt.subplots(1, len(scenes), figsize=(4.2 * len(scenes), 4.4), dpi=110, sharey=True)
@@ -238,6 +239,7 @@ def chart(rows, stem: Path) -> bool:
         ax.axhline(1e-8, color="gray", ls=":", lw=1)
         ax.set_xscale("log")
         ax.set_yscale("log")
+        ax.xaxis.set_minor_formatter(matplotlib.ticker.NullFormatter())
         ax.set_title(scene.replace("_", " "), fontsize=10)
         ax.set_xlabel("wall time (s, log)")
         ax.grid(True, which="both", alpha=0.3)

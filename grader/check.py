@@ -37,8 +37,15 @@ from .equivalence import ReferenceUndefined
 from .errors import RequestError
 from .problem import Problem, build_problem, problem_key
 
-__all__ = ["Verdict", "check", "check_request", "run_batch", "run_check_command", "Worker",
-           "add_check_arguments"]
+__all__ = [
+    "Verdict",
+    "check",
+    "check_request",
+    "run_batch",
+    "run_check_command",
+    "Worker",
+    "add_check_arguments",
+]
 
 DEFAULT_TIME_LIMIT = 2.0
 #: Seconds a worker may spend deriving a question (L, EL, sample points, mistake catalogue).
@@ -46,7 +53,7 @@ PREPARE_LIMIT = 60.0
 MAX_TIME_LIMIT = 120.0
 _CACHE_SIZE = 64
 
-# --- inside the worker ------------------------------------------------------------------------------
+# --- inside the worker ----------------------------------------------------------------------------
 
 _problems: OrderedDict[str, Problem] = OrderedDict()
 _prepared: set[tuple[str, str]] = set()
@@ -81,24 +88,24 @@ def prepare(problem: Problem, part: str) -> None:
         problem.points("expression")
     elif part in CHECKERS and problem.lagrangian is not None:
         system = problem.system
-        system.euler_lagrange
+        _ = system.euler_lagrange
         if part in ("lagrangian", "momenta", "eom", "conserved", "T", "V", "transformation"):
             problem.points(part)
         cat = problem.catalogue
         if part == "lagrangian":
-            cat.lagrangian_mutants
+            _ = cat.lagrangian_mutants
         elif part == "T" and problem.variant is not None:
-            cat.kinetic_mutants
+            _ = cat.kinetic_mutants
         elif part == "V" and problem.variant is not None:
-            cat.potential_mutants
+            _ = cat.potential_mutants
         elif part == "momenta":
             for k in range(len(problem.jets)):
                 cat.momentum_mutants(k)
         elif part == "eom":
-            cat.row_mutants
+            _ = cat.row_mutants
         elif part == "conserved":
-            system.conserved_quantities
-            cat.conserved_mutants
+            _ = system.conserved_quantities
+            _ = cat.conserved_mutants
     _prepared.add(key)
 
 
@@ -118,7 +125,9 @@ def _validate(request: Any) -> tuple[Any, str, Any, Mapping | None]:
 
 
 def _verdict_for_request_error(part: str, message: str) -> Verdict:
-    return Verdict(part if isinstance(part, str) else "?", "invalid", 0.0, (message,), "", "request")
+    return Verdict(
+        part if isinstance(part, str) else "?", "invalid", 0.0, (message,), "", "request"
+    )
 
 
 def check_request(request: Mapping[str, Any], on_ready=None) -> Verdict:
@@ -157,7 +166,8 @@ def _serve(conn) -> None:
             conn.send(("error", traceback.format_exc()))
 
 
-# --- the parent side ------------------------------------------------------------------------------------
+# --- the parent side ------------------------------------------------------------------------------
+
 
 class Worker:
     """One persistent worker process; `submit` enforces a deadline and replaces a worker that
@@ -213,26 +223,47 @@ class Worker:
                 self._kill()
                 self.restarts += 1
                 waited = (time.perf_counter() - start) * 1e3
-                what = "deriving the question" if deadline == PREPARE_LIMIT else "judging the answer"
-                return Verdict(str(part), "timeout", 0.0,
-                               (f"The check ran out of time ({what} took longer than "
-                                f"{deadline:g} s).",), "", "timeout", waited)
+                what = (
+                    "deriving the question" if deadline == PREPARE_LIMIT else "judging the answer"
+                )
+                return Verdict(
+                    str(part),
+                    "timeout",
+                    0.0,
+                    (f"The check ran out of time ({what} took longer than {deadline:g} s).",),
+                    "",
+                    "timeout",
+                    waited,
+                )
             try:
                 message = self._conn.recv()
             except (EOFError, OSError):
                 self._kill()
                 self.restarts += 1
-                return Verdict(str(part), "error", 0.0, ("The checking process died.",), "",
-                               "error", (time.perf_counter() - start) * 1e3)
+                return Verdict(
+                    str(part),
+                    "error",
+                    0.0,
+                    ("The checking process died.",),
+                    "",
+                    "error",
+                    (time.perf_counter() - start) * 1e3,
+                )
             if message[0] == "ready":
                 deadline = time_limit
                 continue
             if message[0] == "done":
                 return message[1]
             print(message[1], file=sys.stderr)
-            return Verdict(str(part), "error", 0.0, ("Internal error while checking; the "
-                                                    "details are in the log.",), "", "error",
-                           (time.perf_counter() - start) * 1e3)
+            return Verdict(
+                str(part),
+                "error",
+                0.0,
+                ("Internal error while checking; the details are in the log.",),
+                "",
+                "error",
+                (time.perf_counter() - start) * 1e3,
+            )
 
     def __enter__(self) -> Worker:
         return self
@@ -270,7 +301,8 @@ def check(
     return verdict
 
 
-# --- batch ---------------------------------------------------------------------------------------------------
+# --- batch ----------------------------------------------------------------------------------------
+
 
 def result_line(request_id: Any, verdict: Verdict) -> dict[str, Any]:
     """The JSON object of one result: id first, then the verdict's fields."""
@@ -291,8 +323,12 @@ def run_batch(
             try:
                 request = json.loads(line)
             except json.JSONDecodeError as error:
-                yield result_line(None, _verdict_for_request_error(
-                    "?", f"line {number} is not valid JSON: {error.msg} (column {error.colno})"))
+                yield result_line(
+                    None,
+                    _verdict_for_request_error(
+                        "?", f"line {number} is not valid JSON: {error.msg} (column {error.colno})"
+                    ),
+                )
                 continue
             request_id = request.get("id") if isinstance(request, dict) else None
             try:
@@ -310,7 +346,11 @@ def _time_limit(request: Any, default: float) -> float:
     if not isinstance(request, dict) or "time_limit" not in request:
         return default
     value = request["time_limit"]
-    if not isinstance(value, int | float) or isinstance(value, bool) or not 0 < value <= MAX_TIME_LIMIT:
+    if (
+        not isinstance(value, int | float)
+        or isinstance(value, bool)
+        or not 0 < value <= MAX_TIME_LIMIT
+    ):
         raise RequestError(f'"time_limit" must be a number of seconds in (0, {MAX_TIME_LIMIT:g}]')
     return float(value)
 
@@ -331,7 +371,9 @@ def check_batch_file(
         counts[result["verdict"]] = counts.get(result["verdict"], 0) + 1
         results.append(json.dumps(result, ensure_ascii=False))
     body = "\n".join(results) + ("\n" if results else "")
-    summary = f"{len(results)} requests: " + ", ".join(f"{v} {k}" for k, v in sorted(counts.items()))
+    summary = f"{len(results)} requests: " + ", ".join(
+        f"{v} {k}" for k, v in sorted(counts.items())
+    )
     if out is None:
         return 0, body.rstrip("\n")
     _write_atomically(Path(out), body)
@@ -350,30 +392,50 @@ def _write_atomically(path: Path, text: str) -> None:
         raise
 
 
-# --- the command line ----------------------------------------------------------------------------------
+# --- the command line -----------------------------------------------------------------------------
+
 
 def add_check_arguments(parser: argparse.ArgumentParser) -> None:
     """The arguments of `lagrade check` (for the CLI to add to its `check` subcommand)."""
-    parser.add_argument("--batch", metavar="REQUESTS.jsonl",
-                        help="check every request of a JSON-lines file, one result line each")
-    parser.add_argument("--out", metavar="RESULTS.jsonl",
-                        help="with --batch: write the results here (default: standard output)")
+    parser.add_argument(
+        "--batch",
+        metavar="REQUESTS.jsonl",
+        help="check every request of a JSON-lines file, one result line each",
+    )
+    parser.add_argument(
+        "--out",
+        metavar="RESULTS.jsonl",
+        help="with --batch: write the results here (default: standard output)",
+    )
     parser.add_argument("--scene", help="a bank scene id, e.g. wedge")
     parser.add_argument("--seed", type=int, default=None, help="the variant seed of --scene")
     parser.add_argument("--quantity", help="with --scene and --part expression: which quantity")
     parser.add_argument("--lagrangian", help="an ad-hoc reference Lagrangian (with --coordinates)")
     parser.add_argument("--expression", help="an ad-hoc reference expression (with --parameters)")
     parser.add_argument("--coordinates", default="", help="comma-separated coordinates, e.g. theta")
-    parser.add_argument("--parameters", default="",
-                        help="name=domain pairs, e.g. m=positive,alpha=(0, pi/2); a bare name "
-                             "is positive")
+    parser.add_argument(
+        "--parameters",
+        default="",
+        help="name=domain pairs, e.g. m=positive,alpha=(0, pi/2); a bare name is positive",
+    )
     parser.add_argument("--part", choices=tuple(CHECKERS), help="the part the answer is for")
-    parser.add_argument("--answer", action="append", default=None,
-                        help="the answer; repeat for parts that take a list (eom, momenta, …)")
-    parser.add_argument("--given-lagrangian", default=None,
-                        help="the student's own L, for follow-through on later parts")
-    parser.add_argument("--time-limit", type=float, default=DEFAULT_TIME_LIMIT,
-                        help="seconds per request (default 2)")
+    parser.add_argument(
+        "--answer",
+        action="append",
+        default=None,
+        help="the answer; repeat for parts that take a list (eom, momenta, …)",
+    )
+    parser.add_argument(
+        "--given-lagrangian",
+        default=None,
+        help="the student's own L, for follow-through on later parts",
+    )
+    parser.add_argument(
+        "--time-limit",
+        type=float,
+        default=DEFAULT_TIME_LIMIT,
+        help="seconds per request (default 2)",
+    )
     parser.add_argument("--json", action="store_true", help="print the result as JSON")
 
 
@@ -446,10 +508,14 @@ def run_check_command(args: argparse.Namespace) -> tuple[int, str]:
     given = {"lagrangian": args.given_lagrangian} if args.given_lagrangian else None
     build_problem(spec)  # a malformed problem is a usage error here, not a verdict
     with Worker() as worker:
-        verdict = worker.submit({"problem": spec, "part": args.part, "answer": answer,
-                                 "given": given}, args.time_limit)
+        verdict = worker.submit(
+            {"problem": spec, "part": args.part, "answer": answer, "given": given}, args.time_limit
+        )
     if verdict.method == "request":
         raise RequestError(verdict.feedback[0])
-    text = json.dumps(verdict.to_dict(), ensure_ascii=False, indent=2) if args.json else \
-        format_verdict(verdict)
+    text = (
+        json.dumps(verdict.to_dict(), ensure_ascii=False, indent=2)
+        if args.json
+        else format_verdict(verdict)
+    )
     return (0 if verdict.status == "correct" else 1), text

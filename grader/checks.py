@@ -20,7 +20,7 @@ from __future__ import annotations
 
 import re
 from collections.abc import Callable, Mapping, Sequence
-from dataclasses import asdict, dataclass, field
+from dataclasses import dataclass, field
 from fractions import Fraction
 from typing import Any
 
@@ -75,14 +75,19 @@ class Verdict:
         assert 0.0 <= self.score <= 1.0, self.score
 
     def to_dict(self) -> dict[str, Any]:
-        """The JSON form of a result (without the request id)."""
-        out = asdict(self)
-        out["verdict"] = out.pop("status")
-        out["feedback"] = list(self.feedback)
-        out["mistakes"] = list(self.mistakes)
-        out["witness"] = dict(self.witness) if self.witness else None
-        out["ms"] = round(self.ms, 3)
-        return out
+        """The JSON form of a result (without the request id), in the documented key order."""
+        return {
+            "verdict": self.status,
+            "score": self.score,
+            "feedback": list(self.feedback),
+            "interpreted": self.interpreted,
+            "method": self.method,
+            "ms": round(self.ms, 3),
+            "part": self.part,
+            "witness": dict(self.witness) if self.witness else None,
+            "follows_from_own_answer": self.follows_from_own_answer,
+            "mistakes": list(self.mistakes),
+        }
 
 
 def invalid(part: str, message: str, interpreted: str | list[str] = "") -> Verdict:
@@ -90,6 +95,7 @@ def invalid(part: str, message: str, interpreted: str | list[str] = "") -> Verdi
 
 
 # --- reading answers -----------------------------------------------------------------------------
+
 
 @dataclass(frozen=True)
 class Read:
@@ -123,7 +129,11 @@ def read(problem: Problem, item: Any, labels: Sequence[str] = (), mode: str = "a
         raise RequestError(f"an answer item must be a string, got {type(item).__name__}")
     p = parser()
     vocab = problem.vocabulary(labels)
-    parse = {"answer": p.parse_answer, "equation": p.parse_equation, "expression": p.parse_expression}
+    parse = {
+        "answer": p.parse_answer,
+        "equation": p.parse_equation,
+        "expression": p.parse_expression,
+    }
     parsed = parse[mode](item, vocab)
     rhs = None if parsed.rhs is None else problem.canonical(parsed.rhs)
     return Read(problem.canonical(parsed.lhs), rhs, parsed.plain())
@@ -190,13 +200,15 @@ def _ratio_text(c: float) -> str:
     return str(f) if abs(float(f) - c) <= 1e-9 * max(1, abs(c)) else f"{c:.6g}"
 
 
-# --- dof --------------------------------------------------------------------------------------------
+# --- dof ------------------------------------------------------------------------------------------
+
 
 def check_dof(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
     text = str(answer).strip() if not isinstance(answer, list) else ""
     if isinstance(answer, bool) or not (isinstance(answer, int) or re.fullmatch(r"[+-]?\d+", text)):
-        return invalid("dof", "Write the number of degrees of freedom as a whole number, e.g. 2.",
-                       text)
+        return invalid(
+            "dof", "Write the number of degrees of freedom as a whole number, e.g. 2.", text
+        )
     n = int(text if not isinstance(answer, int) else answer)
     if n == problem.dof:
         return Verdict("dof", "correct", 1.0, (), str(n), "exact")
@@ -207,17 +219,22 @@ def check_dof(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
         freedoms = sum(b.freedoms for b in v.bodies)
         implied = sum(1 for label, _ in v.constraints if label != "declared")
         if n == freedoms:
-            feedback.append(f"You counted {freedoms} freedoms of the bodies but subtracted no "
-                            "constraints (DOF = 3N − k).")
+            feedback.append(
+                f"You counted {freedoms} freedoms of the bodies but subtracted no "
+                "constraints (DOF = 3N − k)."
+            )
             mistakes = ("no_constraints",)
         elif implied and n == problem.dof + implied:
-            feedback.append("Motion in a plane is a constraint too (z = 0 for each body); "
-                            "count it among the k constraints.")
+            feedback.append(
+                "Motion in a plane is a constraint too (z = 0 for each body); "
+                "count it among the k constraints."
+            )
             mistakes = ("forgot_planarity",)
     return Verdict("dof", "incorrect", 0.0, tuple(feedback), str(n), "exact", mistakes=mistakes)
 
 
 # --- transformation ------------------------------------------------------------------------------
+
 
 def check_transformation(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
     v = problem.variant
@@ -235,7 +252,9 @@ def check_transformation(problem: Problem, answer: Any, given: Mapping | None) -
             text = item if isinstance(item, str) else str(item)
             raise ParseError(
                 f"Write each line as a Cartesian coordinate = expression, with one of: "
-                f"{', '.join(labels)}.", (0, len(text)), text,
+                f"{', '.join(labels)}.",
+                (0, len(text)),
+                text,
             )
         name = str(got.lhs)
         if name in given_pos:
@@ -243,14 +262,25 @@ def check_transformation(problem: Problem, answer: Any, given: Mapping | None) -
         given_pos[name] = got.rhs
     missing = [n for n in required if n not in given_pos]
     if missing:
-        return Verdict("transformation", "incorrect", 0.0,
-                       (f"Give every Cartesian coordinate; missing: {', '.join(missing)}.",),
-                       echoes, "exact", mistakes=("missing_coordinate",))
+        return Verdict(
+            "transformation",
+            "incorrect",
+            0.0,
+            (f"Give every Cartesian coordinate; missing: {', '.join(missing)}.",),
+            echoes,
+            "exact",
+            mistakes=("missing_coordinate",),
+        )
     for name, expr in given_pos.items():
         if any(expr.has(j.dot) or expr.has(j.ddot) for j in problem.jets):
-            return Verdict("transformation", "incorrect", 0.0,
-                           (f"{name} must depend on the coordinates (and t), not on velocities.",),
-                           echoes, "exact")
+            return Verdict(
+                "transformation",
+                "incorrect",
+                0.0,
+                (f"{name} must depend on the coordinates (and t), not on velocities.",),
+                echoes,
+                "exact",
+            )
     cart = {}
     for b in v.bodies:
         for axis, sym in vars(getattr(v.cartesian, b.name)).items():
@@ -268,11 +298,16 @@ def check_transformation(problem: Problem, answer: Any, given: Mapping | None) -
             n = points.n
             for s, c in compiled_pos.items():
                 val = c.values(env, backend)[0]
-                env[s] = np.full(n, val, dtype=float if backend is FLOAT else object) \
-                    if np.ndim(val) == 0 else val
+                env[s] = (
+                    np.full(n, val, dtype=float if backend is FLOAT else object)
+                    if np.ndim(val) == 0
+                    else val
+                )
             value, size = fc.values(env, backend)
-            return (np.broadcast_to(value, (n,)) if np.ndim(value) == 0 else value,
-                    np.broadcast_to(size, (n,)) if np.ndim(size) == 0 else size)
+            return (
+                np.broadcast_to(value, (n,)) if np.ndim(value) == 0 else value,
+                np.broadcast_to(size, (n,)) if np.ndim(size) == 0 else size,
+            )
 
         out = decide(residual)
         outcomes.append(out)
@@ -286,16 +321,25 @@ def check_transformation(problem: Problem, answer: Any, given: Mapping | None) -
         feedback.append(f"Your positions violate the constraint {shown}{_where(w)}.")
         mistakes.append("violates_constraint")
     if rank < n:
-        feedback.append(f"Your positions depend on only {rank} independent combination(s) of the "
-                        f"{n} coordinates; the map must have full rank.")
+        feedback.append(
+            f"Your positions depend on only {rank} independent combination(s) of the "
+            f"{n} coordinates; the map must have full rank."
+        )
         mistakes.append("rank_deficient")
     if not feedback:
         return Verdict("transformation", "correct", 1.0, (), echoes, _method(*outcomes))
     total = max(1, len(outcomes))
     score = 0.0 if rank < n else 0.5 * (total - len(failures)) / total
-    return Verdict("transformation", "incorrect", score, tuple(feedback), echoes,
-                   _method(*outcomes), witness=failures[0][1] if failures else None,
-                   mistakes=tuple(mistakes))
+    return Verdict(
+        "transformation",
+        "incorrect",
+        score,
+        tuple(feedback),
+        echoes,
+        _method(*outcomes),
+        witness=failures[0][1] if failures else None,
+        mistakes=tuple(mistakes),
+    )
 
 
 def _transformation_rank(problem: Problem, exprs: list[sp.Expr], points: Points) -> int:
@@ -311,11 +355,14 @@ def _transformation_rank(problem: Problem, exprs: list[sp.Expr], points: Points)
     return row_rank(np.transpose(J, (0, 2, 1)), list(range(len(coords))))
 
 
-# --- lagrangian, T, V --------------------------------------------------------------------------------
+# --- lagrangian, T, V -----------------------------------------------------------------------------
+
 
 def _reference_el(problem: Problem, points: Points):
     ref = problem.L
-    cached = problem.cached("el", points, lambda: euler_lagrange_values(ref, problem.jets, points.env))
+    cached = problem.cached(
+        "el", points, lambda: euler_lagrange_values(ref, problem.jets, points.env)
+    )
 
     def values(backend):
         if backend is FLOAT:
@@ -325,8 +372,9 @@ def _reference_el(problem: Problem, points: Points):
     return values
 
 
-def judge_lagrangian(problem: Problem, expr: sp.Expr) -> tuple[str, float, list[str], Outcome,
-                                                                Points, tuple[str, ...]]:
+def judge_lagrangian(
+    problem: Problem, expr: sp.Expr
+) -> tuple[str, float, list[str], Outcome, Points, tuple[str, ...]]:
     """(status, score, feedback, outcome, points, mistakes) for a Lagrangian answer."""
     answer = Compiled.of(expr)
     points = problem.points("lagrangian", _free(problem, expr))
@@ -334,26 +382,59 @@ def judge_lagrangian(problem: Problem, expr: sp.Expr) -> tuple[str, float, list[
     out = match.outcome
     factors = np.array(match.factors)
     if out.equal and np.all(np.abs(factors) < 1e-12):
-        return ("incorrect", 0.0, ["Your L gives no equations of motion at all (it is a constant "
-                                   "or a total time derivative)."], out, points, ("trivial",))
+        return (
+            "incorrect",
+            0.0,
+            [
+                "Your L gives no equations of motion at all (it is a constant "
+                "or a total time derivative)."
+            ],
+            out,
+            points,
+            ("trivial",),
+        )
     if out.equal and np.all(factors > 0):
-        return ("correct", 1.0, _same_dynamics_notes(problem, answer, match, points), out, points, ())
+        return (
+            "correct",
+            1.0,
+            _same_dynamics_notes(problem, answer, match, points),
+            out,
+            points,
+            (),
+        )
     if out.equal and np.all(factors < 0):
-        return ("incorrect", 0.5, ["Your L gives the right equations of motion but has the "
-                                   "opposite sign: the convention is L = T − V, and you wrote "
-                                   "V − T (or a negative multiple)."], out, points,
-                ("V_minus_T",))
+        return (
+            "incorrect",
+            0.5,
+            [
+                "Your L gives the right equations of motion but has the "
+                "opposite sign: the convention is L = T − V, and you wrote "
+                "V − T (or a negative multiple)."
+            ],
+            out,
+            points,
+            ("V_minus_T",),
+        )
     if _has_acceleration(problem, expr):
-        return ("incorrect", 0.0, ["A Lagrangian depends on coordinates, velocities and t, not on "
-                                   "accelerations."], out, points, ("acceleration",))
+        return (
+            "incorrect",
+            0.0,
+            ["A Lagrangian depends on coordinates, velocities and t, not on accelerations."],
+            out,
+            points,
+            ("acceleration",),
+        )
     feedback = []
     mistakes: tuple[str, ...] = ()
     mutant = problem.catalogue.match_lagrangian(answer, points)
     if mutant is not None:
         feedback.append(_sentence(mutant.message))
         mistakes = (mutant.kind,)
-    feedback.append("Your L does not give the equations of motion of this system"
-                    + _where(_witness(points, out, expr)) + ".")
+    feedback.append(
+        "Your L does not give the equations of motion of this system"
+        + _where(_witness(points, out, expr))
+        + "."
+    )
     return ("incorrect", 0.0, feedback, out, points, mistakes)
 
 
@@ -368,11 +449,15 @@ def _same_dynamics_notes(problem: Problem, answer: Compiled, match, points: Poin
     notes = []
     c = match.factor
     if c is None:
-        notes.append("Your L is T − V times a factor that depends on the parameters; that gives "
-                     "the same motion.")
+        notes.append(
+            "Your L is T − V times a factor that depends on the parameters; that gives "
+            "the same motion."
+        )
     elif abs(c - 1) > 1e-9:
-        notes.append(f"Your L is {_ratio_text(c)} × (T − V); a constant factor gives the same "
-                     "equations of motion.")
+        notes.append(
+            f"Your L is {_ratio_text(c)} × (T − V); a constant factor gives the same "
+            "equations of motion."
+        )
     with np.errstate(all="ignore"):
         a, sa = answer.values(points.env)
         b, sb = problem.L.values(points.env)
@@ -383,11 +468,15 @@ def _same_dynamics_notes(problem: Problem, answer: Compiled, match, points: Poin
         return notes
     starts = np.searchsorted(points.group, points.group)
     if np.all(np.abs(d - d[starts]) <= 1e-9 * (size + np.abs(d[starts]))):
-        notes.append("Your L differs from T − V by a constant (for example m g h, another zero "
-                     "level of V); that does not change the motion.")
+        notes.append(
+            "Your L differs from T − V by a constant (for example m g h, another zero "
+            "level of V); that does not change the motion."
+        )
     else:
-        notes.append("Your L differs from T − V by a total time derivative dF/dt; that gives the "
-                     "same equations of motion.")
+        notes.append(
+            "Your L differs from T − V by a total time derivative dF/dt; that gives the "
+            "same equations of motion."
+        )
     return notes
 
 
@@ -401,9 +490,19 @@ def _read_single(problem: Problem, answer: Any, part: str, label: str) -> Read:
 def check_lagrangian(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
     got = _read_single(problem, answer, "lagrangian", "L")
     status, score, feedback, out, _points, mistakes = judge_lagrangian(problem, got.expr)
-    witness = _witness(_points, out, got.expr) if status != "correct" and out.where is not None else None
-    return Verdict("lagrangian", status, score, tuple(feedback), got.echo, _method(out),
-                   witness=witness, mistakes=mistakes)
+    witness = (
+        _witness(_points, out, got.expr) if status != "correct" and out.where is not None else None
+    )
+    return Verdict(
+        "lagrangian",
+        status,
+        score,
+        tuple(feedback),
+        got.echo,
+        _method(out),
+        witness=witness,
+        mistakes=mistakes,
+    )
 
 
 def check_kinetic(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
@@ -420,8 +519,9 @@ def check_kinetic(problem: Problem, answer: Any, given: Mapping | None) -> Verdi
         mistakes = (mutant.kind,)
     w = _witness(points, out, got.expr)
     feedback.append("Your T is not the kinetic energy of this system" + _where(w) + ".")
-    return Verdict("T", "incorrect", 0.0, tuple(feedback), got.echo, _method(out), witness=w,
-                   mistakes=mistakes)
+    return Verdict(
+        "T", "incorrect", 0.0, tuple(feedback), got.echo, _method(out), witness=w, mistakes=mistakes
+    )
 
 
 def check_potential(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
@@ -433,8 +533,10 @@ def check_potential(problem: Problem, answer: Any, given: Mapping | None) -> Ver
     if out.equal:
         notes = ()
         if not expressions_equal(answer_c, reference, points).equal:
-            notes = ("Your V differs from the reference by a constant (another zero level); "
-                     "that is fine.",)
+            notes = (
+                "Your V differs from the reference by a constant (another zero level); "
+                "that is fine.",
+            )
         return Verdict("V", "correct", 1.0, notes, got.echo, _method(out))
     feedback, mistakes = [], ()
     mutant = problem.catalogue.match_offset(problem.catalogue.potential_mutants, answer_c, points)
@@ -442,13 +544,16 @@ def check_potential(problem: Problem, answer: Any, given: Mapping | None) -> Ver
         feedback.append(_sentence(mutant.message))
         mistakes = (mutant.kind,)
     w = _witness(points, out, got.expr)
-    feedback.append("Your V is not the potential energy of this system (up to a constant)"
-                    + _where(w) + ".")
-    return Verdict("V", "incorrect", 0.0, tuple(feedback), got.echo, _method(out), witness=w,
-                   mistakes=mistakes)
+    feedback.append(
+        "Your V is not the potential energy of this system (up to a constant)" + _where(w) + "."
+    )
+    return Verdict(
+        "V", "incorrect", 0.0, tuple(feedback), got.echo, _method(out), witness=w, mistakes=mistakes
+    )
 
 
-# --- equations of motion ------------------------------------------------------------------------------
+# --- equations of motion --------------------------------------------------------------------------
+
 
 def _own_lagrangian(problem: Problem, given: Mapping | None) -> sp.Expr | None:
     """The student's own L from `given`, when it parses (follow-through is best effort)."""
@@ -480,19 +585,22 @@ def check_eom(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
     jets = problem.jets
     n = len(jets)
     points = problem.points("eom", _free(problem, *exprs))
-    ref_rows = problem.cached("rows", points, lambda: equation_rows(problem.euler_lagrange, jets,
-                                                                    points.env))
+    ref_rows = problem.cached(
+        "rows", points, lambda: equation_rows(problem.euler_lagrange, jets, points.env)
+    )
     with np.errstate(all="ignore"):
         rows = equation_rows(compiled, jets, points.env)
     right, outcomes, feedback, mistakes = [], [], [], []
     wrong: list[int] = []
     witness = None
-    for k, r in enumerate(reads):
+    for k in range(len(reads)):
         label = f"Equation {k + 1} ({echoes[k]})" if len(reads) > 1 else "Your equation"
         nonlinear = decide(lambda b, k=k: _nonlinear_residual(compiled, k, jets, points, b))
         if not nonlinear.equal:
-            feedback.append(f"{label} is not linear in the accelerations, so it cannot be an "
-                            "Euler–Lagrange equation.")
+            feedback.append(
+                f"{label} is not linear in the accelerations, so it cannot be an "
+                "Euler–Lagrange equation."
+            )
             wrong.append(k)
             outcomes.append(nonlinear)
             continue
@@ -515,33 +623,47 @@ def check_eom(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
             feedback.append(f"{label}: {mutant.message}.")
             mistakes.append(mutant.kind)
         else:
-            feedback.append(f"{label} does not follow from the Euler–Lagrange equations of this "
-                            f"system{_where(_witness(points, out, exprs[k]))}.")
+            feedback.append(
+                f"{label} does not follow from the Euler–Lagrange equations of this "
+                f"system{_where(_witness(points, out, exprs[k]))}."
+            )
     rank = row_rank(rows.coef.astype(float), right)
     follows = False
     own = _own_lagrangian(problem, given)
     if wrong and own is not None:
         follows = _follows_from_own(problem, own, compiled, wrong, points)
         if follows:
-            feedback.append("These equations follow correctly from your own Lagrangian, which is "
-                            "not the right one.")
+            feedback.append(
+                "These equations follow correctly from your own Lagrangian, which is "
+                "not the right one."
+            )
     if not wrong and rank == n:
         notes = ()
         if len(reads) > n:
             notes = (f"You gave {len(reads)} equations; {n} of them are independent.",)
         return Verdict("eom", "correct", 1.0, notes, echoes, _method(*outcomes))
     if not wrong and rank < n:
-        feedback.append(f"Your equations are right but only {rank} of them are independent; "
-                        f"{n} coordinates need {n} equations.")
+        feedback.append(
+            f"Your equations are right but only {rank} of them are independent; "
+            f"{n} coordinates need {n} equations."
+        )
         mistakes.append("too_few_equations")
         score = rank / n
     else:
         score = len(right) / max(len(reads), n)
         if len(reads) < n and not wrong:
             feedback.append(f"{n} coordinates need {n} equations.")
-    return Verdict("eom", "incorrect", float(min(score, 1.0)), tuple(feedback), echoes,
-                   _method(*outcomes), witness=witness, follows_from_own_answer=follows,
-                   mistakes=tuple(mistakes))
+    return Verdict(
+        "eom",
+        "incorrect",
+        float(min(score, 1.0)),
+        tuple(feedback),
+        echoes,
+        _method(*outcomes),
+        witness=witness,
+        follows_from_own_answer=follows,
+        mistakes=tuple(mistakes),
+    )
 
 
 def _nonlinear_residual(compiled, k, jets, points, backend):
@@ -569,6 +691,7 @@ def _follows_from_own(problem: Problem, own: sp.Expr, compiled, wrong, points) -
         if not np.all(np.isfinite(own_rows.coef.astype(float))):
             return False
         for k in wrong:
+
             def residual(backend, k=k):
                 env = points.arrays(backend)
                 s = equation_rows([compiled[k]], jets, env, backend)
@@ -582,7 +705,8 @@ def _follows_from_own(problem: Problem, own: sp.Expr, compiled, wrong, points) -
     return True
 
 
-# --- momenta -----------------------------------------------------------------------------------------
+# --- momenta --------------------------------------------------------------------------------------
+
 
 def check_momenta(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
     jets = problem.jets
@@ -597,8 +721,12 @@ def check_momenta(problem: Problem, answer: Any, given: Mapping | None) -> Verdi
         if got.rhs is not None:
             if not (isinstance(got.lhs, sp.Symbol) and str(got.lhs) in labels):
                 text = item if isinstance(item, str) else str(item)
-                raise ParseError(f"Write each momentum as {labels[0]} = … or give them in the order "
-                                 f"{', '.join(j.name for j in jets)}.", (0, len(text)), text)
+                raise ParseError(
+                    f"Write each momentum as {labels[0]} = … or give them in the order "
+                    f"{', '.join(j.name for j in jets)}.",
+                    (0, len(text)),
+                    text,
+                )
             k = labels.index(str(got.lhs))
             if k in by_coordinate:
                 return invalid("momenta", f"{labels[k]} is given twice.", echoes)
@@ -607,7 +735,9 @@ def check_momenta(problem: Problem, answer: Any, given: Mapping | None) -> Verdi
             unlabelled.append(got)
     free_slots = [k for k in range(len(jets)) if k not in by_coordinate]
     if len(unlabelled) > len(free_slots):
-        return invalid("momenta", f"{len(items)} momenta given for {len(jets)} coordinates.", echoes)
+        return invalid(
+            "momenta", f"{len(items)} momenta given for {len(jets)} coordinates.", echoes
+        )
     for k, got in zip(free_slots, unlabelled, strict=False):
         by_coordinate[k] = got
     own = _own_lagrangian(problem, given)
@@ -629,11 +759,15 @@ def check_momenta(problem: Problem, answer: Any, given: Mapping | None) -> Verdi
         if own is not None and _own_momentum_matches(problem, own, ans, k, points):
             if _own_is_same_gauge(problem, own):
                 right += 1
-                feedback.append(f"p_{j.name} is the momentum of your Lagrangian, which differs "
-                                "from T − V by a total derivative; that is right for your L.")
+                feedback.append(
+                    f"p_{j.name} is the momentum of your Lagrangian, which differs "
+                    "from T − V by a total derivative; that is right for your L."
+                )
                 continue
-            feedback.append(f"p_{j.name} follows correctly from your own Lagrangian, which is "
-                            "not the right one.")
+            feedback.append(
+                f"p_{j.name} follows correctly from your own Lagrangian, which is "
+                "not the right one."
+            )
             any_wrong = True
             continue
         any_wrong, follows_all = True, False
@@ -643,14 +777,25 @@ def check_momenta(problem: Problem, answer: Any, given: Mapping | None) -> Verdi
             feedback.append(_sentence(mutant.message))
             mistakes.append(mutant.kind)
         else:
-            feedback.append(f"p_{j.name} is not ∂L/∂{j.name}_dot{_where(_witness(points, out, expr))}.")
+            feedback.append(
+                f"p_{j.name} is not ∂L/∂{j.name}_dot{_where(_witness(points, out, expr))}."
+            )
     score = right / len(jets)
     status = "correct" if right == len(jets) else "incorrect"
     follows = status != "correct" and any_wrong and follows_all and own is not None
-    return Verdict("momenta", status, score, tuple(feedback) if status != "correct" else
-                   tuple(f for f in feedback if "total derivative" in f), echoes,
-                   _method(*outcomes), witness=witness if status != "correct" else None,
-                   follows_from_own_answer=follows, mistakes=tuple(mistakes))
+    return Verdict(
+        "momenta",
+        status,
+        score,
+        tuple(feedback)
+        if status != "correct"
+        else tuple(f for f in feedback if "total derivative" in f),
+        echoes,
+        _method(*outcomes),
+        witness=witness if status != "correct" else None,
+        follows_from_own_answer=follows,
+        mistakes=tuple(mistakes),
+    )
 
 
 def _own_momentum_matches(problem: Problem, own: sp.Expr, ans: Compiled, k: int, points) -> bool:
@@ -673,19 +818,24 @@ def _own_is_same_gauge(problem: Problem, own: sp.Expr) -> bool:
     """The student's L is T − V plus a constant or a total derivative (factor exactly 1), so its
     momenta are right for it."""
     points = problem.points("lagrangian", _free(problem, own))
-    match = lagrangians_match(Compiled.of(own), _reference_el(problem, points), problem.jets, points)
+    match = lagrangians_match(
+        Compiled.of(own), _reference_el(problem, points), problem.jets, points
+    )
     c = match.factor
     return match.outcome.equal and c is not None and abs(c - 1) <= 1e-9
 
 
-# --- cyclic coordinates ------------------------------------------------------------------------------
+# --- cyclic coordinates ---------------------------------------------------------------------------
 
 _NONE = {"none", "no", "-", "", "∅", "nothing"}
 
 
 def check_cyclic(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
-    items = _items(answer, "cyclic") if not isinstance(answer, str) else re.split(
-        r"\s*(?:,|;|\band\b)\s*", answer.strip())
+    items = (
+        _items(answer, "cyclic")
+        if not isinstance(answer, str)
+        else re.split(r"\s*(?:,|;|\band\b)\s*", answer.strip())
+    )
     names: list[str] = []
     echoes: list[str] = []
     velocity_named = []
@@ -704,8 +854,11 @@ def check_cyclic(problem: Problem, answer: Any, given: Mapping | None) -> Verdic
             names.append(velocities[sym])
         else:
             text = item if isinstance(item, str) else str(item)
-            raise ParseError("Name the cyclic coordinates, e.g. "
-                             f"{problem.coordinates[0]}; or write none.", (0, len(text)), text)
+            raise ParseError(
+                f"Name the cyclic coordinates, e.g. {problem.coordinates[0]}; or write none.",
+                (0, len(text)),
+                text,
+            )
     claimed = set(names)
     L = sp.expand(problem.system.L)
     truth = set(problem.system.cyclic_coordinates)
@@ -719,8 +872,10 @@ def check_cyclic(problem: Problem, answer: Any, given: Mapping | None) -> Verdic
             continue
         if j.name in claimed:
             if not L.has(j.dot):
-                feedback.append(f"{j.name} is not cyclic: L contains {j.name} itself (only its "
-                                f"velocity {j.name}_dot is missing); cyclic means ∂L/∂{j.name} = 0.")
+                feedback.append(
+                    f"{j.name} is not cyclic: L contains {j.name} itself (only its "
+                    f"velocity {j.name}_dot is missing); cyclic means ∂L/∂{j.name} = 0."
+                )
                 mistakes.append("velocity_missing_not_cyclic")
             else:
                 term = next((x for x in sp.Add.make_args(L) if x.has(j.q)), None)
@@ -728,8 +883,10 @@ def check_cyclic(problem: Problem, answer: Any, given: Mapping | None) -> Verdic
                 feedback.append(f"{j.name} is not cyclic: L depends on {j.name}{example}.")
                 mistakes.append("not_cyclic")
         else:
-            feedback.append(f"{j.name} is cyclic: L contains its velocity {j.name}_dot but not "
-                            f"{j.name} itself, so p_{j.name} is conserved.")
+            feedback.append(
+                f"{j.name} is cyclic: L contains its velocity {j.name}_dot but not "
+                f"{j.name} itself, so p_{j.name} is conserved."
+            )
             mistakes.append("missed_cyclic")
     n = len(problem.jets)
     echo = echoes if echoes else ["none"]
@@ -739,20 +896,31 @@ def check_cyclic(problem: Problem, answer: Any, given: Mapping | None) -> Verdic
         own_cyclic = {j.name for j in problem.jets if not sp.expand(own).has(j.q)}
         if own_cyclic == claimed and own_cyclic != truth:
             follows = True
-            feedback.append("This is the set of cyclic coordinates of your own Lagrangian, which "
-                            "is not the right one.")
+            feedback.append(
+                "This is the set of cyclic coordinates of your own Lagrangian, which "
+                "is not the right one."
+            )
     if right == n and not velocity_named:
         return Verdict("cyclic", "correct", 1.0, (), echo, "exact")
-    return Verdict("cyclic", "incorrect", right / n * (0.5 if velocity_named else 1.0),
-                   tuple(feedback), echo, "exact", follows_from_own_answer=follows,
-                   mistakes=tuple(mistakes))
+    return Verdict(
+        "cyclic",
+        "incorrect",
+        right / n * (0.5 if velocity_named else 1.0),
+        tuple(feedback),
+        echo,
+        "exact",
+        follows_from_own_answer=follows,
+        mistakes=tuple(mistakes),
+    )
 
 
-# --- conserved quantities ---------------------------------------------------------------------------
+# --- conserved quantities -------------------------------------------------------------------------
+
 
 def _accelerations(problem: Problem, points: Points):
-    rows = problem.cached("rows", points, lambda: equation_rows(problem.euler_lagrange,
-                                                                problem.jets, points.env))
+    rows = problem.cached(
+        "rows", points, lambda: equation_rows(problem.euler_lagrange, problem.jets, points.env)
+    )
     acc = problem.cached("acc", points, lambda: solve_accelerations(rows))
 
     def values(backend):
@@ -764,14 +932,17 @@ def _accelerations(problem: Problem, points: Points):
     return values
 
 
-def _conservation(problem: Problem, Q: Compiled, points: Points) -> tuple[Outcome, bool, np.ndarray]:
+def _conservation(
+    problem: Problem, Q: Compiled, points: Points
+) -> tuple[Outcome, bool, np.ndarray]:
     """(is D_t Q = 0 on-shell, is Q constant, gradient of Q at the points)."""
     jets = problem.jets
     acc = _accelerations(problem, points)
 
     def residual(backend):
-        total, size, _grad = time_derivative_on_shell(Q, jets, points.arrays(backend), acc(backend),
-                                                      backend)
+        total, size, _grad = time_derivative_on_shell(
+            Q, jets, points.arrays(backend), acc(backend), backend
+        )
         n = points.n
         total = np.full(n, total) if np.ndim(total) == 0 else total
         size = np.full(n, size) if np.ndim(size) == 0 else size
@@ -788,32 +959,44 @@ def _conservation(problem: Problem, Q: Compiled, points: Points) -> tuple[Outcom
 
 
 def check_conserved(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
-    items = [] if isinstance(answer, str) and answer.strip().lower() in _NONE else _items(
-        answer, "conserved")
+    items = (
+        []
+        if isinstance(answer, str) and answer.strip().lower() in _NONE
+        else _items(answer, "conserved")
+    )
     items = [i for i in items if not (isinstance(i, str) and i.strip().lower() in _NONE)]
     reads = [read_labelled(problem, item) for item in items]
     echoes = [r.echo for r in reads] or ["none"]
     key = problem.system.conserved_quantities
     free = _free(problem, *(r.expr for r in reads))
     points = problem.points("conserved", free)
-    key_rank = problem.cached("key_rank", points, lambda: _gradient_rank(
-        [_conservation(problem, Compiled.of(q), points)[2] for q in key.values()]))
+    key_rank = problem.cached(
+        "key_rank",
+        points,
+        lambda: _gradient_rank(
+            [_conservation(problem, Compiled.of(q), points)[2] for q in key.values()]
+        ),
+    )
     feedback, mistakes, outcomes = [], [], []
     right_grads = []
     witness = None
     for k, r in enumerate(reads):
         label = f"{echoes[k]}"
         if _has_acceleration(problem, r.expr):
-            feedback.append(f"{label} contains an acceleration; a conserved quantity is a function "
-                            "of the coordinates, velocities and t.")
+            feedback.append(
+                f"{label} contains an acceleration; a conserved quantity is a function "
+                "of the coordinates, velocities and t."
+            )
             mistakes.append("acceleration")
             continue
         Q = Compiled.of(r.expr)
         out, constant, grad = _conservation(problem, Q, points)
         outcomes.append(out)
         if constant:
-            feedback.append(f"{label} is a constant; it is conserved trivially and says nothing "
-                            "about the motion.")
+            feedback.append(
+                f"{label} is a constant; it is conserved trivially and says nothing "
+                "about the motion."
+            )
             mistakes.append("constant")
         elif out.equal:
             right_grads.append(grad)
@@ -824,8 +1007,10 @@ def check_conserved(problem: Problem, answer: Any, given: Mapping | None) -> Ver
                 feedback.append(_sentence(mutant.message))
                 mistakes.append(mutant.kind)
             else:
-                feedback.append(f"{label} is not conserved: its time derivative along the motion "
-                                f"is not zero{_where(_witness(points, out, r.expr))}.")
+                feedback.append(
+                    f"{label} is not conserved: its time derivative along the motion "
+                    f"is not zero{_where(_witness(points, out, r.expr))}."
+                )
     rank = _gradient_rank(right_grads)
     n_right = len(right_grads)
     listed = len(reads)
@@ -837,14 +1022,24 @@ def check_conserved(problem: Problem, answer: Any, given: Mapping | None) -> Ver
         if rank < key_rank:
             names = ", ".join(key)
             noun = "quantity" if key_rank == 1 else "quantities"
-            feedback.append(f"This system has {key_rank} independent conserved {noun} "
-                            f"(for example {names}); you gave {rank}.")
+            feedback.append(
+                f"This system has {key_rank} independent conserved {noun} "
+                f"(for example {names}); you gave {rank}."
+            )
             mistakes.append("missing_conserved")
     status = "correct" if score >= 1.0 - 1e-12 and not feedback else "incorrect"
     if status == "correct":
         score = 1.0
-    return Verdict("conserved", status, float(score), tuple(feedback), echoes, _method(*outcomes),
-                   witness=witness, mistakes=tuple(mistakes))
+    return Verdict(
+        "conserved",
+        status,
+        float(score),
+        tuple(feedback),
+        echoes,
+        _method(*outcomes),
+        witness=witness,
+        mistakes=tuple(mistakes),
+    )
 
 
 def _gradient_rank(grads: Sequence[np.ndarray]) -> int:
@@ -857,7 +1052,8 @@ def _gradient_rank(grads: Sequence[np.ndarray]) -> int:
     return row_rank(coef, list(range(len(grads))))
 
 
-# --- expression --------------------------------------------------------------------------------------
+# --- expression -----------------------------------------------------------------------------------
+
 
 def check_expression(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
     got = _read_single(problem, answer, "expression", "x")
@@ -871,8 +1067,11 @@ def check_expression(problem: Problem, answer: Any, given: Mapping | None) -> Ve
     mutants = [
         Mutant("sin_cos_swapped", "sin and cos are swapped", _swap(ref.expr)),
         Mutant("wrong_sign", "the sign is wrong", -ref.expr),
-        Mutant("reciprocal", "your answer is upside down (the reciprocal of the right one)",
-               1 / ref.expr),
+        Mutant(
+            "reciprocal",
+            "your answer is upside down (the reciprocal of the right one)",
+            1 / ref.expr,
+        ),
     ]
     mutant = problem.catalogue.match(mutants, lambda m: expressions_equal(ans, m, points).equal)
     if mutant is not None:
@@ -880,8 +1079,16 @@ def check_expression(problem: Problem, answer: Any, given: Mapping | None) -> Ve
         mistakes = (mutant.kind,)
     w = _witness(points, out, got.expr, ref.expr)
     feedback.append("Your answer is not equal to the expected expression" + _where(w) + ".")
-    return Verdict("expression", "incorrect", 0.0, tuple(feedback), got.echo, _method(out),
-                   witness=w, mistakes=mistakes)
+    return Verdict(
+        "expression",
+        "incorrect",
+        0.0,
+        tuple(feedback),
+        got.echo,
+        _method(out),
+        witness=w,
+        mistakes=mistakes,
+    )
 
 
 def _swap(expr: sp.Expr) -> sp.Expr:
@@ -890,7 +1097,7 @@ def _swap(expr: sp.Expr) -> sp.Expr:
     return swap_sin_cos(expr)
 
 
-# --- the table -----------------------------------------------------------------------------------------
+# --- the table ------------------------------------------------------------------------------------
 
 Checker = Callable[[Problem, Any, Mapping | None], Verdict]
 
@@ -919,11 +1126,15 @@ def run_checker(problem: Problem, part: str, answer: Any, given: Mapping | None 
     if checker is None:
         raise RequestError(f"unknown part {part!r}; parts: {', '.join(CHECKERS)}")
     if part in NEEDS_LAGRANGIAN and problem.lagrangian is None:
-        raise RequestError(f"part {part!r} needs a scene or a Lagrangian, and this problem gives "
-                           "only an expression")
+        raise RequestError(
+            f"part {part!r} needs a scene or a Lagrangian, and this problem gives "
+            "only an expression"
+        )
     if part == "expression" and problem.expression is None:
-        raise RequestError('part "expression" needs a reference expression (an "expression" '
-                           'problem, or a scene with "quantity")')
+        raise RequestError(
+            'part "expression" needs a reference expression (an "expression" '
+            'problem, or a scene with "quantity")'
+        )
     try:
         return checker(problem, answer, given)
     except ParseError as error:

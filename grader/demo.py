@@ -194,13 +194,17 @@ def _toml_value(text: str) -> str:
     return "'''\n" + text + "'''" if "\n" in text else "'''" + text + "'''"
 
 
-def write_submissions(out: Path, manifest: dict[str, Any]) -> dict[str, list[str]]:
-    """One answer sheet per student (but the missing one), as TOML; returns what was planted."""
+def write_submissions(
+    out: Path, manifest: dict[str, Any], *, malformed: int | None = MALFORMED,
+    missing: int | None = MISSING,
+) -> dict[str, list[str]]:
+    """One answer sheet per student as TOML, but student number `missing` (0-based) sends none
+    and `malformed`'s file is broken; returns what was planted in each."""
     planted: dict[str, list[str]] = {}
     profiles = ["strong", "typical", "typical", "weak"]
     for i, student in enumerate(manifest["students"]):
         sid = student["id"]
-        if i == MISSING:
+        if i == missing:
             planted[sid] = ["no submission"]
             continue
         rng = random.Random(f"demo:{sid}")
@@ -214,7 +218,7 @@ def write_submissions(out: Path, manifest: dict[str, Any]) -> dict[str, list[str
             lines.append(f"\n[problem{problem['index']}]")
             lines += [f"{k} = {_toml_value(v)}" for k, v in answers.items()]
         text = "\n".join(lines) + "\n"
-        if i == MALFORMED:
+        if i == malformed:
             text = text.replace("[problem2]", "[problem2", 1)
             notes = ["malformed TOML"]
         atomic.write_text(out / f"{sid}.toml", text)

@@ -85,22 +85,38 @@ def term_mutants(expr: sp.Expr, what: str, parameters: Sequence[sp.Symbol]) -> l
     for k, term in enumerate(terms):
         rest = sp.Add(*(terms[:k] + terms[k + 1 :]))
         shown = plain(term)
-        out.append(Mutant("wrong_sign", f"the term {shown} in {what} has the wrong sign", rest - term))
+        out.append(
+            Mutant("wrong_sign", f"the term {shown} in {what} has the wrong sign", rest - term)
+        )
         if term.has(sp.sin) or term.has(sp.cos):
             swapped = swap_sin_cos(term)
             if swapped != term:
-                out.append(Mutant(
-                    "sin_cos_swapped", f"sin and cos are swapped in the term {shown} of {what}",
-                    rest + swapped,
-                ))
+                out.append(
+                    Mutant(
+                        "sin_cos_swapped",
+                        f"sin and cos are swapped in the term {shown} of {what}",
+                        rest + swapped,
+                    )
+                )
         for p in _factors(term, parameters):
-            out.append(Mutant(
-                "missing_factor", f"the term {shown} in {what} lacks the factor {p}", rest + term / p
-            ))
+            out.append(
+                Mutant(
+                    "missing_factor",
+                    f"the term {shown} in {what} lacks the factor {p}",
+                    rest + term / p,
+                )
+            )
         out.append(Mutant("missing_term", f"{what} lacks the term {shown}", rest))
-        out.append(Mutant("factor_two", f"the term {shown} in {what} is twice too large", rest + 2 * term))
-        out.append(Mutant("factor_half", f"the term {shown} in {what} is half what it should be",
-                          rest + term / 2))
+        out.append(
+            Mutant("factor_two", f"the term {shown} in {what} is twice too large", rest + 2 * term)
+        )
+        out.append(
+            Mutant(
+                "factor_half",
+                f"the term {shown} in {what} is half what it should be",
+                rest + term / 2,
+            )
+        )
     return out
 
 
@@ -114,20 +130,28 @@ def kinetic_mutants(T: sp.Expr, jets: Sequence[Jet], what: str) -> list[Mutant]:
         vel = _velocities(term, jets)
         coeff = term.as_coeff_Mul()[0]
         if vel and isinstance(coeff, sp.Rational) and coeff.q % 2 == 0:
-            out.append(Mutant(
-                "dropped_half", f"the ½ is missing in the kinetic term {plain(term)} of {what}",
-                rest + 2 * term,
-            ))
+            out.append(
+                Mutant(
+                    "dropped_half",
+                    f"the ½ is missing in the kinetic term {plain(term)} of {what}",
+                    rest + 2 * term,
+                )
+            )
         if len(vel) >= 2:
             cross = plain(sp.Mul(*vel))
-            out.append(Mutant("missing_cross_term", f"{what} lacks the cross term in {cross}", rest))
+            out.append(
+                Mutant("missing_cross_term", f"{what} lacks the cross term in {cross}", rest)
+            )
         if not vel:
-            out.append(Mutant(
-                "missing_driven_term",
-                f"{what} lacks the term {plain(term)} from the prescribed motion (the centripetal "
-                "or ω² term of the kinetic energy)",
-                rest,
-            ))
+            out.append(
+                Mutant(
+                    "missing_driven_term",
+                    f"{what} lacks the term {plain(term)} from the prescribed motion "
+                    "(the centripetal "
+                    "or ω² term of the kinetic energy)",
+                    rest,
+                )
+            )
     return out
 
 
@@ -167,10 +191,18 @@ class Catalogue:
             Tb = sp.expand(body.kinetic_energy(v.jets))
             if Tb == 0:
                 continue
-            out.append(Mutant("dropped_half", f"the ½ is missing in the kinetic energy of the "
-                              f"{body.name} in {what}", T + Tb))
-            out.append(Mutant("missing_body", f"{what} lacks the kinetic energy of the {body.name}",
-                              T - Tb))
+            out.append(
+                Mutant(
+                    "dropped_half",
+                    f"the ½ is missing in the kinetic energy of the {body.name} in {what}",
+                    T + Tb,
+                )
+            )
+            out.append(
+                Mutant(
+                    "missing_body", f"{what} lacks the kinetic energy of the {body.name}", T - Tb
+                )
+            )
         return out
 
     @property
@@ -186,13 +218,17 @@ class Catalogue:
             Mutant("dropped_half_all", "the ½ is missing in the kinetic energy", 2 * T - V),
         ]
         out += [Mutant(m.kind, m.message, m.expr - V) for m in self._body_mutants("your L")]
-        out += [Mutant(m.kind, m.message, m.expr - V)
-                for m in kinetic_mutants(T, self.problem.jets, "your L")]
-        out.append(Mutant("sin_cos_swapped", "sin and cos are swapped in your L", swap_sin_cos(T - V)))
+        out += [
+            Mutant(m.kind, m.message, m.expr - V)
+            for m in kinetic_mutants(T, self.problem.jets, "your L")
+        ]
+        out.append(
+            Mutant("sin_cos_swapped", "sin and cos are swapped in your L", swap_sin_cos(T - V))
+        )
         out += term_mutants(T - V, "your L", self.parameters)
         return self._distinct(out, "el", self.problem.L)
 
-    # --- T and V -----------------------------------------------------------------------------------
+    # --- T and V ----------------------------------------------------------------------------------
     @cached_property
     def kinetic_mutants(self) -> list[Mutant]:
         T = self.split.T
@@ -227,19 +263,27 @@ class Catalogue:
         out: list[Mutant] = []
         for i, j in enumerate(jets):
             if i != k:
-                out.append(Mutant(
-                    "wrong_coordinate",
-                    f"{what} is the momentum of {j.name} (∂L/∂{j.name}_dot), not of {name}",
-                    momenta[i],
-                ))
-        out.append(Mutant(
-            "force_not_momentum",
-            f"{what} is ∂L/∂{name}; the momentum is ∂L/∂{name}_dot",
-            sp.diff(p.system.L, jets[k].q),
-        ))
+                out.append(
+                    Mutant(
+                        "wrong_coordinate",
+                        f"{what} is the momentum of {j.name} (∂L/∂{j.name}_dot), not of {name}",
+                        momenta[i],
+                    )
+                )
+        out.append(
+            Mutant(
+                "force_not_momentum",
+                f"{what} is ∂L/∂{name}; the momentum is ∂L/∂{name}_dot",
+                sp.diff(p.system.L, jets[k].q),
+            )
+        )
         for m in self.lagrangian_mutants:
-            if m.kind in ("dropped_half", "missing_cross_term", "missing_driven_term",
-                          "dropped_half_all"):
+            if m.kind in (
+                "dropped_half",
+                "missing_cross_term",
+                "missing_driven_term",
+                "dropped_half_all",
+            ):
                 pk = sp.expand(sp.diff(m.expr, jets[k].dot))
                 out.append(Mutant(m.kind, _momentum_message(m, what, momenta[k], pk), pk))
         out += term_mutants(momenta[k], what, self.parameters)
@@ -256,20 +300,34 @@ class Catalogue:
         for i, j in enumerate(jets):
             what = f"the equation for {j.name}"
             flipped = sp.expand(E[i] + 2 * sp.diff(p.system.L, j.q))  # D_t p + ∂L/∂q
-            out.append((i, Mutant(
-                "el_sign", f"{what} has d/dt(∂L/∂{j.name}_dot) + ∂L/∂{j.name}; Lagrange's "
-                "equation has a minus sign", flipped,
-            )))
+            out.append(
+                (
+                    i,
+                    Mutant(
+                        "el_sign",
+                        f"{what} has d/dt(∂L/∂{j.name}_dot) + ∂L/∂{j.name}; Lagrange's "
+                        "equation has a minus sign",
+                        flipped,
+                    ),
+                )
+            )
         for m in self.lagrangian_mutants:
-            if m.kind in ("sign_of_V", "dropped_half", "missing_cross_term", "missing_driven_term",
-                          "dropped_half_all"):
+            if m.kind in (
+                "sign_of_V",
+                "dropped_half",
+                "missing_cross_term",
+                "missing_driven_term",
+                "dropped_half_all",
+            ):
                 try:
                     rows = LagrangianSystem(m.expr, jets).euler_lagrange
                 except Exception:  # noqa: BLE001 - a mutant we cannot differentiate is skipped
                     continue
                 for i, row in enumerate(rows):
                     if sp.expand(row - E[i]) != 0:
-                        msg = m.message.replace("your L", f"the L behind your equation for {jets[i].name}")
+                        msg = m.message.replace(
+                            "your L", f"the L behind your equation for {jets[i].name}"
+                        )
                         out.append((i, Mutant(m.kind, msg, row)))
         for i, j in enumerate(jets):
             for m in term_mutants(E[i], f"your equation for {j.name}", self.parameters):
@@ -285,21 +343,29 @@ class Catalogue:
         T, V = self.split.T, self.split.V
         h = sys_.energy_function
         if sp.expand(T + V - h) != 0:
-            out.append(Mutant(
-                "energy_not_conserved",
-                "T + V is not conserved here: the constraint moves, so energy flows in and out; "
-                "the Jacobi integral h = Σ q̇ ∂L/∂q̇ − L is",
-                T + V,
-            ))
+            out.append(
+                Mutant(
+                    "energy_not_conserved",
+                    "T + V is not conserved here: the constraint moves, so energy flows in "
+                    "and out; "
+                    "the Jacobi integral h = Σ q̇ ∂L/∂q̇ − L is",
+                    T + V,
+                )
+            )
         cyclic = set(sys_.cyclic_coordinates)
         for j, pj in zip(p.jets, sys_.generalized_momenta, strict=True):
             if j.name not in cyclic:
-                out.append(Mutant(
-                    "momentum_not_conserved",
-                    f"p_{j.name} is not conserved: {j.name} is not cyclic (L depends on {j.name})",
-                    pj,
-                ))
-        out.append(Mutant("lagrangian_not_conserved", "L itself is not a conserved quantity", sys_.L))
+                out.append(
+                    Mutant(
+                        "momentum_not_conserved",
+                        f"p_{j.name} is not conserved: {j.name} is not cyclic "
+                        f"(L depends on {j.name})",
+                        pj,
+                    )
+                )
+        out.append(
+            Mutant("lagrangian_not_conserved", "L itself is not a conserved quantity", sys_.L)
+        )
         return out
 
     # --- matching ---------------------------------------------------------------------------------
@@ -325,7 +391,9 @@ class Catalogue:
 
         return self._first(self.lagrangian_mutants, test)
 
-    def match_plain(self, mutants: Sequence[Mutant], answer: Compiled, points: Points) -> Mutant | None:
+    def match_plain(
+        self, mutants: Sequence[Mutant], answer: Compiled, points: Points
+    ) -> Mutant | None:
         a, sa = _full(answer.values(points.env), points.n)
 
         def test(m: Mutant) -> bool:
@@ -334,7 +402,9 @@ class Catalogue:
 
         return self._first(mutants, test)
 
-    def match_offset(self, mutants: Sequence[Mutant], answer: Compiled, points: Points) -> Mutant | None:
+    def match_offset(
+        self, mutants: Sequence[Mutant], answer: Compiled, points: Points
+    ) -> Mutant | None:
         a, sa = _full(answer.values(points.env), points.n)
         starts = np.searchsorted(points.group, points.group)
 
@@ -351,13 +421,16 @@ class Catalogue:
         jets = p.jets
         with np.errstate(all="ignore"):
             s = equation_rows([student], jets, points.env)
-            ref = p.cached("rows", points, lambda: equation_rows(p.euler_lagrange, jets, points.env))
+            ref = p.cached(
+                "rows", points, lambda: equation_rows(p.euler_lagrange, jets, points.env)
+            )
         x, xs = s.coef[:, 0, :].astype(float), s.size[:, 0].astype(float)
 
         def test(pair) -> bool:
             i, m = pair
-            rows = p.cached(f"row:{id(m)}", points,
-                            lambda: equation_rows([self._compiled(m)], jets, points.env))
+            rows = p.cached(
+                f"row:{id(m)}", points, lambda: equation_rows([self._compiled(m)], jets, points.env)
+            )
             R = ref.coef.astype(float).copy()
             Rs = ref.size.astype(float).copy()
             R[:, i, :] = rows.coef[:, 0, :]
@@ -388,7 +461,7 @@ class Catalogue:
             f"val:{id(m)}", points, lambda: _full(self._compiled(m).values(points.env), points.n)
         )
 
-    # --- helpers -----------------------------------------------------------------------------------
+    # --- helpers ----------------------------------------------------------------------------------
     def _compiled(self, m: Mutant) -> Compiled:
         cache = self.__dict__.setdefault("_compiled_cache", {})
         if id(m) not in cache:
@@ -397,7 +470,9 @@ class Catalogue:
 
     def _el_values(self, mut: Compiled, points: Points):
         return self.problem.cached(
-            f"el:{id(mut)}", points, lambda: euler_lagrange_values(mut, self.problem.jets, points.env)
+            f"el:{id(mut)}",
+            points,
+            lambda: euler_lagrange_values(mut, self.problem.jets, points.env),
         )
 
     def _fingerprint(self, compiled: Compiled, mode: str, points: Points) -> np.ndarray | None:
@@ -460,8 +535,10 @@ class Catalogue:
 
 def _full(pair, n: int) -> tuple[np.ndarray, np.ndarray]:
     value, size = pair
-    return (np.broadcast_to(np.asarray(value, float), (n,)),
-            np.broadcast_to(np.asarray(size, float), (n,)))
+    return (
+        np.broadcast_to(np.asarray(value, float), (n,)),
+        np.broadcast_to(np.asarray(size, float), (n,)),
+    )
 
 
 def _vanishes(r: np.ndarray, size: np.ndarray) -> bool:

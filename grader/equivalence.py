@@ -65,6 +65,7 @@ def coordinate_range(name: str) -> tuple[float, float]:
 
 # --- the sample space and its points ------------------------------------------------------------
 
+
 @dataclass(frozen=True)
 class Space:
     """The independent variables of a problem: coordinates with their jets, t, and parameters
@@ -176,6 +177,7 @@ class Points:
 
 # --- the decision -------------------------------------------------------------------------------
 
+
 @dataclass(frozen=True)
 class Outcome:
     """A decision: equal or not, which method decided, the worst ratio of residual to term size,
@@ -213,7 +215,9 @@ def decide(residual: Residual) -> Outcome:
         ratio_mp = np.array(
             [_mp_ratio(a, b) for a, b in zip(np.ravel(r_mp), np.ravel(s_mp), strict=True)]
         ).reshape(np.shape(r_mp))
-    per_point = ratio_mp.reshape(ratio_mp.shape[0], -1).max(axis=1) if ratio_mp.ndim > 1 else ratio_mp
+    per_point = (
+        ratio_mp.reshape(ratio_mp.shape[0], -1).max(axis=1) if ratio_mp.ndim > 1 else ratio_mp
+    )
     worst_mp = float(per_point.max())
     if worst_mp < MP_EQUAL_BELOW:
         return Outcome(True, "numeric+mpmath50", worst_mp)
@@ -235,6 +239,7 @@ def _mp_ratio(r, s) -> float:
 
 
 # --- compiled expressions ---------------------------------------------------------------------
+
 
 @dataclass(frozen=True)
 class Compiled:
@@ -292,6 +297,7 @@ def finite_mask(compiled: Sequence[Compiled]) -> Callable[[dict], np.ndarray]:
 
 # --- expressions -------------------------------------------------------------------------------
 
+
 def expressions_equal(answer: Compiled, reference: Compiled, points: Points) -> Outcome:
     """answer ≡ reference on the domain: a − b vanishes at every point, relative to the terms."""
 
@@ -339,6 +345,7 @@ def values_equal(answer: Compiled, values: Callable[[object], tuple], points: Po
 
 
 # --- Euler–Lagrange expressions, numerically ------------------------------------------------------
+
 
 def _tile(x, copies: int, n: int, backend):
     return np.tile(_broadcast(x, n, backend), copies)
@@ -430,8 +437,10 @@ def lagrangians_match(
     def residual(backend):
         env = points.arrays(backend)
         Ea, Sa = euler_lagrange_values(answer, jets, env, backend)
-        Eb, Sb = reference(backend) if callable(reference) else euler_lagrange_values(
-            reference, jets, env, backend
+        Eb, Sb = (
+            reference(backend)
+            if callable(reference)
+            else euler_lagrange_values(reference, jets, env, backend)
         )
         r = np.empty_like(Ea)
         s = np.empty_like(Ea)
@@ -451,7 +460,8 @@ def lagrangians_match(
     return LagrangianMatch(outcome, tuple(float(c) for c in found.get("c", ())))
 
 
-# --- equations linear in q̈: rows [A | c] at the points --------------------------------------------
+# --- equations linear in q̈: rows [A | c] at the points -------------------------------------------
+
 
 @dataclass
 class Rows:
@@ -479,7 +489,9 @@ def acceleration_blocks(jets: Sequence[Jet], env: Mapping, backend=FLOAT) -> dic
     return stacked
 
 
-def rows_from_values(values: np.ndarray, sizes: np.ndarray, jets: Sequence[Jet], env: Mapping) -> Rows:
+def rows_from_values(
+    values: np.ndarray, sizes: np.ndarray, jets: Sequence[Jet], env: Mapping
+) -> Rows:
     """Rows from equation values at the acceleration blocks: values (blocks·points, equations)."""
     n = len(jets)
     n_pts = len(next(iter(env.values())))
@@ -501,7 +513,9 @@ def _mp_max(arr: np.ndarray) -> np.ndarray:
     return out
 
 
-def equation_rows(equations: Sequence[Compiled], jets: Sequence[Jet], env: Mapping, backend=FLOAT) -> Rows:
+def equation_rows(
+    equations: Sequence[Compiled], jets: Sequence[Jet], env: Mapping, backend=FLOAT
+) -> Rows:
     """Rows [A | c] of equations given as expressions (lhs − rhs)."""
     stacked = acceleration_blocks(jets, env, backend)
     n_all = len(next(iter(stacked.values())))
@@ -524,8 +538,12 @@ def in_span(student: Rows, reference: Rows, k: int, backend=FLOAT) -> tuple[np.n
     """Residual of student row k outside the span of the reference rows, and its size, per
     point. The size counts the student's terms and the rounding the reference rows carry."""
     if backend is FLOAT:
-        return _in_span_float(student.coef[:, k, :].astype(float), student.size[:, k].astype(float),
-                              reference.coef.astype(float), reference.size.astype(float))
+        return _in_span_float(
+            student.coef[:, k, :].astype(float),
+            student.size[:, k].astype(float),
+            reference.coef.astype(float),
+            reference.size.astype(float),
+        )
     n_pts = student.coef.shape[0]
     dtype = object
     r = np.zeros(n_pts, dtype=dtype)
@@ -549,8 +567,9 @@ def _in_span_float(x: np.ndarray, size: np.ndarray, R: np.ndarray, R_size: np.nd
         Q, _ = np.linalg.qr(np.transpose(R, (0, 2, 1)))  # (points, n+1, m): basis of the rows
         res = x - np.einsum("pij,pj->pi", Q, np.einsum("pji,pj->pi", Q, x))
         ref_norm = np.linalg.norm(R, axis=2)
-        rel_ref = np.max(np.where(ref_norm > 0, R_size / np.where(ref_norm > 0, ref_norm, 1), 0),
-                         axis=1)
+        rel_ref = np.max(
+            np.where(ref_norm > 0, R_size / np.where(ref_norm > 0, ref_norm, 1), 0), axis=1
+        )
         return np.linalg.norm(res, axis=1), size + np.linalg.norm(x, axis=1) * rel_ref
 
 
@@ -611,7 +630,8 @@ def solve_accelerations(reference: Rows, backend=FLOAT) -> np.ndarray:
     return out
 
 
-# --- derivatives of an expression along the coordinates --------------------------------------------
+# --- derivatives of an expression along the coordinates -------------------------------------------
+
 
 def gradient(expr: Compiled, variables: Sequence[sp.Symbol], env: Mapping, backend=FLOAT):
     """∂expr/∂v for each v in `variables`, per term: a list over terms of arrays
@@ -657,9 +677,35 @@ def time_derivative_on_shell(
     return total, size, grad_total
 
 
-def as_symbols(names: Iterable[str], space: Space) -> list[sp.Symbol]:
-    """Symbols of the space by name."""
-    by_name = {str(s): s for s in space.parameters} | {
-        str(s): s for s in space.jet_symbols
-    } | {"t": t}
-    return [by_name[n] for n in names]
+@dataclass(frozen=True)
+class Equivalence:
+    """The answer to "are these two expressions equal on the domains?": the decision, the method
+    that made it, and a point where they differ (symbol name → value) when they do."""
+
+    equivalent: bool
+    method: str
+    witness: dict[str, float] | None = None
+
+
+def expressions_equivalent(
+    answer: sp.Expr,
+    reference: sp.Expr,
+    domains: Mapping[sp.Symbol, Domain] | None = None,
+    *,
+    seed: int = 0,
+) -> Equivalence:
+    """Numeric-first equivalence of two expressions: symbols in `domains` are drawn inside
+    their domains, any other symbol over the reals (±(0.2, 2.5)); points where the reference
+    is undefined are redrawn. The public entry for callers with bare sympy expressions."""
+    domains = dict(domains or {})
+    for s in (answer.free_symbols | reference.free_symbols) - set(domains):
+        domains[s] = Domain(str(s), sp.Integer(-5) / 2, sp.Integer(5) / 2)
+    ref = Compiled.of(reference)
+    points = Space((), domains).draw(seed, valid=finite_mask([ref]))
+    out = expressions_equal(Compiled.of(answer), ref, points)
+    witness = (
+        None
+        if out.where is None
+        else points.point(out.where, answer.free_symbols | reference.free_symbols)
+    )
+    return Equivalence(out.equal, out.method, witness)

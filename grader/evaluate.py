@@ -36,10 +36,22 @@ class UnsupportedExpression(GraderError):
 # --- compilation ------------------------------------------------------------------------------
 
 _FUNCTIONS: dict[type, str] = {
-    sp.sin: "sin", sp.cos: "cos", sp.tan: "tan", sp.cot: "cot", sp.sec: "sec", sp.csc: "csc",
-    sp.asin: "asin", sp.acos: "acos", sp.atan: "atan",
-    sp.sinh: "sinh", sp.cosh: "cosh", sp.tanh: "tanh",
-    sp.exp: "exp", sp.log: "log", sp.Abs: "abs", sp.sign: "sign",
+    sp.sin: "sin",
+    sp.cos: "cos",
+    sp.tan: "tan",
+    sp.cot: "cot",
+    sp.sec: "sec",
+    sp.csc: "csc",
+    sp.asin: "asin",
+    sp.acos: "acos",
+    sp.atan: "atan",
+    sp.sinh: "sinh",
+    sp.cosh: "cosh",
+    sp.tanh: "tanh",
+    sp.exp: "exp",
+    sp.log: "log",
+    sp.Abs: "abs",
+    sp.sign: "sign",
 }
 
 
@@ -110,6 +122,7 @@ def _instruction(node: sp.Basic, emit, symbols: set) -> tuple:
 
 
 # --- backends: float64 arrays or mpmath object arrays -------------------------------------------
+
 
 def _mp_real(f, nargs: int = 1):
     """An mpmath function made elementwise, with complex results (log of a negative number,
@@ -244,6 +257,7 @@ def _apply(B, name: str, x):
 
 
 # --- evaluation -------------------------------------------------------------------------------
+
 
 def run(program: Program, env: Mapping[sp.Symbol, Any], backend=FLOAT) -> list:
     """Values of the program's outputs; `env` maps every input symbol to an array (or scalar)."""

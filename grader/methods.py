@@ -656,62 +656,23 @@ class _MpScalar:
 
 @dataclass(frozen=True)
 class HybridDefault:
-    """The project's default, exactly as `grader.checks.check_expression` runs it: a Problem of
-    kind "expression" (coordinates recognised by their _dot/_ddot companions become jets, every
-    other symbol a parameter with its domain), its seeded sample points, and
-    `grader.equivalence.expressions_equal` (float64 relative to the terms, 50-digit confirmation
-    between 1e-10 and 1e-6). Not reimplemented: this adapter only maps our arguments to those
-    objects and the Outcome to True/False (None when the reference is undefined everywhere or
-    holds something the evaluator does not know)."""
+    """The project's default, `grader.equivalence.expressions_equivalent` (numeric first,
+    float64 relative to the size of the top-level terms, 50-digit confirmation between 1e-10 and
+    1e-6), wrapped, not reimplemented: its Equivalence maps to True/False, and None when the
+    reference is undefined everywhere or holds something the evaluator does not know."""
 
+    seed: int = 0
     name: str = "hybrid_default"
 
     def decide(self, answer, reference, domains) -> bool | None:
-        from .equivalence import Compiled, ReferenceUndefined, expressions_equal  # noqa: PLC0415
+        from .equivalence import ReferenceUndefined, expressions_equivalent  # noqa: PLC0415
 
         try:
-            problem = _expression_problem(reference, answer, domains)
-            points = problem.points(
-                "expression", frozenset(s for s in answer.free_symbols if s in problem.domains)
-            )
             return bool(
-                expressions_equal(Compiled.of(answer), problem.reference_expression, points).equal
+                expressions_equivalent(answer, reference, domains, seed=self.seed).equivalent
             )
         except (ReferenceUndefined, ev.UnsupportedExpression):
             return None
-
-
-def _expression_problem(reference: sp.Expr, answer: sp.Expr, domains: Domains):
-    """The grader.problem.Problem an `expression` request with these symbols would build."""
-    from problem_bank.mechanics import jet, t  # noqa: PLC0415
-
-    from .problem import Problem  # noqa: PLC0415
-
-    symbols = reference.free_symbols | answer.free_symbols
-    names = {s.name for s in symbols}
-    coordinates = sorted(
-        {n.rsplit("_", 1)[0] for n in names if n.endswith("_dot")}
-        | {n.rsplit("_", 1)[0] for n in names if n.endswith("_ddot")}
-    )
-    jets = tuple(jet(c) for c in coordinates)
-    jet_symbols = {s for j in jets for s in (j.q, j.dot, j.ddot)}
-    parameters = {s.name: s for s in symbols if s not in jet_symbols and s != t}
-    param_domains = {s: domains.get(s, REAL) for s in parameters.values()}
-    coordinate_domains = {
-        j.name: domains[j.q].sample_range()
-        for j in jets
-        if j.q in domains and domains[j.q].text != "real"
-    }
-    return Problem(
-        "methods:hybrid_default",
-        "expression",
-        jets,
-        parameters,
-        param_domains,
-        {},
-        expression=reference,
-        coordinate_domains=coordinate_domains,
-    )
 
 
 # --- other systems' documented rules -----------------------------------------------------------

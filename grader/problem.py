@@ -2,8 +2,8 @@
 reference expression with the domains of its variables — and everything the checks derive from
 it, computed once and cached (a batch of a thousand answers to one question derives once).
 
-    {"scene": "wedge", "seed": 3}                        a bank variant (no seed: the declared form)
-    {"scene": "wedge", "quantity": "block_acceleration"} a scene's closed-form quantity (`expression`)
+    {"scene": "wedge", "seed": 3}             a bank variant (no seed: the declared form)
+    {"scene": "wedge", "quantity": "block_acceleration"}   a closed-form quantity (`expression`)
     {"lagrangian": "...", "coordinates": ["theta"], "parameters": {"m": "positive", ...}}
     {"expression": "...", "parameters": {"g": "positive", "alpha": "(0, pi/2)"}}
 
@@ -118,15 +118,17 @@ class Problem:
     @cached_property
     def kinetic_energy(self) -> sp.Expr:
         if self.variant is None:
-            raise RequestError("T and V can be checked only for bank scenes (an ad-hoc problem "
-                               "gives L alone)")
+            raise RequestError(
+                "T and V can be checked only for bank scenes (an ad-hoc problem gives L alone)"
+            )
         return self.variant.kinetic_energy
 
     @cached_property
     def potential_energy(self) -> sp.Expr:
         if self.variant is None:
-            raise RequestError("T and V can be checked only for bank scenes (an ad-hoc problem "
-                               "gives L alone)")
+            raise RequestError(
+                "T and V can be checked only for bank scenes (an ad-hoc problem gives L alone)"
+            )
         return self.variant.potential_energy
 
     @cached_property
@@ -190,6 +192,7 @@ class Problem:
 
 # --- building a Problem from a request ------------------------------------------------------------
 
+
 def problem_key(spec: Mapping[str, Any]) -> str:
     """The identity of a problem field: its canonical JSON (a seed for the sample points and
     the key of the worker's cache)."""
@@ -238,8 +241,15 @@ def _scene_problem(spec: Mapping[str, Any], key: str) -> Problem:
             )
         expression = quantities[spec["quantity"]]
     return Problem(
-        key, "scene", jets, params, domains, values,
-        lagrangian=variant.lagrangian, expression=expression, variant=variant,
+        key,
+        "scene",
+        jets,
+        params,
+        domains,
+        values,
+        lagrangian=variant.lagrangian,
+        expression=expression,
+        variant=variant,
     )
 
 
@@ -248,7 +258,9 @@ def _adhoc_problem(spec: Mapping[str, Any], key: str, kind: str) -> Problem:
     text = spec[kind]
     if not isinstance(text, str) or not text.strip():
         raise RequestError(f'"{kind}" must be a non-empty string')
-    coords, coordinate_domains = _coordinates(spec.get("coordinates", []), required=kind == "lagrangian")
+    coords, coordinate_domains = _coordinates(
+        spec.get("coordinates", []), required=kind == "lagrangian"
+    )
     raw_params = spec.get("parameters", {})
     if not isinstance(raw_params, Mapping):
         raise RequestError('"parameters" must map each name to a domain, e.g. {"m": "positive"}')

@@ -22,5 +22,7 @@ def judge(problem, part, answer, given=None):
 
 @pytest.fixture
 def wedge_L_text() -> str:
-    return ("1/2 m (x_M_dot^2 + q_dot^2 + 2 x_M_dot q_dot cos(alpha)) + 1/2 M x_M_dot^2 "
-            "- m g (h - q sin(alpha))")
+    return (
+        "1/2 m (x_M_dot^2 + q_dot^2 + 2 x_M_dot q_dot cos(alpha)) + 1/2 M x_M_dot^2 "
+        "- m g (h - q sin(alpha))"
+    )

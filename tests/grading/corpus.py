@@ -13,7 +13,7 @@ from __future__ import annotations
 import random
 import zlib
 from dataclasses import dataclass, field
-from functools import lru_cache
+from functools import cache
 
 import mpmath
 import sympy as sp
@@ -25,8 +25,11 @@ from problem_bank.bank import get_scene, scene_ids
 DIGITS = 50
 POINTS = 5
 # Mutation kinds the mistake catalogue covers: a wrong answer of these kinds must be named.
-COVERED = {"lagrangian": {"sign", "drop", "double", "swap"}, "momenta": {"sign", "drop", "double",
-           "swap", "other_coordinate"}, "eom": {"sign", "drop", "double", "swap"}}
+COVERED = {
+    "lagrangian": {"sign", "drop", "double", "swap"},
+    "momenta": {"sign", "drop", "double", "swap", "other_coordinate"},
+    "eom": {"sign", "drop", "double", "swap"},
+}
 
 
 @dataclass(frozen=True)
@@ -49,6 +52,7 @@ class Item:
 
 # --- independent high-precision evaluation ------------------------------------------------------
 
+
 def _points(variant, seed: int, n: int = POINTS) -> list[dict]:
     rng = random.Random(seed)
     pts = []
@@ -56,7 +60,9 @@ def _points(variant, seed: int, n: int = POINTS) -> list[dict]:
         point: dict = {}
         for name, dom in variant.domains.items():
             lo, hi = dom.sample_range()
-            point[variant.parameter_symbols[name]] = sp.Rational(rng.uniform(lo, hi)).limit_denominator(10**6)
+            point[variant.parameter_symbols[name]] = sp.Rational(
+                rng.uniform(lo, hi)
+            ).limit_denominator(10**6)
         for j in variant.jets:
             for s in (j.q, j.dot, j.ddot):
                 x = rng.uniform(0.3, 2.2) * rng.choice((-1, 1))
@@ -197,6 +203,7 @@ def _rank(quantities: list[sp.Expr], jets, point: dict) -> int:
 
 # --- mutations ------------------------------------------------------------------------------------
 
+
 def swap(expr: sp.Expr) -> sp.Expr:
     if isinstance(expr, sp.sin):
         return sp.cos(swap(expr.args[0]))
@@ -233,8 +240,11 @@ def _thin(items: list, limit: int, seed: int) -> list:
 
 # --- the corpus ----------------------------------------------------------------------------------
 
-@lru_cache(maxsize=None)
-def corpus(scenes: tuple[str, ...] | None = None, per_part: int = 12, seeds: tuple = (None,)) -> tuple[Item, ...]:
+
+@cache
+def corpus(
+    scenes: tuple[str, ...] | None = None, per_part: int = 12, seeds: tuple = (None,)
+) -> tuple[Item, ...]:
     """The labelled corpus for `scenes` (default: the whole bank), at most `per_part` mutations
     per part and scene."""
     items: list[Item] = []
@@ -264,8 +274,13 @@ def _scene_items(sid: str, seed, per_part: int) -> list[Item]:
         ("scaled", 3 * L / 2),
         ("plus_constant", L + 7 * params[0] * params[-1]),
         ("plus_total_derivative", L + mech.total_derivative(F, jets)),
-        ("trig", sp.expand(L).replace(lambda e: isinstance(e, sp.Pow) and isinstance(e.base, sp.cos)
-                                      and e.exp == 2, lambda e: 1 - sp.sin(e.base.args[0]) ** 2)),
+        (
+            "trig",
+            sp.expand(L).replace(
+                lambda e: isinstance(e, sp.Pow) and isinstance(e.base, sp.cos) and e.exp == 2,
+                lambda e: 1 - sp.sin(e.base.args[0]) ** 2,
+            ),
+        ),
         ("V_minus_T", V - T),
     ]
     mutations = _thin(single_term_mutations(L, jets), per_part, rnd.randrange(10**6))
@@ -275,7 +290,8 @@ def _scene_items(sid: str, seed, per_part: int) -> list[Item]:
 
     # Momenta: each p_j on its own.
     momenta = system.generalized_momenta
-    for k, (j, p) in enumerate(zip(jets, momenta, strict=True)):
+    for k, p in enumerate(momenta):
+
         def answer(e, k=k):
             return [plain(e if i == k else momenta[i]) for i in range(len(jets))]
 
@@ -284,8 +300,9 @@ def _scene_items(sid: str, seed, per_part: int) -> list[Item]:
         for i, other in enumerate(momenta):
             if i != k:
                 cases.append(("other_coordinate", other))
-        for kind, expr in [cases[0]] + _thin(cases[1:], max(2, per_part // len(jets)),
-                                             rnd.randrange(10**6)):
+        for kind, expr in [cases[0]] + _thin(
+            cases[1:], max(2, per_part // len(jets)), rnd.randrange(10**6)
+        ):
             label = "correct" if same_values(expr, p, pts) else "incorrect"
             out.append(Item(spec, "momenta", answer(expr), label, kind, (expr, p)))
 
@@ -297,9 +314,13 @@ def _scene_items(sid: str, seed, per_part: int) -> list[Item]:
     if len(E) == 1:
         A = system.mass_matrix[0, 0]
         eom_cases.append(("solved", [sp.Eq(jets[0].ddot, sp.cancel(system.forcing[0] / A))]))
-    moved = [sp.Eq(sp.Add(*[t for t in sp.Add.make_args(e) if t.has(*[j.ddot for j in jets])]),
-                   -sp.Add(*[t for t in sp.Add.make_args(e) if not t.has(*[j.ddot for j in jets])]))
-             for e in E]
+    moved = [
+        sp.Eq(
+            sp.Add(*[t for t in sp.Add.make_args(e) if t.has(*[j.ddot for j in jets])]),
+            -sp.Add(*[t for t in sp.Add.make_args(e) if not t.has(*[j.ddot for j in jets])]),
+        )
+        for e in E
+    ]
     eom_cases.append(("moved_across", moved))
     muts = []
     for i, e in enumerate(E):
@@ -319,8 +340,9 @@ def _scene_items(sid: str, seed, per_part: int) -> list[Item]:
             cons.append(("sum", [key[0] + key[-1]] + key[1:]))
         for kind, qs in cons:
             out.append(Item(spec, "conserved", [plain(q) for q in qs], "correct", kind))
-        for kind, m in _thin(single_term_mutations(key[-1], jets), max(3, per_part // 2),
-                             rnd.randrange(10**6)):
+        for kind, m in _thin(
+            single_term_mutations(key[-1], jets), max(3, per_part // 2), rnd.randrange(10**6)
+        ):
             qs = key[:-1] + [m]
             label = conserved_label(m, system, pts)
             if label == "correct" and _rank(qs, jets, pts[0]) < _rank(key, jets, pts[0]):

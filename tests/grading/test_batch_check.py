@@ -21,15 +21,28 @@ from grader.errors import RequestError
 from .conftest import HOOP_ADHOC
 
 ISSUE_EXAMPLES = [
-    {"id": "s1-L", "problem": {"scene": "wedge"}, "part": "lagrangian",
-     "answer": "1/2 m (x_M_dot^2 + q_dot^2 + 2 x_M_dot q_dot cos(alpha)) + 1/2 M x_M_dot^2 "
-               "- m g (h - q sin(alpha))"},
-    {"id": "s2-eom", "problem": HOOP_ADHOC, "part": "eom",
-     "answer": ["theta_ddot = omega^2 sin(theta) cos(theta) - (g/R) sin(theta)"]},
-    {"id": "s3-x", "problem": {"expression": "g*sin(alpha)*(M+m)/(M+m*sin(alpha)**2)",
-                               "parameters": {"g": "positive", "M": "positive", "m": "positive",
-                                              "alpha": "(0, pi/2)"}},
-     "part": "expression", "answer": "g sin(alpha) (m+M)/(M + m sin(alpha)^2)"},
+    {
+        "id": "s1-L",
+        "problem": {"scene": "wedge"},
+        "part": "lagrangian",
+        "answer": "1/2 m (x_M_dot^2 + q_dot^2 + 2 x_M_dot q_dot cos(alpha)) + 1/2 M x_M_dot^2 "
+        "- m g (h - q sin(alpha))",
+    },
+    {
+        "id": "s2-eom",
+        "problem": HOOP_ADHOC,
+        "part": "eom",
+        "answer": ["theta_ddot = omega^2 sin(theta) cos(theta) - (g/R) sin(theta)"],
+    },
+    {
+        "id": "s3-x",
+        "problem": {
+            "expression": "g*sin(alpha)*(M+m)/(M+m*sin(alpha)**2)",
+            "parameters": {"g": "positive", "M": "positive", "m": "positive", "alpha": "(0, pi/2)"},
+        },
+        "part": "expression",
+        "answer": "g sin(alpha) (m+M)/(M + m sin(alpha)^2)",
+    },
 ]
 
 
@@ -41,14 +54,33 @@ def worker():
 
 def test_batch_results_in_order_and_malformed_lines_do_not_stop_it(worker):
     lines = [json.dumps(r) for r in ISSUE_EXAMPLES[:1]]
-    lines += ["{not json", json.dumps({"id": "no-part", "problem": {"scene": "wedge"}, "answer": "x"}),
-              json.dumps({"id": "bad-scene", "problem": {"scene": "nope"}, "part": "dof", "answer": "1"}),
-              "", json.dumps({"id": "bad-part", "problem": {"scene": "wedge"}, "part": "zzz", "answer": "1"})]
+    lines += [
+        "{not json",
+        json.dumps({"id": "no-part", "problem": {"scene": "wedge"}, "answer": "x"}),
+        json.dumps({"id": "bad-scene", "problem": {"scene": "nope"}, "part": "dof", "answer": "1"}),
+        "",
+        json.dumps({"id": "bad-part", "problem": {"scene": "wedge"}, "part": "zzz", "answer": "1"}),
+    ]
     lines += [json.dumps(r) for r in ISSUE_EXAMPLES[1:]]
     results = list(run_batch(lines, worker=worker))
-    assert [r["id"] for r in results] == ["s1-L", None, "no-part", "bad-scene", "bad-part", "s2-eom", "s3-x"]
-    assert [r["verdict"] for r in results] == ["correct", "invalid", "invalid", "invalid", "invalid",
-                                               "correct", "correct"]
+    assert [r["id"] for r in results] == [
+        "s1-L",
+        None,
+        "no-part",
+        "bad-scene",
+        "bad-part",
+        "s2-eom",
+        "s3-x",
+    ]
+    assert [r["verdict"] for r in results] == [
+        "correct",
+        "invalid",
+        "invalid",
+        "invalid",
+        "invalid",
+        "correct",
+        "correct",
+    ]
     assert "not valid JSON" in results[1]["feedback"][0]
     assert "unknown scene" in results[3]["feedback"][0]
     for r in results:
@@ -56,8 +88,13 @@ def test_batch_results_in_order_and_malformed_lines_do_not_stop_it(worker):
 
 
 def test_timeout_kills_the_worker_and_the_batch_goes_on(worker):
-    slow = {"id": "slow", "problem": {"scene": "double_pendulum"}, "part": "conserved",
-            "answer": ["+".join(f"sin(theta_1)^{k}" for k in range(1, 60))], "time_limit": 1e-4}
+    slow = {
+        "id": "slow",
+        "problem": {"scene": "double_pendulum"},
+        "part": "conserved",
+        "answer": ["+".join(f"sin(theta_1)^{k}" for k in range(1, 60))],
+        "time_limit": 1e-4,
+    }
     lines = [json.dumps(slow), json.dumps(ISSUE_EXAMPLES[0])]
     results = list(run_batch(lines, worker=worker))
     assert results[0]["verdict"] == "timeout" and results[0]["score"] == 0
@@ -95,15 +132,38 @@ def _args(*argv):
 
 
 def test_single_form_of_the_command():
-    status, text = run_check_command(_args("--scene", "wedge", "--part", "cyclic", "--answer", "x_M"))
+    status, text = run_check_command(
+        _args("--scene", "wedge", "--part", "cyclic", "--answer", "x_M")
+    )
     assert status == 0 and "cyclic: correct" in text
-    status, text = run_check_command(_args(
-        "--lagrangian", "m*l**2*theta_dot**2/2 + m*g*l*cos(theta)", "--coordinates", "theta",
-        "--parameters", "m=positive,g,l", "--part", "eom", "--answer", "theta_ddot = -(g/l) sin(theta)",
-        "--json"))
+    status, text = run_check_command(
+        _args(
+            "--lagrangian",
+            "m*l**2*theta_dot**2/2 + m*g*l*cos(theta)",
+            "--coordinates",
+            "theta",
+            "--parameters",
+            "m=positive,g,l",
+            "--part",
+            "eom",
+            "--answer",
+            "theta_ddot = -(g/l) sin(theta)",
+            "--json",
+        )
+    )
     assert status == 0 and json.loads(text)["verdict"] == "correct"
-    status, text = run_check_command(_args("--expression", "cos(a)", "--parameters", "a=(0, pi/2)",
-                                           "--part", "expression", "--answer", "sin(a)"))
+    status, text = run_check_command(
+        _args(
+            "--expression",
+            "cos(a)",
+            "--parameters",
+            "a=(0, pi/2)",
+            "--part",
+            "expression",
+            "--answer",
+            "sin(a)",
+        )
+    )
     assert status == 1 and "incorrect" in text
     with pytest.raises(RequestError):
         run_check_command(_args("--part", "dof", "--answer", "1"))

@@ -25,14 +25,20 @@ def test_t_plus_v_is_named_for_the_bank_hoop():
 
 
 @pytest.mark.parametrize("problem", [HOOP, HOOP_ADHOC])
-@pytest.mark.parametrize("eq, status", [
-    ("theta_ddot = omega^2 sin(theta) cos(theta) - (g/R) sin(theta)", "correct"),
-    ("m R^2 theta_ddot - m R^2 omega^2 sin(theta) cos(theta) + m g R sin(theta) = 0", "correct"),
-    ("R theta_ddot = R omega^2 sin(theta) cos(theta) - g sin(theta)", "correct"),
-    ("theta_ddot = omega^2 sin(theta) cos(theta) + (g/R) sin(theta)", "incorrect"),
-    ("theta_ddot = -(g/R) sin(theta)", "incorrect"),
-    ("theta_ddot^2 = omega^2 sin(theta) cos(theta) - (g/R) sin(theta)", "incorrect"),
-])
+@pytest.mark.parametrize(
+    "eq, status",
+    [
+        ("theta_ddot = omega^2 sin(theta) cos(theta) - (g/R) sin(theta)", "correct"),
+        (
+            "m R^2 theta_ddot - m R^2 omega^2 sin(theta) cos(theta) + m g R sin(theta) = 0",
+            "correct",
+        ),
+        ("R theta_ddot = R omega^2 sin(theta) cos(theta) - g sin(theta)", "correct"),
+        ("theta_ddot = omega^2 sin(theta) cos(theta) + (g/R) sin(theta)", "incorrect"),
+        ("theta_ddot = -(g/R) sin(theta)", "incorrect"),
+        ("theta_ddot^2 = omega^2 sin(theta) cos(theta) - (g/R) sin(theta)", "incorrect"),
+    ],
+)
 def test_equation_of_motion(problem, eq, status):
     assert judge(problem, "eom", [eq]).status == status
 
@@ -62,8 +68,11 @@ def test_equilibrium_angle_expression():
 
 
 def test_transformation_of_the_rotating_hoop():
-    right = ["x_bead = R sin(theta) cos(omega t)", "y_bead = R sin(theta) sin(omega t)",
-             "z_bead = -R cos(theta)"]
+    right = [
+        "x_bead = R sin(theta) cos(omega t)",
+        "y_bead = R sin(theta) sin(omega t)",
+        "z_bead = -R cos(theta)",
+    ]
     assert judge(HOOP, "transformation", right).status == "correct"
     frozen = ["x_bead = R sin(theta)", "y_bead = 0", "z_bead = -R cos(theta)"]
     assert judge(HOOP, "transformation", frozen).status == "incorrect"
@@ -85,9 +94,13 @@ def test_adhoc_problem_errors_are_request_errors():
 
 
 def test_expression_problem_with_domains():
-    problem = {"expression": "g*sin(alpha)*(M+m)/(M+m*sin(alpha)**2)",
-               "parameters": {"g": "positive", "M": "positive", "m": "positive", "alpha": "(0, pi/2)"}}
-    assert judge(problem, "expression", "g sin(alpha) (m+M)/(M + m sin(alpha)^2)").status == "correct"
+    problem = {
+        "expression": "g*sin(alpha)*(M+m)/(M+m*sin(alpha)**2)",
+        "parameters": {"g": "positive", "M": "positive", "m": "positive", "alpha": "(0, pi/2)"},
+    }
+    assert (
+        judge(problem, "expression", "g sin(alpha) (m+M)/(M + m sin(alpha)^2)").status == "correct"
+    )
     # |cos α| = cos α on (0, π/2): equal on the declared domain
     problem2 = {"expression": "cos(alpha)", "parameters": {"alpha": "(0, pi/2)"}}
     assert judge(problem2, "expression", "sqrt(1 - sin(alpha)^2)").status == "correct"

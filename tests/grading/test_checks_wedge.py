@@ -9,15 +9,28 @@ from .conftest import WEDGE, judge
 T_TEXT = "1/2 m (x_M_dot^2 + q_dot^2 + 2 x_M_dot q_dot cos(alpha)) + 1/2 M x_M_dot^2"
 
 
-@pytest.mark.parametrize("answer, note", [
-    (T_TEXT + " - m g (h - q sin(alpha))", None),
-    (T_TEXT + " + m g q sin(alpha)", "constant"),                            # dropped m g h
-    (T_TEXT + " + m g q sin(alpha) + x_M_dot q + x_M q_dot", "total time derivative"),  # + d(x_M q)/dt
-    ("2 (" + T_TEXT + " + m g q sin(alpha))", "2 × (T − V)"),
-    ("L = (M + m)/2 * x_M_dot^2 + m/2 * q_dot^2 + m x_M_dot q_dot cos(alpha) + m g q sin(alpha)", None),
-    (r"\frac{1}{2}(M+m)\dot{x}_M^2 + \frac{1}{2} m \dot{q}^2 + m \dot{x}_M \dot{q}\cos\alpha"
-     r" + m g q \sin\alpha", None),
-])
+@pytest.mark.parametrize(
+    "answer, note",
+    [
+        (T_TEXT + " - m g (h - q sin(alpha))", None),
+        (T_TEXT + " + m g q sin(alpha)", "constant"),  # dropped m g h
+        (
+            T_TEXT + " + m g q sin(alpha) + x_M_dot q + x_M q_dot",
+            "total time derivative",
+        ),  # + d(x_M q)/dt
+        ("2 (" + T_TEXT + " + m g q sin(alpha))", "2 × (T − V)"),
+        (
+            "L = (M + m)/2 * x_M_dot^2 + m/2 * q_dot^2 + m x_M_dot q_dot cos(alpha)"
+            " + m g q sin(alpha)",
+            None,
+        ),
+        (
+            r"\frac{1}{2}(M+m)\dot{x}_M^2 + \frac{1}{2} m \dot{q}^2 + m \dot{x}_M \dot{q}\cos\alpha"
+            r" + m g q \sin\alpha",
+            None,
+        ),
+    ],
+)
 def test_lagrangian_in_correct_forms(answer, note):
     v = judge(WEDGE, "lagrangian", answer)
     assert (v.status, v.score) == ("correct", 1.0), v.feedback
@@ -32,7 +45,9 @@ def test_v_minus_t_is_the_same_motion_but_the_wrong_convention():
 
 
 def test_missing_cross_term_is_named():
-    v = judge(WEDGE, "lagrangian", "1/2 m (x_M_dot^2 + q_dot^2) + 1/2 M x_M_dot^2 + m g q sin(alpha)")
+    v = judge(
+        WEDGE, "lagrangian", "1/2 m (x_M_dot^2 + q_dot^2) + 1/2 M x_M_dot^2 + m g q sin(alpha)"
+    )
     assert v.status == "incorrect" and v.mistakes == ("missing_cross_term",)
     assert "cross term in q_dot*x_M_dot" in v.feedback[0]
     assert v.witness and set(v.witness) >= {"q_dot", "x_M_dot"}
@@ -48,23 +63,46 @@ def test_unparsable_answer_is_invalid_with_the_parsers_message():
     assert v.status == "invalid" and "^" in v.feedback[0]
 
 
-@pytest.mark.parametrize("eqs", [
-    ["(M+m) x_M_ddot + m q_ddot cos(alpha) = 0", "m q_ddot + m x_M_ddot cos(alpha) - m g sin(alpha) = 0"],
-    ["q_ddot + x_M_ddot cos(alpha) = g sin(alpha)", "(M+m) x_M_ddot = -m q_ddot cos(alpha)"],  # divided, moved
-    ["2 (M+m) x_M_ddot + 2 m q_ddot cos(alpha)", "m q_ddot + m x_M_ddot cos(alpha) - m g sin(alpha)"],
-    ["(M+m) x_M_ddot + m q_ddot cos(alpha) + 3 (m q_ddot + m x_M_ddot cos(alpha) - m g sin(alpha)) = 0",
-     "m q_ddot + m x_M_ddot cos(alpha) = m g sin(alpha)"],                       # row-combined
-    ["q_ddot = g sin(alpha) (M+m)/(M + m sin(alpha)^2)",
-     "x_M_ddot = -m g sin(alpha) cos(alpha)/(M + m sin(alpha)^2)"],              # solved forms
-])
+@pytest.mark.parametrize(
+    "eqs",
+    [
+        [
+            "(M+m) x_M_ddot + m q_ddot cos(alpha) = 0",
+            "m q_ddot + m x_M_ddot cos(alpha) - m g sin(alpha) = 0",
+        ],
+        [
+            "q_ddot + x_M_ddot cos(alpha) = g sin(alpha)",
+            "(M+m) x_M_ddot = -m q_ddot cos(alpha)",
+        ],  # divided, moved
+        [
+            "2 (M+m) x_M_ddot + 2 m q_ddot cos(alpha)",
+            "m q_ddot + m x_M_ddot cos(alpha) - m g sin(alpha)",
+        ],
+        [
+            "(M+m) x_M_ddot + m q_ddot cos(alpha)"
+            " + 3 (m q_ddot + m x_M_ddot cos(alpha) - m g sin(alpha)) = 0",
+            "m q_ddot + m x_M_ddot cos(alpha) = m g sin(alpha)",
+        ],  # row-combined
+        [
+            "q_ddot = g sin(alpha) (M+m)/(M + m sin(alpha)^2)",
+            "x_M_ddot = -m g sin(alpha) cos(alpha)/(M + m sin(alpha)^2)",
+        ],  # solved forms
+    ],
+)
 def test_equations_of_motion_in_correct_forms(eqs):
     v = judge(WEDGE, "eom", eqs)
     assert v.status == "correct", v.feedback
 
 
 def test_one_wrong_equation_gets_partial_credit_and_a_name():
-    v = judge(WEDGE, "eom", ["(M+m) x_M_ddot + m q_ddot cos(alpha) = 0",
-                             "m q_ddot + m x_M_ddot cos(alpha) + m g sin(alpha) = 0"])
+    v = judge(
+        WEDGE,
+        "eom",
+        [
+            "(M+m) x_M_ddot + m q_ddot cos(alpha) = 0",
+            "m q_ddot + m x_M_ddot cos(alpha) + m g sin(alpha) = 0",
+        ],
+    )
     assert v.status == "incorrect" and v.score == 0.5
     assert v.mistakes and "Equation 2" in v.feedback[0]
 
@@ -76,8 +114,12 @@ def test_one_equation_for_two_coordinates_is_not_enough():
 
 def test_equations_that_follow_from_the_students_own_wrong_lagrangian():
     own_L = "1/2 m (x_M_dot^2 + q_dot^2) + 1/2 M x_M_dot^2 + m g q sin(alpha)"  # no cross term
-    v = judge(WEDGE, "eom", ["(M+m) x_M_ddot = 0", "m q_ddot = m g sin(alpha)"],
-              given={"lagrangian": own_L})
+    v = judge(
+        WEDGE,
+        "eom",
+        ["(M+m) x_M_ddot = 0", "m q_ddot = m g sin(alpha)"],
+        given={"lagrangian": own_L},
+    )
     assert v.status == "incorrect" and v.follows_from_own_answer
     assert any("your own Lagrangian" in f for f in v.feedback)
 
@@ -91,7 +133,9 @@ def test_momenta_labelled_or_in_order():
 
 
 def test_momentum_of_the_wrong_coordinate_is_named():
-    v = judge(WEDGE, "momenta", ["m q_dot + m x_M_dot cos(alpha)", "(M+m) x_M_dot + m q_dot cos(alpha)"])
+    v = judge(
+        WEDGE, "momenta", ["m q_dot + m x_M_dot cos(alpha)", "(M+m) x_M_dot + m q_dot cos(alpha)"]
+    )
     assert v.score == 0 and v.mistakes == ("wrong_coordinate", "wrong_coordinate")
 
 
@@ -110,8 +154,17 @@ def test_conserved_momentum_and_energy():
     v = judge(WEDGE, "conserved", [p_x])
     assert v.status == "incorrect" and v.score == 0.5 and "missing_conserved" in v.mistakes
     # any true conserved quantity: a combination of the two
-    assert judge(WEDGE, "conserved", [p_x, "2 (" + T_TEXT + " - m g q sin(alpha)) + 3 ((M + m) x_M_dot"
-                                      " + m q_dot cos(alpha))"]).status == "correct"
+    assert (
+        judge(
+            WEDGE,
+            "conserved",
+            [
+                p_x,
+                "2 (" + T_TEXT + " - m g q sin(alpha)) + 3 ((M + m) x_M_dot + m q_dot cos(alpha))",
+            ],
+        ).status
+        == "correct"
+    )
 
 
 def test_momentum_of_a_non_cyclic_coordinate_is_not_conserved():
@@ -124,13 +177,39 @@ def test_a_constant_is_not_an_answer():
     assert "constant" in v.mistakes
 
 
-@pytest.mark.parametrize("answer, status", [
-    (["x_wedge = x_M", "y_wedge = 0", "x_block = x_M + q cos(alpha)", "y_block = h - q sin(alpha)"], "correct"),
-    (["x_wedge = x_M", "y_wedge = 0", "x_block = x_M + (q + 1) cos(alpha)", "y_block = h - (q + 1) sin(alpha)"],
-     "correct"),                                    # q measured from another point of the face
-    (["x_wedge = x_M", "y_wedge = 0", "x_block = x_M + q sin(alpha)", "y_block = h - q cos(alpha)"], "incorrect"),
-    (["x_wedge = x_M", "y_wedge = 0", "x_block = x_M", "y_block = h"], "incorrect"),   # rank 1
-])
+@pytest.mark.parametrize(
+    "answer, status",
+    [
+        (
+            [
+                "x_wedge = x_M",
+                "y_wedge = 0",
+                "x_block = x_M + q cos(alpha)",
+                "y_block = h - q sin(alpha)",
+            ],
+            "correct",
+        ),
+        (
+            [
+                "x_wedge = x_M",
+                "y_wedge = 0",
+                "x_block = x_M + (q + 1) cos(alpha)",
+                "y_block = h - (q + 1) sin(alpha)",
+            ],
+            "correct",
+        ),  # q measured from another point of the face
+        (
+            [
+                "x_wedge = x_M",
+                "y_wedge = 0",
+                "x_block = x_M + q sin(alpha)",
+                "y_block = h - q cos(alpha)",
+            ],
+            "incorrect",
+        ),
+        (["x_wedge = x_M", "y_wedge = 0", "x_block = x_M", "y_block = h"], "incorrect"),  # rank 1
+    ],
+)
 def test_transformation(answer, status):
     assert judge(WEDGE, "transformation", answer).status == status
 
@@ -147,20 +226,26 @@ def test_dof_t_and_v():
     assert judge(WEDGE, "T", T_TEXT).status == "correct"
     v = judge(WEDGE, "T", "m (x_M_dot^2 + q_dot^2 + 2 x_M_dot q_dot cos(alpha)) + 1/2 M x_M_dot^2")
     assert v.mistakes == ("dropped_half",) and "block" in v.feedback[0]
-    assert judge(WEDGE, "V", "-m g q sin(alpha)").status == "correct"     # another zero level
+    assert judge(WEDGE, "V", "-m g q sin(alpha)").status == "correct"  # another zero level
     assert judge(WEDGE, "V", "m g q sin(alpha)").mistakes == ("sign_of_V",)
 
 
 def test_expression_for_the_block_acceleration():
     problem = {**WEDGE, "quantity": "block_acceleration"}
-    assert judge(problem, "expression", "g sin(alpha) (m+M)/(M + m sin(alpha)^2)").status == "correct"
+    assert (
+        judge(problem, "expression", "g sin(alpha) (m+M)/(M + m sin(alpha)^2)").status == "correct"
+    )
     v = judge(problem, "expression", "g cos(alpha) (m+M)/(M + m cos(alpha)^2)")
     assert v.mistakes == ("sin_cos_swapped",)
 
 
 def test_seeded_variant_uses_its_names_and_accepts_numbers():
     """Seed 3 calls the wedge's coordinate X; g may be written as 9.81 (its value there)."""
-    v = judge({"scene": "wedge", "seed": 3}, "lagrangian",
-              "1/2 m (X_dot^2 + q_dot^2 + 2 X_dot q_dot cos(alpha)) + 1/2 M X_dot^2 + m 9.81 q sin(alpha)")
+    v = judge(
+        {"scene": "wedge", "seed": 3},
+        "lagrangian",
+        "1/2 m (X_dot^2 + q_dot^2 + 2 X_dot q_dot cos(alpha)) + 1/2 M X_dot^2"
+        " + m 9.81 q sin(alpha)",
+    )
     assert v.status == "correct", v.feedback
     assert judge({"scene": "wedge", "seed": 3}, "lagrangian", "x_M_dot^2").status == "invalid"

@@ -11,19 +11,19 @@ import sympy as sp
 from grader.equivalence import (
     Compiled,
     Space,
+    decide,
     equation_rows,
     euler_lagrange_values,
     expressions_equal,
-    decide,
+    finite_mask,
     in_span,
     lagrangians_match,
-    finite_mask,
     row_rank,
     seed_for,
     solve_accelerations,
     time_derivative_on_shell,
 )
-from grader.evaluate import FLOAT, MP, UnsupportedExpression, compile_program, run
+from grader.evaluate import MP, UnsupportedExpression, compile_program, run
 from problem_bank import Domain, get_scene
 from problem_bank.mechanics import jet, t
 
@@ -34,7 +34,9 @@ m, g, l = (sp.Symbol(n, positive=True) for n in "mgl")
 
 
 def space_of(jets=(), **params):
-    return Space(tuple(jets), {sp.Symbol(n, positive=True): Domain.parse(d) for n, d in params.items()})
+    return Space(
+        tuple(jets), {sp.Symbol(n, positive=True): Domain.parse(d) for n, d in params.items()}
+    )
 
 
 @pytest.fixture(scope="module")
@@ -46,12 +48,20 @@ def pend():
     return space, L, points
 
 
-@pytest.mark.parametrize("expr", [
-    sp.sin(x) * sp.cos(y) + sp.tan(x / 3), sp.exp(-x) * sp.log(y**2 + 1), sp.sqrt(x**2 + 1),
-    sp.asin(x / 5) + sp.acos(y / 4) + sp.atan(x), sp.sinh(x) - sp.cosh(y) + sp.tanh(x * y),
-    sp.sec(x) + sp.csc(y) + sp.cot(x + y), sp.Abs(x - y) + sp.pi * sp.E, (x**2 + 1) ** sp.Rational(3, 2),
-    x**y if False else (x**2 + 1) ** (y**2),
-])
+@pytest.mark.parametrize(
+    "expr",
+    [
+        sp.sin(x) * sp.cos(y) + sp.tan(x / 3),
+        sp.exp(-x) * sp.log(y**2 + 1),
+        sp.sqrt(x**2 + 1),
+        sp.asin(x / 5) + sp.acos(y / 4) + sp.atan(x),
+        sp.sinh(x) - sp.cosh(y) + sp.tanh(x * y),
+        sp.sec(x) + sp.csc(y) + sp.cot(x + y),
+        sp.Abs(x - y) + sp.pi * sp.E,
+        (x**2 + 1) ** sp.Rational(3, 2),
+        x**y if False else (x**2 + 1) ** (y**2),
+    ],
+)
 def test_evaluator_agrees_with_sympy(expr):
     program = compile_program([expr])
     env = {x: np.array([0.7, -1.3]), y: np.array([1.1, 0.4])}
@@ -61,8 +71,10 @@ def test_evaluator_agrees_with_sympy(expr):
         assert got[i] == pytest.approx(want, rel=1e-12)
 
 
-@pytest.mark.parametrize("bad", [sp.Function("f")(x), sp.Derivative(sp.Function("f")(x), x),
-                                 sp.I * x, sp.gamma(x), sp.zoo])
+@pytest.mark.parametrize(
+    "bad",
+    [sp.Function("f")(x), sp.Derivative(sp.Function("f")(x), x), sp.I * x, sp.gamma(x), sp.zoo],
+)
 def test_evaluator_rejects_what_it_does_not_know(bad):
     with pytest.raises(UnsupportedExpression):
         compile_program([bad])
@@ -106,7 +118,9 @@ def test_points_where_the_reference_is_undefined_are_redrawn():
 
 def test_sqrt_of_a_square_is_not_the_function():
     points = Space((th,), {}).draw(7)
-    out = expressions_equal(Compiled.of(sp.sqrt(1 - sp.cos(th.q) ** 2)), Compiled.of(sp.sin(th.q)), points)
+    out = expressions_equal(
+        Compiled.of(sp.sqrt(1 - sp.cos(th.q) ** 2)), Compiled.of(sp.sin(th.q)), points
+    )
     assert not out.equal
 
 
@@ -119,11 +133,17 @@ def test_euler_lagrange_values_match_the_symbolic_equations(pend):
     assert np.all(S[:, 0] >= np.abs(E[:, 0]))
 
 
-@pytest.mark.parametrize("factor, extra, equal", [
-    (1, 0, True), (2, 0, True), (-1, 0, True), (1, 5 * m * g, True),
-    (1, sp.cos(th.q) * th.dot * m, True),      # d/dt(m sin θ): a total derivative
-    (1, th.q * th.dot**2 * m, False),
-])
+@pytest.mark.parametrize(
+    "factor, extra, equal",
+    [
+        (1, 0, True),
+        (2, 0, True),
+        (-1, 0, True),
+        (1, 5 * m * g, True),
+        (1, sp.cos(th.q) * th.dot * m, True),  # d/dt(m sin θ): a total derivative
+        (1, th.q * th.dot**2 * m, False),
+    ],
+)
 def test_lagrangians_match_up_to_factor_constant_and_total_derivative(pend, factor, extra, equal):
     space, L, points = pend
     match = lagrangians_match(Compiled.of(factor * L + extra), Compiled.of(L), (th,), points)
@@ -140,15 +160,19 @@ def test_factor_depending_on_parameters_is_per_group(pend):
 
 def test_rows_span_and_accelerations():
     wedge = get_scene("wedge").default
-    problem_space = Space(wedge.jets, {wedge.parameter_symbols[n]: d for n, d in wedge.domains.items()})
+    problem_space = Space(
+        wedge.jets, {wedge.parameter_symbols[n]: d for n, d in wedge.domains.items()}
+    )
     E = [Compiled.of(e) for e in wedge.euler_lagrange]
     points = problem_space.draw(seed_for("test"))
     ref = equation_rows(E, wedge.jets, points.env)
     acc = solve_accelerations(ref)
     exact = [Compiled.of(a).values(points.env)[0] for a in wedge.system.accelerations]
     assert np.allclose(acc[:, 0], exact[0]) and np.allclose(acc[:, 1], exact[1])
-    combos = [Compiled.of(sp.expand(3 * wedge.euler_lagrange[0] - wedge.euler_lagrange[1])),
-              Compiled.of(wedge.euler_lagrange[1] + 1)]
+    combos = [
+        Compiled.of(sp.expand(3 * wedge.euler_lagrange[0] - wedge.euler_lagrange[1])),
+        Compiled.of(wedge.euler_lagrange[1] + 1),
+    ]
     rows = equation_rows(combos, wedge.jets, points.env)
     assert decide(lambda b: in_span(rows, ref, 0)).equal
     assert not decide(lambda b: in_span(rows, ref, 1)).equal
@@ -157,7 +181,9 @@ def test_rows_span_and_accelerations():
 
 def test_time_derivative_on_shell_of_energy(pend):
     space, L, points = pend
-    ref = equation_rows([Compiled.of(m * l**2 * th.ddot + m * g * l * sp.sin(th.q))], (th,), points.env)
+    ref = equation_rows(
+        [Compiled.of(m * l**2 * th.ddot + m * g * l * sp.sin(th.q))], (th,), points.env
+    )
     acc = solve_accelerations(ref)
     h = Compiled.of(m * l**2 * th.dot**2 / 2 - m * g * l * sp.cos(th.q))
     total, size, grad = time_derivative_on_shell(h, (th,), points.env, acc)

@@ -14,7 +14,7 @@ from problem_bank import mechanics as mech
 from problem_bank.bank import get_scene
 
 from .conftest import judge
-from .corpus import corpus, expected_status, lagrangian_label, single_term_mutations, _points
+from .corpus import _points, corpus, expected_status, lagrangian_label, single_term_mutations
 
 SCENES = ("wedge", "hoop", "double_pendulum", "spherical_pendulum")
 PROFILE = settings(max_examples=25, deadline=None, suppress_health_check=list(HealthCheck))
@@ -41,7 +41,12 @@ def rewrites(draw):
     if form == "expand":
         expr = sp.expand(expr)
     elif form == "factor_T":
-        expr = c * sp.factor(v.kinetic_energy) - c * v.potential_energy + const + mech.total_derivative(F, v.jets)
+        expr = (
+            c * sp.factor(v.kinetic_energy)
+            - c * v.potential_energy
+            + const
+            + mech.total_derivative(F, v.jets)
+        )
     return sid, expr
 
 
@@ -85,8 +90,9 @@ def test_equations_of_motion_row_operations_are_accepted(sid, shift, factor):
     v = _variant(sid)
     E = list(v.euler_lagrange)
     k = shift % len(E)
-    rows = [sp.expand(factor * E[k] + (E[(k + 1) % len(E)] if len(E) > 1 else 0))] + \
-        [e for i, e in enumerate(E) if i != k]
+    rows = [sp.expand(factor * E[k] + (E[(k + 1) % len(E)] if len(E) > 1 else 0))] + [
+        e for i, e in enumerate(E) if i != k
+    ]
     verdict = judge({"scene": sid}, "eom", [f"{plain(r)} = 0" for r in rows])
     assert verdict.status == "correct", verdict.feedback
 

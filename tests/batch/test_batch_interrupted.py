@@ -1,0 +1,67 @@
+"""A grading run stopped half-way (Ctrl-C, or killed outright) leaves no partial output file,
+and a rerun completes the work, reusing what was finished."""
+
+from __future__ import annotations
+
+import json
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pytest
+
+
+def start(workspace: Path) -> subprocess.Popen:
+    return subprocess.Popen(
+        [sys.executable, "-m", "grader.cli", "grade", str(workspace / "out" / "manifest.json"),
+         str(workspace / "submissions"), "--out", str(workspace / "grades"), "--jobs", "1"],
+        stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+    )
+
+
+def wait_for_results(folder: Path, count: int, process: subprocess.Popen, limit: float = 120) -> int:
+    deadline = time.monotonic() + limit
+    while time.monotonic() < deadline:
+        done = len(list(folder.glob("*.json"))) if folder.exists() else 0
+        if done >= count or process.poll() is not None:
+            return done
+        time.sleep(0.02)
+    raise AssertionError("grading made no progress")
+
+
+def assert_no_partial_files(out: Path) -> None:
+    for path in out.rglob("*"):
+        if path.is_file() and not path.name.endswith(".tmp"):
+            if path.suffix == ".json":
+                json.loads(path.read_text())  # a torn write would not parse
+            assert path.stat().st_size > 0, path
+
+
+@pytest.mark.parametrize("how", [signal.SIGINT, signal.SIGKILL], ids=["ctrl-c", "kill"])
+def test_rerun_completes_an_interrupted_run(workspace, how):
+    process = start(workspace)
+    students = workspace / "grades" / "students"
+    done = wait_for_results(students, 3, process)
+    process.send_signal(how)
+    process.wait(30)
+    if done >= 12:
+        pytest.skip("the run finished before it could be interrupted")
+    assert_no_partial_files(workspace / "grades")
+    if how == signal.SIGINT:
+        assert process.returncode == 130
+        assert not list((workspace / "grades").rglob("*.tmp"))
+    finished = len(list(students.glob("*.json")))
+    assert finished < 12
+
+    rerun = subprocess.run(
+        [sys.executable, "-m", "grader.cli", "grade", str(workspace / "out" / "manifest.json"),
+         str(workspace / "submissions"), "--out", str(workspace / "grades")],
+        capture_output=True, text=True, timeout=300,
+    )
+    assert rerun.returncode == 0, rerun.stderr
+    assert f"({finished} unchanged, reused)" in rerun.stdout
+    assert len(list(students.glob("*.json"))) == 12
+    assert not list((workspace / "grades").rglob("*.tmp"))
+    assert_no_partial_files(workspace / "grades")
