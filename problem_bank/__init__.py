@@ -1,5 +1,6 @@
 """lagrade's problem bank: declarative scenes and the Lagrangian mechanics that solves them."""
 
+from .assign import generate
 from .bank import get_scene, scene_ids
 from .domains import Domain
 from .errors import LagradeError, SceneError, UnknownSceneError
@@ -15,6 +16,7 @@ __all__ = [
     "SceneError",
     "SceneVariant",
     "UnknownSceneError",
+    "generate",
     "get_scene",
     "jet",
     "scene_ids",
