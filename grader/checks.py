@@ -168,10 +168,17 @@ def _not_labelled(item: Any) -> ParseError:
 
 
 def _free(problem: Problem, *exprs: sp.Expr) -> frozenset[sp.Symbol]:
-    """The parameters an answer mentions: those are sampled over their domains; the others keep
-    a numeric variant's values."""
+    """The parameters sampled over their domains: all of them, except one the answer leaves out
+    while writing its handout value as a number (`m 9.81 q` for m g q): that one keeps the
+    value. A parameter that is merely missing is never pinned — with SI values (e = 1.6e-19 C)
+    a dropped term would be 1e-19 of the rest and slip through any tolerance."""
     syms = set().union(*(e.free_symbols for e in exprs)) if exprs else set()
-    return frozenset(s for s in syms if s in problem.domains)
+    numbers = [abs(float(n)) for e in exprs for n in e.atoms(sp.Number) if n != 0]
+    pinned = {
+        s for s, value in problem.values.items()
+        if s not in syms and value and any(abs(n - abs(value)) <= 1e-3 * abs(value) for n in numbers)
+    }
+    return frozenset(s for s in problem.domains if s not in pinned)
 
 
 def _has_acceleration(problem: Problem, expr: sp.Expr) -> bool:

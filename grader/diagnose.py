@@ -29,6 +29,7 @@ from .equivalence import (
     equation_rows,
     euler_lagrange_values,
     in_span,
+    lagrangians_match,
 )
 from .evaluate import UnsupportedExpression
 
@@ -502,11 +503,19 @@ class Catalogue:
                     continue
                 if fp is None or not np.all(np.isfinite(fp)):
                     continue
+                if mode == "el" and self._same_dynamics(m, reference, points):
+                    continue  # e.g. ½θ̇² for ½Iθ̇²: a parameter factor, the same motion
                 if any(o is not None and _close(fp, o) for o in seen):
                     continue
                 seen.append(fp)
                 kept.append(m)
         return kept
+
+    def _same_dynamics(self, m: Mutant, reference: Compiled, points) -> bool:
+        """A 'mistake' whose Euler–Lagrange equations are a multiple of the reference's is no
+        mistake: the Lagrangian check accepts it, so the catalogue must not name it."""
+        match = lagrangians_match(self._compiled(m), reference, self.problem.jets, points)
+        return bool(match.outcome.equal) and all(c > 0 for c in match.factors)
 
     def _distinct_rows(self, pairs: list[tuple[int, Mutant]]) -> list[tuple[int, Mutant]]:
         p = self.problem

@@ -406,7 +406,7 @@ def _rational_in(lo: float, hi: float, rng: np.random.Generator) -> sp.Rational:
 
 def _exact_compare(a: sp.Expr, b: sp.Expr, domains: Domains, points: int, rng) -> bool | None:
     symbols = _free_symbols(a, b)
-    trig_syms = {f.args[0] for e in (a, b) for f in e.atoms(*_TRIG)}
+    trig_syms = sorted({f.args[0] for e in (a, b) for f in e.atoms(*_TRIG)}, key=str)
     done = 0
     for _ in range(points * 4):
         subs: dict[sp.Basic, sp.Expr] = {}

@@ -6,12 +6,13 @@ docs/integrators.csv and .png): over long runs of four bank scenes — simple pe
 double pendulum released at (2, 2.5) rad (chaotic) to t = 200, an eccentric Kepler orbit to
 t = 200, the bead on the rotating hoop to t = 500 — it is the fastest setting whose conserved
 quantities (h, and p_θ for Kepler) drift less than 1e-8 relative to their terms in every scene:
-2.7 s for all four, worst drift 1.4e-9 (double pendulum); DOP853 at 1e-12 drifts less (worst
-1.3e-10) but took 6.4 s; RK45 at 1e-12 14.5 s (worst 4.5e-10); Radau at 1e-9 40 s (worst
-3.1e-9; 1e-12 is slower still). At 1e-6 every method drifts 8e-6 … 6e-4 in its worst scene, at
-1e-9 1.6e-7 … 9e-7 (Radau 3e-9), so 1e-12 it is. A symplectic Störmer–Verlet step (for the separable
-pendulum and hoop) keeps its energy error bounded but at h² — 2e-7 at h = 0.001, 7 s — so it does
-not earn a place here. (Wall times on a shared 2-core machine; drifts are reproducible.)
+2.8 s for all four, worst drift 1.4e-9 (double pendulum); DOP853 at 1e-12 drifts less (worst
+1.3e-10) but took 7.3 s; RK45 at 1e-12 15.5 s (worst 4.5e-10); Radau at 1e-9 46 s (worst
+3.1e-9; 1e-12 is slower still). At 1e-6 every method drifts 8e-6 … 6e-4 in its worst scene,
+at 1e-9 1.6e-7 … 9e-7 (Radau 3e-9), so 1e-12 it is. A symplectic Störmer–Verlet step (for the
+separable pendulum and hoop) keeps its energy error bounded but at h² — 2e-7 at h = 0.001,
+7–14 s a run — so it does not earn a place here. (Wall times on a shared 2-core machine; drifts
+are reproducible.)
 
 The right-hand side is built from `variant.system.mass_matrix` and `.forcing` with lambdify —
 these are bank expressions derived by the project, never student text.

@@ -96,7 +96,9 @@ def parse_pair(pair: Pair) -> ParsedPair:
     answer = parse_expression(pair.answer, vocabulary).expr
     reference = parse_expression(pair.reference, vocabulary).expr
     domains: dict[sp.Symbol, Domain] = {}
-    for s in answer.free_symbols | reference.free_symbols:
+    # In name order: a method that draws points in the mapping's order then draws the same points
+    # in every process (a set of symbols iterates in an order that changes with PYTHONHASHSEED).
+    for s in sorted(answer.free_symbols | reference.free_symbols, key=lambda s: s.name):
         text = pair.domains.get(s.name) or pair.parameters.get(s.name)
         domains[s] = Domain.parse(text) if text else REAL
     return ParsedPair(pair, answer, reference, domains)

@@ -147,7 +147,12 @@ def test_catalogue_is_built_for_every_scene():
     from problem_bank.bank import scene_ids
 
     for sid in scene_ids():
-        cat = build_problem({"scene": sid}).catalogue
+        problem = build_problem({"scene": sid})
+        cat = problem.catalogue
+        if len(sp.Add.make_args(problem.lagrangian)) == 1:
+            # The free wheel's ½Iθ̇²: every one-term mutation is a multiple with the same motion.
+            assert cat.lagrangian_mutants == [], sid
+            continue
         assert cat.lagrangian_mutants, sid
         assert all(m.message for m in cat.lagrangian_mutants)
 
