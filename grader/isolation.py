@@ -52,26 +52,38 @@ def _address_space_in_use() -> int:
         return 0
 
 
-def _child(conn: Connection, work: Callable[[Any], Any], item: Any, limits: Limits) -> None:
+def _child(conn: Connection, work: Callable[[Any], Any], chunk: list, limits: Limits) -> None:
+    """Run each item of `chunk` in turn, sending ("ok" | "error", value) after each one."""
     signal.signal(signal.SIGINT, signal.SIG_IGN)  # the parent handles Ctrl-C and kills us
     try:
-        resource.setrlimit(resource.RLIMIT_CPU, (limits.cpu_seconds, limits.cpu_seconds + 1))
+        cpu = limits.cpu_seconds * len(chunk)
+        resource.setrlimit(resource.RLIMIT_CPU, (cpu, cpu + 1))
         ceiling = _address_space_in_use() + limits.memory_mib * 1024 * 1024
         resource.setrlimit(resource.RLIMIT_AS, (ceiling, ceiling))
     except (ValueError, OSError):
         pass  # a platform without these limits still has the wall-clock kill
-    try:
-        result: tuple[str, Any] = ("ok", work(item))
-    except MemoryError:
-        result = ("error", "ran out of memory (limit exceeded)")
-    except BaseException as error:  # noqa: BLE001 - the child reports everything to the parent
-        result = ("error", f"{type(error).__name__}: {error}\n{traceback.format_exc(limit=8)}")
-    try:
-        conn.send(result)
-    except Exception as error:  # noqa: BLE001 - an unpicklable result is still an answer
-        conn.send(("error", f"result could not be sent back: {error}"))
-    finally:
-        conn.close()
+    for _key, item in chunk:
+        try:
+            result: tuple[str, Any] = ("ok", work(item))
+        except MemoryError:
+            result = ("error", "ran out of memory (limit exceeded)")
+        except BaseException as error:  # noqa: BLE001 - the child reports everything
+            result = ("error", f"{type(error).__name__}: {error}\n{traceback.format_exc(limit=8)}")
+        try:
+            conn.send(result)
+        except Exception as error:  # noqa: BLE001 - an unpicklable result is still an answer
+            conn.send(("error", f"result could not be sent back: {error}"))
+    conn.close()
+
+
+@dataclass
+class _Running:
+    """A child at work on a chunk: which item it is on, and since when."""
+
+    process: mp.Process
+    chunk: list
+    position: int
+    since: float
 
 
 def run_isolated(
@@ -80,58 +92,76 @@ def run_isolated(
     *,
     jobs: int = 1,
     limits: Limits = Limits(),
+    chunk_size: int | None = None,
 ) -> Iterator[Outcome]:
-    """Run `work(item)` for each (key, item) in its own forked child, at most `jobs` at a time,
-    yielding an Outcome per item as each finishes (not in input order)."""
+    """Run `work(item)` for each (key, item) in forked children, at most `jobs` at a time,
+    yielding an Outcome per item as each finishes (not in input order).
+
+    A child takes a chunk of items (forking and warming a process per item would cost more than
+    the work); each item still has its own wall-clock limit. When a child is killed or dies,
+    its current item gets `timeout` or `error` and the rest of its chunk is handed to a fresh
+    child, so one bad item costs only itself.
+    """
     pending = list(items)
+    if chunk_size is None:
+        chunk_size = max(1, min(16, len(pending) // (4 * max(1, jobs)) or 1))
     pending.reverse()
-    running: dict[Connection, tuple[Any, mp.Process, float]] = {}
+    running: dict[Connection, _Running] = {}
     try:
         while pending or running:
             while pending and len(running) < max(1, jobs):
-                key, item = pending.pop()
+                chunk = [pending.pop() for _ in range(min(chunk_size, len(pending)))]
                 reader, writer = _FORK.Pipe(duplex=False)
-                process = _FORK.Process(target=_child, args=(writer, work, item, limits), daemon=True)
+                process = _FORK.Process(target=_child, args=(writer, work, chunk, limits), daemon=True)
                 process.start()
                 writer.close()
-                running[reader] = (key, process, time.monotonic())
-            now = time.monotonic()
-            soonest = min(start + limits.wall_seconds for _, _, start in running.values())
-            ready = wait(list(running), timeout=max(0.0, soonest - now))
+                running[reader] = _Running(process, chunk, 0, time.monotonic())
+            soonest = min(r.since + limits.wall_seconds for r in running.values())
+            ready = wait(list(running), timeout=max(0.0, soonest - time.monotonic()))
             for conn in ready:
-                key, process, start = running.pop(conn)
-                yield _collect(conn, key, process, start)
-            now = time.monotonic()
-            for conn, (key, process, start) in list(running.items()):
-                if now - start >= limits.wall_seconds:
+                job = running[conn]
+                key, _ = job.chunk[job.position]
+                now = time.monotonic()
+                try:
+                    status, value = conn.recv()
+                except (EOFError, OSError):
                     del running[conn]
-                    _kill(process)
                     conn.close()
-                    yield Outcome(key, "timeout", reason=f"took longer than {limits.wall_seconds:g} s and was stopped", seconds=now - start)
+                    yield _died(job, key, now)
+                    pending.extend(reversed(job.chunk[job.position + 1 :]))
+                    continue
+                yield Outcome(key, "ok", value=value, seconds=now - job.since) if status == "ok" else (
+                    Outcome(key, "error", reason=str(value), seconds=now - job.since))
+                job.position += 1
+                job.since = now
+                if job.position == len(job.chunk):
+                    del running[conn]
+                    conn.close()
+                    job.process.join(1.0)
+                    _kill(job.process)
+            now = time.monotonic()
+            for conn, job in list(running.items()):
+                if now - job.since >= limits.wall_seconds:
+                    del running[conn]
+                    _kill(job.process)
+                    conn.close()
+                    key, _ = job.chunk[job.position]
+                    yield Outcome(key, "timeout", reason=f"took longer than {limits.wall_seconds:g} s "
+                                  "and was stopped", seconds=now - job.since)
+                    pending.extend(reversed(job.chunk[job.position + 1 :]))
     finally:
-        for conn, (_, process, _) in running.items():
-            _kill(process)
+        for conn, job in running.items():
+            _kill(job.process)
             conn.close()
 
 
-def _collect(conn: Connection, key: Any, process: mp.Process, start: float) -> Outcome:
-    elapsed = time.monotonic() - start
-    try:
-        status, value = conn.recv()
-    except (EOFError, OSError):
-        process.join(1.0)
-        code = process.exitcode
-        if code is not None and code < 0 and -code in (signal.SIGXCPU, signal.SIGKILL):
-            return Outcome(key, "timeout", reason="used up its CPU-time limit and was stopped", seconds=elapsed)
-        return Outcome(key, "error", reason=f"the grading process died (exit code {code})", seconds=elapsed)
-    finally:
-        conn.close()
-    process.join(1.0)
-    if process.is_alive():
-        _kill(process)
-    if status == "ok":
-        return Outcome(key, "ok", value=value, seconds=elapsed)
-    return Outcome(key, "error", reason=str(value), seconds=elapsed)
+def _died(job: _Running, key: Any, now: float) -> Outcome:
+    job.process.join(1.0)
+    code = job.process.exitcode
+    elapsed = now - job.since
+    if code is not None and code < 0 and -code in (signal.SIGXCPU, signal.SIGKILL):
+        return Outcome(key, "timeout", reason="used up its CPU-time limit and was stopped", seconds=elapsed)
+    return Outcome(key, "error", reason=f"the grading process died (exit code {code})", seconds=elapsed)
 
 
 def _kill(process: mp.Process) -> None:

@@ -6,6 +6,7 @@ same bytes."""
 from __future__ import annotations
 
 import csv
+import functools
 import io
 import json
 from collections import Counter
@@ -18,6 +19,12 @@ from problem_bank.assign import environment
 from . import atomic
 
 STUDENTS = "students"
+
+
+@functools.lru_cache(maxsize=1)
+def _templates():
+    """The shipped templates' environment, built once per process (compiling is the slow part)."""
+    return environment()
 
 
 def _student_json(out: Path, student_id: str) -> Path:
@@ -60,7 +67,7 @@ def write_student_outputs(out: Path, manifest: Mapping[str, Any], result: dict[s
     """Feedback pages, results.json, then the JSON result (last: its presence marks the student
     as done for a rerun)."""
     sid = result["student"]["id"]
-    env = environment()
+    env = _templates()
     context = {"assignment": manifest["assignment"], "result": result}
     atomic.write_text(out / "feedback" / f"{sid}.md", env.get_template("feedback.md.j2").render(context))
     atomic.write_text(out / "feedback" / f"{sid}.html", env.get_template("feedback.html.j2").render(context))
