@@ -27,8 +27,11 @@ from typing import Any
 import numpy as np
 import sympy as sp
 
+from problem_bank.domains import Domain
+
 from .diagnose import Mutant, plain
 from .equivalence import (
+    coordinate_range,
     Compiled,
     Outcome,
     Points,
@@ -48,6 +51,7 @@ from .equivalence import (
 )
 from .errors import ParseError, RequestError
 from .evaluate import FLOAT, UnsupportedExpression
+from .methods import ExactThenAdaptive
 from .problem import Problem, parser
 
 STATUSES = ("correct", "incorrect", "invalid", "timeout", "error")  # error: a bug of ours
@@ -1062,12 +1066,26 @@ def _gradient_rank(grads: Sequence[np.ndarray]) -> int:
 # --- expression -----------------------------------------------------------------------------------
 
 
+def _domains_for(problem: Problem) -> dict:
+    """Domains of every variable: parameters as declared, coordinates in their sample ranges."""
+    domains = dict(problem.domains)
+    for j in problem.jets:
+        lo, hi = (problem.coordinate_domains or {}).get(j.name) or coordinate_range(j.name)
+        domains[j.q] = Domain(j.name, sp.Float(lo), sp.Float(hi))
+    return domains
+
+
 def check_expression(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
     got = _read_single(problem, answer, "expression", "x")
     ref = problem.reference_expression
     ans = Compiled.of(got.expr)
     points = problem.points("expression", _free(problem, got.expr))
     out = expressions_equal(ans, ref, points)
+    # The default decision (docs/methods.csv): exact where possible, bounded floats otherwise;
+    # the numeric hybrid above decides only what that method cannot reach, and gives witnesses.
+    decided = ExactThenAdaptive().decide(got.expr, ref.expr, _domains_for(problem))
+    if decided is not None:
+        out = Outcome(decided, "exact_then_adaptive", out.worst, out.where if not decided else None)
     if out.equal:
         return Verdict("expression", "correct", 1.0, (), got.echo, _method(out))
     feedback, mistakes = [], ()

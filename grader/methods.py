@@ -17,7 +17,8 @@ The families (`all_methods()` lists them, named as in docs/methods.csv):
 - `mp{d}_{n}pt`: the same in mpmath at d digits, ε = 10^-(d − 8).
 - `exact_rational`: exact evaluation at random rational points of rational functions of the symbols
   and of sin, cos, tan of their integer combinations (Weierstrass substitution, see below).
-- `hybrid_default`: the project's default, `grader.equivalence` (wrapped, not reimplemented).
+- `numeric_hybrid`: the project's previous default, `grader.equivalence.numeric_equivalent`
+  (wrapped, not reimplemented); `exact_then_adaptive` replaced it as the default.
 - `webwork`, `numbas`: those systems' documented default rules, reimplemented for comparison.
 - `exact_then_scaled`: exact where it applies, otherwise a term-scaled float64 test with
   mpmath confirmation near the tolerance (the study's proposal; see its docstring).
@@ -656,20 +657,20 @@ class _MpScalar:
 
 @dataclass(frozen=True)
 class HybridDefault:
-    """The project's default, `grader.equivalence.expressions_equivalent` (numeric first,
+    """The project's previous default, `grader.equivalence.numeric_equivalent` (numeric first,
     float64 relative to the size of the top-level terms, 50-digit confirmation between 1e-10 and
     1e-6), wrapped, not reimplemented: its Equivalence maps to True/False, and None when the
     reference is undefined everywhere or holds something the evaluator does not know."""
 
     seed: int = 0
-    name: str = "hybrid_default"
+    name: str = "numeric_hybrid"
 
     def decide(self, answer, reference, domains) -> bool | None:
-        from .equivalence import ReferenceUndefined, expressions_equivalent  # noqa: PLC0415
+        from .equivalence import ReferenceUndefined, numeric_equivalent  # noqa: PLC0415
 
         try:
             return bool(
-                expressions_equivalent(answer, reference, domains, seed=self.seed).equivalent
+                numeric_equivalent(answer, reference, domains, seed=self.seed).equivalent
             )
         except (ReferenceUndefined, ev.UnsupportedExpression):
             return None
@@ -747,8 +748,9 @@ class Numbas:
 FLOAT_POINTS = (1, 2, 3, 5, 10, 20, 50)
 FLOAT_TOLERANCES = (1e-3, 1e-6, 1e-9)
 
-#: The name of the method the project grades with; the chart marks it.
-DEFAULT_NAME = "hybrid_default"
+#: The name of the method the project grades with (grader.equivalence.expressions_equivalent);
+#: the chart marks it.
+DEFAULT_NAME = "exact_then_adaptive"
 
 
 def all_methods(include_default: bool = True) -> list[Method]:

@@ -1,9 +1,8 @@
 """Where equivalence methods break, pinned: each hard case of the corpus that some method gets
-wrong is a regression test that the default (grader.equivalence.expressions_equivalent, run as
-`hybrid_default`) must get right — and the test also checks that the named weak method still
-gets it wrong, so the case stays hard. Cases the default itself misses are strict xfails (they
-turn into failures, as a reminder to unpin them, once the default decides them); the study's
-proposal (`exact_then_adaptive`) must decide every hard case.
+wrong is a regression test that the default (grader.equivalence.expressions_equivalent, which
+is `exact_then_adaptive`) must get right — and the test also checks that the named weak method
+still gets it wrong, so the case stays hard. The cases that made the study replace the previous
+default (`numeric_hybrid`) are pinned the same way; the default must decide every hard case.
 
 Figures and chart: docs/methods.csv, docs/methods.png (benchmarks/bench_methods.py).
 """
@@ -64,8 +63,8 @@ PINS = [
     ("hard/undefined/reference_narrower", "exact_rational"),  # out of its scope: None
 ]
 
-# Cases the current default gets wrong (measured), with a method that also gets them wrong
-# (None: no other method of the study does).
+# Cases the previous default (numeric_hybrid) got wrong (measured), with another method that
+# also gets them wrong (None: no other method of the study does).
 DEFAULT_MISSES = [
     ("hard/near_miss/relative_1e-12", "float50pt_rtol1e-9"),
     ("hard/near_miss/additive_1e-12", "float50pt_rtol1e-9"),
@@ -104,15 +103,13 @@ def test_weak_method_still_fails_the_default_misses(corpus, pair_id, weak):
     assert _verdict(method_named(weak), pair) is not pair.label
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="the hybrid default (grader.equivalence) misses this case; "
-    "exact_then_adaptive decides it — see the issue 5 report",
-)
 @pytest.mark.parametrize(("pair_id", "weak"), DEFAULT_MISSES, ids=_ids(DEFAULT_MISSES))
-def test_default_on_its_known_misses(corpus, pair_id, weak):
+def test_default_decides_what_the_previous_default_missed(corpus, pair_id, weak):
+    """The study replaced the numeric hybrid as default because of these cases: the default
+    must decide each, and the numeric hybrid still gets each wrong (so the case stays hard)."""
     pair = corpus[pair_id]
     assert _verdict(method_named(DEFAULT_NAME), pair) is pair.label
+    assert _verdict(method_named("numeric_hybrid"), pair) is not pair.label
 
 
 def test_proposal_decides_every_hard_case(corpus):
