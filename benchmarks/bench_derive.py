@@ -46,7 +46,9 @@ def run_once(accelerations: bool) -> dict:
 
 
 def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser = argparse.ArgumentParser(
+        description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter
+    )
     parser.add_argument("--repeat", type=int, default=5, help="fresh-interpreter runs (default 5)")
     args = parser.parse_args()
     runs = [run_once(accelerations=(i == 0)) for i in range(args.repeat)]
@@ -54,11 +56,18 @@ def main() -> None:
     median_run = sorted(runs, key=lambda r: r["total"])[len(runs) // 2]
     print(f"{'scene':24} {'L, p, EOM, cyclic (ms)':>24} {'accelerations (ms)':>20}")
     for sid, seconds in median_run["per_scene"].items():
-        print(f"{sid:24} {seconds * 1e3:24.1f} {runs[0]['accel'].get(sid, float('nan')) * 1e3:20.1f}")
+        print(
+            f"{sid:24} {seconds * 1e3:24.1f} {runs[0]['accel'].get(sid, float('nan')) * 1e3:20.1f}"
+        )
     print(f"\nscenes: {len(median_run['per_scene'])}")
-    print(f"all scenes, cold (median of {len(runs)} fresh runs): {statistics.median(totals):.3f} s "
-          f"(min {min(totals):.3f}, max {max(totals):.3f}); target < 2 s")
-    print(f"import of problem_bank: {statistics.median(r['import'] for r in runs):.3f} s (not included)")
+    print(
+        f"all scenes, cold (median of {len(runs)} fresh runs): {statistics.median(totals):.3f} s "
+        f"(min {min(totals):.3f}, max {max(totals):.3f}); target < 2 s"
+    )
+    print(
+        "import of problem_bank: "
+        f"{statistics.median(r['import'] for r in runs):.3f} s (not included)"
+    )
 
 
 if __name__ == "__main__":

@@ -34,12 +34,15 @@ parts = ["dof", "T", "V", "lagrangian", "eom", "conserved"]
 
 [[problems]]
 scene = "kepler"
-parts = ["lagrangian", "eom", "momenta", "cyclic", "conserved", { quantity = "circular_angular_velocity" }]
+parts = ["lagrangian", "eom", "momenta", "cyclic", "conserved",
+         { quantity = "circular_angular_velocity" }]
 """
 
 
 def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser = argparse.ArgumentParser(
+        description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter
+    )
     parser.add_argument("--students", type=int, default=1000)
     args = parser.parse_args()
     root = Path(tempfile.mkdtemp(prefix="lagrade-bench-grade-"))
@@ -50,15 +53,21 @@ def main() -> None:
     generate(root / "assignment.toml", root / "roster.csv", 5, root / "out", formats=("md",))
     manifest = json.loads((root / "out" / "manifest.json").read_text())
     write_submissions(root / "subs", manifest, malformed=None, missing=None)
-    print(f"class of {args.students} generated in {time.perf_counter() - t0:.1f} s (not timed below)")
+    print(
+        f"class of {args.students} generated in {time.perf_counter() - t0:.1f} s (not timed below)"
+    )
     figures = {}
     for jobs in (2, 1):
         t0 = time.perf_counter()
-        summary = grade(root / "out" / "manifest.json", root / "subs", root / f"grades-{jobs}", jobs=jobs)
+        summary = grade(
+            root / "out" / "manifest.json", root / "subs", root / f"grades-{jobs}", jobs=jobs
+        )
         seconds = time.perf_counter() - t0
         figures[jobs] = seconds
-        print(f"--jobs {jobs}: {seconds:6.1f} s for {len(summary.results)} submissions "
-              f"({len(summary.results) / seconds:.1f} submissions/s); statuses {summary.counts}")
+        print(
+            f"--jobs {jobs}: {seconds:6.1f} s for {len(summary.results)} submissions "
+            f"({len(summary.results) / seconds:.1f} submissions/s); statuses {summary.counts}"
+        )
     print(f"speed-up of 2 jobs over 1: {figures[1] / figures[2]:.2f}×; target: --jobs 2 under 60 s")
 
 

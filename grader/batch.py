@@ -76,6 +76,7 @@ def _alarm(seconds: float):
 
 # --- the manifest -------------------------------------------------------------------------------
 
+
 def load_manifest(path: Path) -> dict[str, Any]:
     """Read manifest.json and check that the bank still reproduces every variant in it."""
     try:
@@ -90,9 +91,12 @@ def load_manifest(path: Path) -> dict[str, Any]:
     for student in manifest["students"]:
         for entry in student["problems"]:
             variant = get_scene(entry["scene"]).variant(entry["seed"])
-            if variant.names != entry["names"] or variant.options != entry["options"] or {
-                k: float(v) for k, v in variant.values.items()
-            } != {k: float(v) for k, v in entry["values"].items()}:
+            if (
+                variant.names != entry["names"]
+                or variant.options != entry["options"]
+                or {k: float(v) for k, v in variant.values.items()}
+                != {k: float(v) for k, v in entry["values"].items()}
+            ):
                 mismatches.append(f"{student['id']} problem {entry['index']} ({entry['scene']})")
     if mismatches:
         raise AssignmentError(
@@ -194,26 +198,47 @@ def _check_coordinates(entry: Mapping[str, Any], answer: str) -> Verdict:
 
 
 def grade_part(
-    entry: Mapping[str, Any], part: Mapping[str, Any], answer: Any, given: dict[str, Any],
-    rubric: Rubric, time_limit: float,
+    entry: Mapping[str, Any],
+    part: Mapping[str, Any],
+    answer: Any,
+    given: dict[str, Any],
+    rubric: Rubric,
+    time_limit: float,
 ) -> dict[str, Any]:
     """One part's result: the verdict, the points it earns and the feedback."""
     name = part["part"]
     if answer is None or (not isinstance(answer, UnreadableAnswer) and _blank(answer)):
-        verdict = Verdict(name, "incorrect", 0.0, ("Not answered.",), "", "blank", mistakes=("blank",))
+        verdict = Verdict(
+            name, "incorrect", 0.0, ("Not answered.",), "", "blank", mistakes=("blank",)
+        )
     elif isinstance(answer, UnreadableAnswer):
-        verdict = Verdict(name, "invalid", 0.0,
-                          (f"This answer is a {answer.kind}; write it as a string.",), "", "parse")
+        verdict = Verdict(
+            name,
+            "invalid",
+            0.0,
+            (f"This answer is a {answer.kind}; write it as a string.",),
+            "",
+            "parse",
+        )
     else:
         try:
             with _alarm(time_limit):
                 verdict = _judge(entry, part, answer, given, rubric)
         except PartTimeout:
-            verdict = Verdict(name, "timeout", 0.0,
-                              (f"Checking this answer took longer than {time_limit:g} s; it was "
-                               "stopped and needs a look by the instructor.",), "", "timeout")
-    share = rubric.fraction(verdict.status, verdict.score, verdict.mistakes,
-                            verdict.follows_from_own_answer)
+            verdict = Verdict(
+                name,
+                "timeout",
+                0.0,
+                (
+                    f"Checking this answer took longer than {time_limit:g} s; it was "
+                    "stopped and needs a look by the instructor.",
+                ),
+                "",
+                "timeout",
+            )
+    share = rubric.fraction(
+        verdict.status, verdict.score, verdict.mistakes, verdict.follows_from_own_answer
+    )
     return {
         "key": part["key"],
         "part": name,
@@ -235,10 +260,14 @@ def _judge(entry, part, answer, given, rubric: Rubric) -> Verdict:
     problem = _problem(_spec(entry, part))
     if name == "expression":
         text = answer if isinstance(answer, str) else " ".join(answer)
-        return check_numeric_followup(problem.variant, problem, part["quantity"], text,
-                                      rubric.numeric_tolerance)
-    value: Any = _as_lines(answer) if name in MULTILINE else (
-        answer if isinstance(answer, str) else "\n".join(answer))
+        return check_numeric_followup(
+            problem.variant, problem, part["quantity"], text, rubric.numeric_tolerance
+        )
+    value: Any = (
+        _as_lines(answer)
+        if name in MULTILINE
+        else (answer if isinstance(answer, str) else "\n".join(answer))
+    )
     if name == "cyclic" and isinstance(value, str):
         value = [n for n in value.replace(";", ",").replace("\n", ",").split(",") if n.strip()]
         value = [n.strip() for n in value]
@@ -260,11 +289,21 @@ def grade_student(task: Mapping[str, Any]) -> dict[str, Any]:
     for problem, entry in zip(problems, student["problems"], strict=True):
         answers = sheet.answers.get(problem["index"], {})
         given: dict[str, Any] = {}
-        if "lagrangian" in answers and isinstance(answers["lagrangian"], str) and answers["lagrangian"].strip():
+        if (
+            "lagrangian" in answers
+            and isinstance(answers["lagrangian"], str)
+            and answers["lagrangian"].strip()
+        ):
             given["lagrangian"] = answers["lagrangian"]
-        parts = [grade_part(entry, part, answers.get(part["key"]), given, rubric, task["part_time_limit"])
-                 for part in problem["parts"]]
-        timeouts += [f"problem {problem['index']} {p['key']}" for p in parts if p["verdict"] == "timeout"]
+        parts = [
+            grade_part(
+                entry, part, answers.get(part["key"]), given, rubric, task["part_time_limit"]
+            )
+            for part in problem["parts"]
+        ]
+        timeouts += [
+            f"problem {problem['index']} {p['key']}" for p in parts if p["verdict"] == "timeout"
+        ]
         graded.append(_problem_result(problem, entry, parts))
     status, reason = "graded", ""
     if timeouts:
@@ -285,6 +324,7 @@ def _problem_result(problem: Mapping, entry: Mapping, parts: list[dict]) -> dict
 
 # --- the batch ----------------------------------------------------------------------------------
 
+
 def _fingerprint(data: bytes | None, student: Mapping, rubric: Rubric, version: str) -> str:
     h = hashlib.sha256()
     h.update(json.dumps([student, rubric.as_dict(), version], sort_keys=True).encode())
@@ -292,11 +332,14 @@ def _fingerprint(data: bytes | None, student: Mapping, rubric: Rubric, version: 
     return h.hexdigest()
 
 
-def _finish(student: Mapping, manifest: Mapping, outcome: dict[str, Any], fingerprint: str,
-            version: str) -> dict[str, Any]:
+def _finish(
+    student: Mapping, manifest: Mapping, outcome: dict[str, Any], fingerprint: str, version: str
+) -> dict[str, Any]:
     """The full per-student result: identity, status, totals, problems, provenance."""
-    max_score = float(manifest["assignment"].get("total_points") or sum(
-        float(p["points"]) for prob in manifest["problems"] for p in prob["parts"]))
+    max_score = float(
+        manifest["assignment"].get("total_points")
+        or sum(float(p["points"]) for prob in manifest["problems"] for p in prob["parts"])
+    )
     problems = outcome.get("problems", [])
     score = round(sum(p["score"] for p in problems), 6)
     return {
@@ -335,16 +378,21 @@ def grade(
     atomic.remove_stale_temporaries(out)
     version = project_version()
     students = manifest["students"]
-    limits = limits or Limits(cpu_seconds=int(30 + 4 * part_time_limit * _part_count(manifest)),
-                              wall_seconds=20 + 3 * part_time_limit * _part_count(manifest))
+    limits = limits or Limits(
+        cpu_seconds=int(30 + 4 * part_time_limit * _part_count(manifest)),
+        wall_seconds=20 + 3 * part_time_limit * _part_count(manifest),
+    )
 
     results: dict[str, dict[str, Any]] = {}
     tasks = []
     reused = 0
     for student in students:
         path, note = find_submission(submissions, student["id"])
-        data = path.read_bytes() if path is not None and path.stat().st_size <= 64 * 2**20 else (
-            None if path is None else _digest_large(path))
+        data = (
+            path.read_bytes()
+            if path is not None and path.stat().st_size <= 64 * 2**20
+            else (None if path is None else _digest_large(path))
+        )
         fingerprint = _fingerprint(data, student, rubric, version)
         previous = report.read_student_result(out, student["id"])
         if previous is not None and previous.get("fingerprint") == fingerprint:
@@ -352,13 +400,29 @@ def grade(
             reused += 1
             continue
         if path is None:
-            outcome = {"status": "missing", "reason": "no answer sheet was submitted", "problems": []}
-            results[student["id"]] = _store(out, manifest, _finish(student, manifest, outcome, fingerprint, version))
+            outcome = {
+                "status": "missing",
+                "reason": "no answer sheet was submitted",
+                "problems": [],
+            }
+            results[student["id"]] = _store(
+                out, manifest, _finish(student, manifest, outcome, fingerprint, version)
+            )
             continue
-        tasks.append((student["id"], {
-            "student": student, "manifest": manifest, "rubric": rubric, "path": str(path),
-            "note": note, "part_time_limit": part_time_limit, "fingerprint": fingerprint,
-        }))
+        tasks.append(
+            (
+                student["id"],
+                {
+                    "student": student,
+                    "manifest": manifest,
+                    "rubric": rubric,
+                    "path": str(path),
+                    "note": note,
+                    "part_time_limit": part_time_limit,
+                    "fingerprint": fingerprint,
+                },
+            )
+        )
 
     if tasks:
         warm_up(manifest)
@@ -377,9 +441,15 @@ def grade(
             value = {"status": "timeout", "reason": f"grading {outcome.reason}", "problems": []}
         else:
             report.log_error(out, student["id"], outcome.reason)
-            value = {"status": "error", "reason": "the grader failed on this submission "
-                     "(logged in errors.log); the instructor should look at it", "problems": []}
-        results[student["id"]] = _store(out, manifest, _finish(student, manifest, value, fingerprint, version))
+            value = {
+                "status": "error",
+                "reason": "the grader failed on this submission "
+                "(logged in errors.log); the instructor should look at it",
+                "problems": [],
+            }
+        results[student["id"]] = _store(
+            out, manifest, _finish(student, manifest, value, fingerprint, version)
+        )
         done += 1
         if progress:
             progress(done, len(students), student["id"])

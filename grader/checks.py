@@ -31,10 +31,10 @@ from problem_bank.domains import Domain
 
 from .diagnose import Mutant, plain
 from .equivalence import (
-    coordinate_range,
     Compiled,
     Outcome,
     Points,
+    coordinate_range,
     decide,
     differ_by_constant,
     equation_rows,
@@ -180,7 +180,9 @@ def _free(problem: Problem, *exprs: sp.Expr) -> frozenset[sp.Symbol]:
     numbers = [abs(float(n)) for e in exprs for n in e.atoms(sp.Number) if n != 0]
     pinned = {
         s for s, value in problem.values.items()
-        if s not in syms and value and any(abs(n - abs(value)) <= 1e-3 * abs(value) for n in numbers)
+        if s not in syms
+        and value
+        and any(abs(n - abs(value)) <= 1e-3 * abs(value) for n in numbers)
     }
     return frozenset(s for s in problem.domains if s not in pinned)
 

@@ -39,7 +39,11 @@ def _bank_show(args: argparse.Namespace) -> int:
 
     scene = get_scene(args.scene)
     variant = scene.default if args.seed is None else scene.variant(args.seed)
-    render = {"text": export.solution_text, "json": export.solution_json, "latex": export.solution_latex}
+    render = {
+        "text": export.solution_text,
+        "json": export.solution_json,
+        "latex": export.solution_latex,
+    }
     print(render[args.format](variant))
     return 0
 
@@ -99,8 +103,14 @@ def _grade(args: argparse.Namespace) -> int:
 
     bar = ProgressBar()
     try:
-        summary = grade(args.manifest, args.submissions, args.out, jobs=args.jobs,
-                        part_time_limit=args.part_time_limit, progress=bar)
+        summary = grade(
+            args.manifest,
+            args.submissions,
+            args.out,
+            jobs=args.jobs,
+            part_time_limit=args.part_time_limit,
+            progress=bar,
+        )
     finally:
         bar.close()
     counts = ", ".join(f"{k} {v}" for k, v in summary.counts.items() if v)
@@ -147,7 +157,9 @@ def build_parser() -> argparse.ArgumentParser:
     listing.set_defaults(run=_bank_list)
     show = bank_commands.add_parser("show", help="show a scene's full derived solution")
     show.add_argument("scene", help="scene id (see `lagrade bank list`)")
-    show.add_argument("--seed", type=int, default=None, help="variant seed (default: the declared form)")
+    show.add_argument(
+        "--seed", type=int, default=None, help="variant seed (default: the declared form)"
+    )
     show.add_argument("--format", choices=("text", "latex", "json"), default="text")
     show.set_defaults(run=_bank_show)
 
@@ -158,9 +170,13 @@ def build_parser() -> argparse.ArgumentParser:
         "with a caret under its position. Parameters named here are taken as positive.",
     )
     parse.add_argument("text", help="the answer, plain text or LaTeX")
-    parse.add_argument("--coordinates", default="", help="comma-separated coordinates, e.g. theta,phi")
+    parse.add_argument(
+        "--coordinates", default="", help="comma-separated coordinates, e.g. theta,phi"
+    )
     parse.add_argument("--parameters", default="", help="comma-separated parameters, e.g. m,g,R")
-    parse.add_argument("--latex", action="store_true", help="read TEXT as LaTeX (default: auto-detect)")
+    parse.add_argument(
+        "--latex", action="store_true", help="read TEXT as LaTeX (default: auto-detect)"
+    )
     parse.add_argument("--allow-primes", action="store_true", help="read x' as x_dot")
     parse.set_defaults(run=_parse)
 
@@ -178,7 +194,9 @@ def build_parser() -> argparse.ArgumentParser:
     generate.add_argument("--seed", type=int, required=True, help="fixes every student's variant")
     generate.add_argument("--out", type=Path, required=True, help="output folder (must not exist)")
     generate.add_argument(
-        "--formats", default="md,html,tex", help="comma list of md,html,tex,pdf (default md,html,tex)"
+        "--formats",
+        default="md,html,tex",
+        help="comma list of md,html,tex,pdf (default md,html,tex)",
     )
     generate.add_argument("--templates", type=Path, default=None, help="folder of *.j2 overrides")
     generate.add_argument("--force", action="store_true", help="replace an existing output folder")
@@ -216,8 +234,12 @@ def build_parser() -> argparse.ArgumentParser:
     grade.add_argument("submissions", type=Path, metavar="SUBMISSIONS")
     grade.add_argument("--out", type=Path, default=None, help="output folder (default DIR/grades)")
     grade.add_argument("--jobs", type=int, default=1, help="submissions graded in parallel")
-    grade.add_argument("--part-time-limit", type=float, default=2.0,
-                       help="seconds allowed per answer part (default 2)")
+    grade.add_argument(
+        "--part-time-limit",
+        type=float,
+        default=2.0,
+        help="seconds allowed per answer part (default 2)",
+    )
     grade.set_defaults(run=_grade)
 
     demo = commands.add_parser(
@@ -227,8 +249,14 @@ def build_parser() -> argparse.ArgumentParser:
         "and keys, write synthetic submissions (varied notation, common mistakes, blank parts, "
         "one malformed file, one missing), grade them and print the results.",
     )
-    demo.add_argument("folder", type=Path, nargs="?", default=Path("lagrade-demo"),
-                      metavar="DIR", help="where to work (default ./lagrade-demo)")
+    demo.add_argument(
+        "folder",
+        type=Path,
+        nargs="?",
+        default=Path("lagrade-demo"),
+        metavar="DIR",
+        help="where to work (default ./lagrade-demo)",
+    )
     demo.add_argument("--jobs", type=int, default=2, help="submissions graded in parallel")
     demo.set_defaults(run=_demo)
     return parser

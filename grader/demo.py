@@ -64,14 +64,70 @@ convention = 0.5
 numeric_tolerance = 0.01
 """
 
-FIRST = ["Ada", "Emmy", "Joseph", "Sofia", "Pierre", "Lise", "Paul", "Maria", "Niels", "Chien",
-         "Henri", "Mileva", "Ludwig", "Marie", "Satyendra", "Cecilia", "Enrico", "Katherine",
-         "Subrahmanyan", "Vera", "Werner", "Hedy", "Richard", "Jocelyn", "Erwin", "Rosalind",
-         "Hideki", "Donna", "Abdus", "Andrea"]
-LAST = ["Lovelace", "Noether", "Lagrange", "Kovalevskaya", "Laplace", "Meitner", "Dirac",
-        "Goeppert Mayer", "Bohr", "Wu", "Poincaré", "Marić", "Boltzmann", "Curie", "Bose",
-        "Payne", "Fermi", "Johnson", "Chandrasekhar", "Rubin", "Heisenberg", "Lamarr", "Feynman",
-        "Bell Burnell", "Schrödinger", "Franklin", "Yukawa", "Strickland", "Salam", "Ghez"]
+FIRST = [
+    "Ada",
+    "Emmy",
+    "Joseph",
+    "Sofia",
+    "Pierre",
+    "Lise",
+    "Paul",
+    "Maria",
+    "Niels",
+    "Chien",
+    "Henri",
+    "Mileva",
+    "Ludwig",
+    "Marie",
+    "Satyendra",
+    "Cecilia",
+    "Enrico",
+    "Katherine",
+    "Subrahmanyan",
+    "Vera",
+    "Werner",
+    "Hedy",
+    "Richard",
+    "Jocelyn",
+    "Erwin",
+    "Rosalind",
+    "Hideki",
+    "Donna",
+    "Abdus",
+    "Andrea",
+]
+LAST = [
+    "Lovelace",
+    "Noether",
+    "Lagrange",
+    "Kovalevskaya",
+    "Laplace",
+    "Meitner",
+    "Dirac",
+    "Goeppert Mayer",
+    "Bohr",
+    "Wu",
+    "Poincaré",
+    "Marić",
+    "Boltzmann",
+    "Curie",
+    "Bose",
+    "Payne",
+    "Fermi",
+    "Johnson",
+    "Chandrasekhar",
+    "Rubin",
+    "Heisenberg",
+    "Lamarr",
+    "Feynman",
+    "Bell Burnell",
+    "Schrödinger",
+    "Franklin",
+    "Yukawa",
+    "Strickland",
+    "Salam",
+    "Ghez",
+]
 CLASS_SIZE = 30
 MALFORMED = 7  # this student's file is broken TOML
 MISSING = 23  # this student submits nothing
@@ -87,6 +143,7 @@ def _roster() -> str:
 
 
 # --- notations ----------------------------------------------------------------------------------
+
 
 def _implicit(text: str) -> str:
     """'2*m*g*l' → '2 m g l': products by juxtaposition (the parser reads them back)."""
@@ -113,8 +170,10 @@ NOTATIONS: dict[str, Callable[[SceneVariant, sp.Expr], str]] = {
 
 # --- one student's answers ----------------------------------------------------------------------
 
-def _answers(variant: SceneVariant, parts: list[dict], entry: dict, rng: random.Random,
-             profile: str) -> tuple[dict[str, Any], list[str]]:
+
+def _answers(
+    variant: SceneVariant, parts: list[dict], entry: dict, rng: random.Random, profile: str
+) -> tuple[dict[str, Any], list[str]]:
     """The answers of one student to one problem, and what was planted (for the summary)."""
     notation = NOTATIONS[rng.choice(sorted(NOTATIONS))]
     system = variant.system
@@ -152,11 +211,18 @@ def _answers(variant: SceneVariant, parts: list[dict], entry: dict, rng: random.
             answers[key] = "\n".join(f"{notation(variant, r)} = 0" for r in rows)
         elif name == "momenta":
             latex = notation is NOTATIONS["latex"]
-            lines = [f"p_{{{sp.latex(j.q)}}} = {notation(variant, p)}" if latex
-                     else f"p_{j.name} = {notation(variant, p)}"
-                     for j, p in zip(variant.jets, system.generalized_momenta, strict=True)]
+            lines = [
+                f"p_{{{sp.latex(j.q)}}} = {notation(variant, p)}"
+                if latex
+                else f"p_{j.name} = {notation(variant, p)}"
+                for j, p in zip(variant.jets, system.generalized_momenta, strict=True)
+            ]
             if mistake:
-                lines[0] = lines[0].split("=")[0] + "= " + notation(variant, 2 * system.generalized_momenta[0])
+                lines[0] = (
+                    lines[0].split("=")[0]
+                    + "= "
+                    + notation(variant, 2 * system.generalized_momenta[0])
+                )
                 planted.append(f"{key}: factor 2")
             answers[key] = "\n".join(lines)
         elif name == "conserved":
@@ -165,8 +231,9 @@ def _answers(variant: SceneVariant, parts: list[dict], entry: dict, rng: random.
                 T, V = variant.kinetic_energy, variant.potential_energy
                 quantities = [T - V]
                 planted.append(f"{key}: T - V")
-            answers[key] = "\n".join(notation(variant, 3 * q if rng.random() < 0.3 else q)
-                                     for q in quantities)
+            answers[key] = "\n".join(
+                notation(variant, 3 * q if rng.random() < 0.3 else q) for q in quantities
+            )
         elif name == "cyclic":
             cyclic = list(system.cyclic_coordinates)
             if mistake:
@@ -188,14 +255,17 @@ def _answers(variant: SceneVariant, parts: list[dict], entry: dict, rng: random.
 
 
 def _toml_value(text: str) -> str:
-    """A TOML literal string (no escapes needed for LaTeX) where the text allows, else a basic one."""
+    """A TOML literal string (LaTeX needs no escapes there) where the text allows, else basic."""
     if "'''" in text or text.endswith("'"):
         return json.dumps(text)
     return "'''\n" + text + "'''" if "\n" in text else "'''" + text + "'''"
 
 
 def write_submissions(
-    out: Path, manifest: dict[str, Any], *, malformed: int | None = MALFORMED,
+    out: Path,
+    manifest: dict[str, Any],
+    *,
+    malformed: int | None = MALFORMED,
     missing: int | None = MISSING,
 ) -> dict[str, list[str]]:
     """One answer sheet per student as TOML, but student number `missing` (0-based) sends none
@@ -234,14 +304,23 @@ def run_demo(folder: Path, *, jobs: int = 2, progress=None) -> tuple[BatchSummar
     atomic.write_text(assignment, ASSIGNMENT)
     atomic.write_text(roster, _roster())
     handouts = folder / "assignment"
-    generate(assignment, roster, 2026, handouts, formats=("md", "html"), force=True,
-             progress=progress, verify=verify_variant)
+    generate(
+        assignment,
+        roster,
+        2026,
+        handouts,
+        formats=("md", "html"),
+        force=True,
+        progress=progress,
+        verify=verify_variant,
+    )
     manifest = json.loads((handouts / "manifest.json").read_text(encoding="utf-8"))
     submissions = folder / "submissions"
     planted = write_submissions(submissions, manifest)
     atomic.write_json(folder / "planted.json", planted)
-    summary = grade(handouts / "manifest.json", submissions, folder / "grades", jobs=jobs,
-                    progress=progress)
+    summary = grade(
+        handouts / "manifest.json", submissions, folder / "grades", jobs=jobs, progress=progress
+    )
     return summary, {
         "handouts": handouts / "handouts",
         "answer keys": handouts / "keys",
@@ -258,8 +337,10 @@ def summary_table(summary: BatchSummary) -> str:
     lines = [f"{'student':8} {'name':28} {'status':8} {'score':>12}  reason"]
     for r in summary.results:
         score = f"{r['score']:g} / {r['max_score']:g}"
-        lines.append(f"{r['student']['id']:8} {r['student']['name'][:28]:28} {r['status']:8} "
-                     f"{score:>12}  {r['reason'][:60]}")
+        lines.append(
+            f"{r['student']['id']:8} {r['student']['name'][:28]:28} {r['status']:8} "
+            f"{score:>12}  {r['reason'][:60]}"
+        )
     counts = ", ".join(f"{k} {v}" for k, v in summary.counts.items() if v)
     lines.append(f"\n{len(summary.results)} students: {counts}")
     return "\n".join(lines)

@@ -43,15 +43,27 @@ def check_numeric_followup(
     got = complex(sp.N(parsed.expr, 30))
     echo = parsed.plain()
     if abs(expected.imag) > 1e-12 * max(1.0, abs(expected)):
-        return Verdict("expression", "incorrect", 0.0,
-                       ("For these values the quantity is not real; the key says so.",), echo, "numeric")
+        return Verdict(
+            "expression",
+            "incorrect",
+            0.0,
+            ("For these values the quantity is not real; the key says so.",),
+            echo,
+            "numeric",
+        )
     error = abs(got - expected.real) / max(abs(expected.real), 1e-300)
     if error <= tolerance:
         return Verdict("expression", "correct", 1.0, (), echo, "numeric")
     sign_flipped = abs(got.real + expected.real) <= tolerance * abs(expected.real)
     return Verdict(
-        "expression", "incorrect", 0.0,
-        (f"Your value {got.real:.4g} is off by {100 * error:.3g} % (the tolerance is "
-         f"{100 * tolerance:g} %)." + (" Check the sign." if sign_flipped else ""),),
-        echo, "numeric", mistakes=("numeric_sign",) if sign_flipped else ("numeric_value",),
+        "expression",
+        "incorrect",
+        0.0,
+        (
+            f"Your value {got.real:.4g} is off by {100 * error:.3g} % (the tolerance is "
+            f"{100 * tolerance:g} %)." + (" Check the sign." if sign_flipped else ""),
+        ),
+        echo,
+        "numeric",
+        mistakes=("numeric_sign",) if sign_flipped else ("numeric_value",),
     )

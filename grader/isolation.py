@@ -112,7 +112,9 @@ def run_isolated(
             while pending and len(running) < max(1, jobs):
                 chunk = [pending.pop() for _ in range(min(chunk_size, len(pending)))]
                 reader, writer = _FORK.Pipe(duplex=False)
-                process = _FORK.Process(target=_child, args=(writer, work, chunk, limits), daemon=True)
+                process = _FORK.Process(
+                    target=_child, args=(writer, work, chunk, limits), daemon=True
+                )
                 process.start()
                 writer.close()
                 running[reader] = _Running(process, chunk, 0, time.monotonic())
@@ -130,8 +132,11 @@ def run_isolated(
                     yield _died(job, key, now)
                     pending.extend(reversed(job.chunk[job.position + 1 :]))
                     continue
-                yield Outcome(key, "ok", value=value, seconds=now - job.since) if status == "ok" else (
-                    Outcome(key, "error", reason=str(value), seconds=now - job.since))
+                yield (
+                    Outcome(key, "ok", value=value, seconds=now - job.since)
+                    if status == "ok"
+                    else (Outcome(key, "error", reason=str(value), seconds=now - job.since))
+                )
                 job.position += 1
                 job.since = now
                 if job.position == len(job.chunk):
@@ -146,8 +151,12 @@ def run_isolated(
                     _kill(job.process)
                     conn.close()
                     key, _ = job.chunk[job.position]
-                    yield Outcome(key, "timeout", reason=f"took longer than {limits.wall_seconds:g} s "
-                                  "and was stopped", seconds=now - job.since)
+                    yield Outcome(
+                        key,
+                        "timeout",
+                        reason=f"took longer than {limits.wall_seconds:g} s and was stopped",
+                        seconds=now - job.since,
+                    )
                     pending.extend(reversed(job.chunk[job.position + 1 :]))
     finally:
         for conn, job in running.items():
@@ -160,8 +169,12 @@ def _died(job: _Running, key: Any, now: float) -> Outcome:
     code = job.process.exitcode
     elapsed = now - job.since
     if code is not None and code < 0 and -code in (signal.SIGXCPU, signal.SIGKILL):
-        return Outcome(key, "timeout", reason="used up its CPU-time limit and was stopped", seconds=elapsed)
-    return Outcome(key, "error", reason=f"the grading process died (exit code {code})", seconds=elapsed)
+        return Outcome(
+            key, "timeout", reason="used up its CPU-time limit and was stopped", seconds=elapsed
+        )
+    return Outcome(
+        key, "error", reason=f"the grading process died (exit code {code})", seconds=elapsed
+    )
 
 
 def _kill(process: mp.Process) -> None:

@@ -51,12 +51,14 @@ def gradescope_results(result: Mapping[str, Any]) -> dict[str, Any]:
     tests = []
     for problem in result["problems"]:
         for part in problem["parts"]:
-            tests.append({
-                "name": f"Problem {problem['index']} ({problem['title']}): {part['key']}",
-                "score": part["points"],
-                "max_score": part["max_points"],
-                "output": " ".join(part["feedback"]) or part["verdict"],
-            })
+            tests.append(
+                {
+                    "name": f"Problem {problem['index']} ({problem['title']}): {part['key']}",
+                    "score": part["points"],
+                    "max_score": part["max_points"],
+                    "output": " ".join(part["feedback"]) or part["verdict"],
+                }
+            )
     payload: dict[str, Any] = {"score": result["score"], "tests": tests}
     if result["status"] != "graded":
         payload["output"] = f"{result['status']}: {result['reason']}"
@@ -69,8 +71,12 @@ def write_student_outputs(out: Path, manifest: Mapping[str, Any], result: dict[s
     sid = result["student"]["id"]
     env = _templates()
     context = {"assignment": manifest["assignment"], "result": result}
-    atomic.write_text(out / "feedback" / f"{sid}.md", env.get_template("feedback.md.j2").render(context))
-    atomic.write_text(out / "feedback" / f"{sid}.html", env.get_template("feedback.html.j2").render(context))
+    atomic.write_text(
+        out / "feedback" / f"{sid}.md", env.get_template("feedback.md.j2").render(context)
+    )
+    atomic.write_text(
+        out / "feedback" / f"{sid}.html", env.get_template("feedback.html.j2").render(context)
+    )
     atomic.write_json(out / "gradescope" / sid / "results.json", gradescope_results(result))
     atomic.write_json(_student_json(out, sid), result)
 
@@ -80,15 +86,26 @@ def gradebook_csv(manifest: Mapping[str, Any], results: Sequence[Mapping[str, An
     buffer = io.StringIO()
     writer = csv.writer(buffer, lineterminator="\n")
     problems = manifest["problems"]
-    writer.writerow(["id", "name", "status", "score", "max_score", "percent"]
-                    + [f"problem{p['index']}" for p in problems] + ["reason"])
+    writer.writerow(
+        ["id", "name", "status", "score", "max_score", "percent"]
+        + [f"problem{p['index']}" for p in problems]
+        + ["reason"]
+    )
     for r in results:
         per_problem = {p["index"]: p["score"] for p in r["problems"]}
         percent = 100 * r["score"] / r["max_score"] if r["max_score"] else 0.0
-        writer.writerow([r["student"]["id"], r["student"]["name"], r["status"], _num(r["score"]),
-                         _num(r["max_score"]), f"{percent:.1f}"]
-                        + [_num(per_problem.get(p["index"], 0.0)) for p in problems]
-                        + [r["reason"]])
+        writer.writerow(
+            [
+                r["student"]["id"],
+                r["student"]["name"],
+                r["status"],
+                _num(r["score"]),
+                _num(r["max_score"]),
+                f"{percent:.1f}",
+            ]
+            + [_num(per_problem.get(p["index"], 0.0)) for p in problems]
+            + [r["reason"]]
+        )
     return buffer.getvalue()
 
 
@@ -96,7 +113,9 @@ def _num(x: float) -> str:
     return f"{x:g}"
 
 
-def class_summary(manifest: Mapping[str, Any], results: Sequence[Mapping[str, Any]]) -> dict[str, Any]:
+def class_summary(
+    manifest: Mapping[str, Any], results: Sequence[Mapping[str, Any]]
+) -> dict[str, Any]:
     """Success rate per part (over students whose sheets were graded), the most common named
     mistakes per problem, and the statuses."""
     graded = [r for r in results if r["problems"]]
@@ -105,23 +124,45 @@ def class_summary(manifest: Mapping[str, Any], results: Sequence[Mapping[str, An
         parts, mistakes = [], Counter()
         examples: dict[tuple[str, str], str] = {}
         for part in problem["parts"]:
-            verdicts = [p for r in graded for pr in r["problems"] if pr["index"] == problem["index"]
-                        for p in pr["parts"] if p["key"] == part["key"]]
+            verdicts = [
+                p
+                for r in graded
+                for pr in r["problems"]
+                if pr["index"] == problem["index"]
+                for p in pr["parts"]
+                if p["key"] == part["key"]
+            ]
             correct = sum(1 for v in verdicts if v["verdict"] == "correct")
             blank = sum(1 for v in verdicts if "blank" in v["mistakes"])
-            parts.append({"key": part["key"], "answered": len(verdicts) - blank,
-                          "correct": correct,
-                          "success_rate": round(correct / len(verdicts), 4) if verdicts else None})
+            parts.append(
+                {
+                    "key": part["key"],
+                    "answered": len(verdicts) - blank,
+                    "correct": correct,
+                    "success_rate": round(correct / len(verdicts), 4) if verdicts else None,
+                }
+            )
             for v in verdicts:
                 # The first named mistake is the diagnosis; its sentence leads the feedback.
                 kind = v["mistakes"][0] if v["mistakes"] else None
                 if kind and kind != "blank":
                     mistakes[(part["key"], kind)] += 1
-                    examples.setdefault((part["key"], kind), v["feedback"][0] if v["feedback"] else kind)
-        top = [{"part": k[0], "mistake": k[1], "feedback": examples[k], "count": n}
-               for k, n in sorted(mistakes.items(), key=lambda kv: (-kv[1], kv[0]))[:8]]
-        problems.append({"index": problem["index"], "scene": problem["scene"],
-                         "title": problem["title"], "parts": parts, "common_mistakes": top})
+                    examples.setdefault(
+                        (part["key"], kind), v["feedback"][0] if v["feedback"] else kind
+                    )
+        top = [
+            {"part": k[0], "mistake": k[1], "feedback": examples[k], "count": n}
+            for k, n in sorted(mistakes.items(), key=lambda kv: (-kv[1], kv[0]))[:8]
+        ]
+        problems.append(
+            {
+                "index": problem["index"],
+                "scene": problem["scene"],
+                "title": problem["title"],
+                "parts": parts,
+                "common_mistakes": top,
+            }
+        )
     scores = [r["score"] for r in results]
     return {
         "students": len(results),
@@ -134,25 +175,35 @@ def class_summary(manifest: Mapping[str, Any], results: Sequence[Mapping[str, An
 
 def summary_markdown(manifest: Mapping[str, Any], summary: Mapping[str, Any]) -> str:
     lines = [f"# {manifest['assignment']['title']}: grading summary", ""]
-    lines.append(f"{summary['students']} students; statuses: "
-                 + ", ".join(f"{k} {v}" for k, v in summary["statuses"].items())
-                 + f"; mean score {summary['mean_score']:g} of {summary['max_score']:g}.")
+    lines.append(
+        f"{summary['students']} students; statuses: "
+        + ", ".join(f"{k} {v}" for k, v in summary["statuses"].items())
+        + f"; mean score {summary['mean_score']:g} of {summary['max_score']:g}."
+    )
     lines += ["", "![score distribution](scores.svg)", ""]
     for problem in summary["problems"]:
-        lines += [f"## Problem {problem['index']}: {problem['title']} ({problem['scene']})", "",
-                  "| part | answered | correct | success rate |", "| --- | --- | --- | --- |"]
+        lines += [
+            f"## Problem {problem['index']}: {problem['title']} ({problem['scene']})",
+            "",
+            "| part | answered | correct | success rate |",
+            "| --- | --- | --- | --- |",
+        ]
         for p in problem["parts"]:
             rate = "–" if p["success_rate"] is None else f"{100 * p['success_rate']:.0f} %"
             lines.append(f"| {p['key']} | {p['answered']} | {p['correct']} | {rate} |")
         if problem["common_mistakes"]:
             lines += ["", "Most common named mistakes:", ""]
-            lines += [f"- {m['count']} × {m['part']}, `{m['mistake']}`, e.g. \"{m['feedback']}\""
-                      for m in problem["common_mistakes"]]
+            lines += [
+                f'- {m["count"]} × {m["part"]}, `{m["mistake"]}`, e.g. "{m["feedback"]}"'
+                for m in problem["common_mistakes"]
+            ]
         lines.append("")
     return "\n".join(lines)
 
 
-def score_chart(results: Sequence[Mapping[str, Any]], max_score: float) -> tuple[bytes, bytes] | None:
+def score_chart(
+    results: Sequence[Mapping[str, Any]], max_score: float
+) -> tuple[bytes, bytes] | None:
     """The score distribution as (PNG, SVG) bytes, deterministic; None without matplotlib."""
     try:
         import matplotlib
@@ -177,7 +228,9 @@ def score_chart(results: Sequence[Mapping[str, Any]], max_score: float) -> tuple
     return png.getvalue(), svg.getvalue()
 
 
-def write_class_reports(out: Path, manifest: Mapping[str, Any], results: Sequence[Mapping[str, Any]]) -> None:
+def write_class_reports(
+    out: Path, manifest: Mapping[str, Any], results: Sequence[Mapping[str, Any]]
+) -> None:
     """gradebook.csv, summary.json, summary.md and the score chart."""
     atomic.write_text(out / "gradebook.csv", gradebook_csv(manifest, results))
     summary = class_summary(manifest, results)

@@ -30,7 +30,9 @@ class Rubric:
     convention: float = 0.5
     numeric_tolerance: float = 0.01
 
-    def fraction(self, status: str, score: float, mistakes: tuple[str, ...], follows: bool) -> float:
+    def fraction(
+        self, status: str, score: float, mistakes: tuple[str, ...], follows: bool
+    ) -> float:
         """The share of a part's points a verdict earns."""
         if status == "correct":
             return 1.0
@@ -52,12 +54,16 @@ def rubric_from_table(table: Any) -> Rubric:
         return Rubric()
     if not isinstance(table, dict):
         raise RequestError("[rubric] must be a table")
-    problems = [f"rubric.{k}: unknown field (known: {', '.join(sorted(_FIELDS))})"
-                for k in sorted(set(table) - _FIELDS)]
+    problems = [
+        f"rubric.{k}: unknown field (known: {', '.join(sorted(_FIELDS))})"
+        for k in sorted(set(table) - _FIELDS)
+    ]
     values: dict[str, Any] = {}
     if "partial_credit" in table:
         if not isinstance(table["partial_credit"], bool):
-            problems.append(f"rubric.partial_credit: must be true or false, got {table['partial_credit']!r}")
+            problems.append(
+                f"rubric.partial_credit: must be true or false, got {table['partial_credit']!r}"
+            )
         values["partial_credit"] = table["partial_credit"]
     for name in ("follow_through", "convention"):
         if name in table:
@@ -67,7 +73,12 @@ def rubric_from_table(table: Any) -> Rubric:
             values[name] = float(v) if isinstance(v, int | float) else v
     if "numeric_tolerance" in table:
         v = table["numeric_tolerance"]
-        if isinstance(v, bool) or not isinstance(v, int | float) or not (0 < v < 1) or math.isnan(v):
+        if (
+            isinstance(v, bool)
+            or not isinstance(v, int | float)
+            or not (0 < v < 1)
+            or math.isnan(v)
+        ):
             problems.append(f"rubric.numeric_tolerance: must be between 0 and 1, got {v!r}")
         values["numeric_tolerance"] = v
     if problems:

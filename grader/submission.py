@@ -48,8 +48,12 @@ def read_sheet(path: Path, student_id: str, problem_count: int) -> Sheet:
     try:
         size = path.stat().st_size
         if size > MAX_SHEET_BYTES:
-            return _bad(path, "", f"the file is {size / 1e6:.1f} MB; an answer sheet may be at most "
-                        f"{MAX_SHEET_BYTES // 1024} KiB")
+            return _bad(
+                path,
+                "",
+                f"the file is {size / 1e6:.1f} MB; an answer sheet may be at most "
+                f"{MAX_SHEET_BYTES // 1024} KiB",
+            )
         data = path.read_bytes()
     except OSError as error:
         return _bad(path, "", f"the file cannot be read ({error.strerror or error})")
@@ -61,8 +65,12 @@ def read_sheet(path: Path, student_id: str, problem_count: int) -> Sheet:
     try:
         text = data.decode("utf-8-sig")
     except UnicodeDecodeError as error:
-        return _bad(path, digest, f"the file is not UTF-8 text (byte 0x{data[error.start]:02x} at "
-                    f"position {error.start}); save it as UTF-8")
+        return _bad(
+            path,
+            digest,
+            f"the file is not UTF-8 text (byte 0x{data[error.start]:02x} at "
+            f"position {error.start}); save it as UTF-8",
+        )
     try:
         raw = json.loads(text) if path.suffix.lower() == ".json" else tomllib.loads(text)
     except tomllib.TOMLDecodeError as error:
@@ -78,8 +86,10 @@ def _structure(path: Path, digest: str, raw: dict, student_id: str, problem_coun
     warnings = []
     declared = raw.get("student_id")
     if declared is not None and str(declared).lower() != student_id.lower():
-        warnings.append(f"the sheet says student_id = {declared!r} but the file belongs to "
-                        f"{student_id!r}; graded as {student_id!r}")
+        warnings.append(
+            f"the sheet says student_id = {declared!r} but the file belongs to "
+            f"{student_id!r}; graded as {student_id!r}"
+        )
     answers: dict[int, dict[str, Any]] = {}
     for index in range(1, problem_count + 1):
         table = raw.get(f"problem{index}", {})
@@ -87,8 +97,11 @@ def _structure(path: Path, digest: str, raw: dict, student_id: str, problem_coun
             warnings.append(f"[problem{index}] is not a table; its answers were ignored")
             table = {}
         answers[index] = {str(k): _answer_value(v) for k, v in table.items()}
-    extra = sorted(k for k in raw if k.startswith("problem") and k not in
-                   {f"problem{i}" for i in range(1, problem_count + 1)})
+    extra = sorted(
+        k
+        for k in raw
+        if k.startswith("problem") and k not in {f"problem{i}" for i in range(1, problem_count + 1)}
+    )
     if extra:
         warnings.append(f"ignored tables that the assignment does not have: {', '.join(extra)}")
     return Sheet(path, digest, answers, "", tuple(warnings))

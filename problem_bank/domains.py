@@ -37,7 +37,9 @@ def _parse_bound(text: str) -> sp.Expr:
         return -sp.oo
     match = _BOUND.match(stripped)
     if not match or not (match["num"] or match["pi"]):
-        raise DomainError(f"cannot read the interval bound {text!r}; write a number, pi, 2*pi or pi/2")
+        raise DomainError(
+            f"cannot read the interval bound {text!r}; write a number, pi, 2*pi or pi/2"
+        )
     value: sp.Expr = sp.Rational(str(Fraction(match["num"]))) if match["num"] else sp.S.One
     if match["pi"]:
         value *= sp.pi
@@ -62,7 +64,9 @@ class Domain:
         if isinstance(text, Domain):
             return text
         if not isinstance(text, str):
-            raise DomainError(f"a domain must be a string such as 'positive' or '(0, pi/2)', got {text!r}")
+            raise DomainError(
+                f"a domain must be a string such as 'positive' or '(0, pi/2)', got {text!r}"
+            )
         key = text.strip().lower()
         if key == "positive":
             return cls("positive", sp.S.Zero, sp.oo, True, True)
@@ -78,7 +82,9 @@ class Domain:
             )
         lower, upper = _parse_bound(match["lo"]), _parse_bound(match["hi"])
         if not bool(lower < upper):
-            raise DomainError(f"empty interval {text!r}: the lower bound must be below the upper one")
+            raise DomainError(
+                f"empty interval {text!r}: the lower bound must be below the upper one"
+            )
         return cls(text.strip(), lower, upper, match["lo_br"] == "(", match["hi_br"] == ")")
 
     @property
@@ -111,7 +117,9 @@ class Domain:
         if math.isinf(lo) and math.isinf(hi):
             return (-3.0, 3.0)
         if math.isinf(hi):
-            return (lo + 0.5, lo + 3.0) if lo == 0 else (lo + 0.1 * abs(lo) + 0.1, lo + 3.0 + abs(lo))
+            return (
+                (lo + 0.5, lo + 3.0) if lo == 0 else (lo + 0.1 * abs(lo) + 0.1, lo + 3.0 + abs(lo))
+            )
         if math.isinf(lo):
             return (hi - 3.0 - abs(hi), hi - 0.1 * abs(hi) - 0.1)
         margin = 0.02 * (hi - lo)

@@ -57,7 +57,10 @@ def solution_data(variant: SceneVariant) -> dict[str, Any]:
         "T": text(variant.kinetic_energy),
         "V": text(variant.potential_energy),
         "L": text(variant.lagrangian),
-        "momenta": {f"p_{q}": text(p) for q, p in zip(variant.coordinates, system.generalized_momenta, strict=True)},
+        "momenta": {
+            f"p_{q}": text(p)
+            for q, p in zip(variant.coordinates, system.generalized_momenta, strict=True)
+        },
         "eom": [text(e) for e in system.euler_lagrange],
         "cyclic": list(system.cyclic_coordinates),
         "conserved": {k: text(v) for k, v in system.conserved_quantities.items()},
@@ -72,13 +75,19 @@ def solution_json(variant: SceneVariant) -> str:
 def solution_text(variant: SceneVariant) -> str:
     """A readable summary for a terminal."""
     d = solution_data(variant)
-    lines = [f"{d['title']} ({d['id']}" + (f", seed {d['seed']})" if d["seed"] is not None else ")"), ""]
+    lines = [
+        f"{d['title']} ({d['id']}" + (f", seed {d['seed']})" if d["seed"] is not None else ")"),
+        "",
+    ]
     lines += [d["statement"], ""]
     lines.append("coordinates: " + ", ".join(d["coordinates"]))
-    lines.append("parameters:  " + ", ".join(
-        f"{n} {p['domain']}" + (f" = {p['value']} {p['unit']}".rstrip() if "value" in p else "")
-        for n, p in d["parameters"].items()
-    ))
+    lines.append(
+        "parameters:  "
+        + ", ".join(
+            f"{n} {p['domain']}" + (f" = {p['value']} {p['unit']}".rstrip() if "value" in p else "")
+            for n, p in d["parameters"].items()
+        )
+    )
     if d["options"]:
         lines.append("options:     " + ", ".join(f"{k}={v}" for k, v in d["options"].items()))
     lines.append(f"DOF:         {d['dof']}  (3N - k with k = {len(d['constraints'])} constraints)")
@@ -123,4 +132,3 @@ def solution_latex(variant: SceneVariant) -> str:
     cyclic = ", ".join(variant.cyclic_coordinates) or "none"
     out.append(f"Degrees of freedom: {variant.dof}. Cyclic coordinates: {cyclic}.")
     return "\n".join(out)
-

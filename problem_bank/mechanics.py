@@ -102,8 +102,9 @@ def cyclic_coordinates(L: sp.Expr, jets: Sequence[Jet]) -> tuple[str, ...]:
 
 
 def energy_function(L: sp.Expr, jets: Sequence[Jet]) -> sp.Expr:
-    """h = Σ q̇_j p_j − L (the Jacobi integral; equals T + V when the constraints are scleronomic)."""
-    return sp.expand(sum((j.dot * p for j, p in zip(jets, generalized_momenta(L, jets))), sp.S.Zero) - L)
+    """h = Σ q̇_j p_j − L (the Jacobi integral; T + V when the constraints are scleronomic)."""
+    momenta = generalized_momenta(L, jets)
+    return sp.expand(sum((j.dot * p for j, p in zip(jets, momenta, strict=True)), sp.S.Zero) - L)
 
 
 def speed_squared(position: Sequence[sp.Expr], jets: Sequence[Jet]) -> sp.Expr:
@@ -184,7 +185,9 @@ class LagrangianSystem:
 
     def on_shell(self, expr: sp.Expr) -> sp.Expr:
         """expr with q̈ replaced by the solved accelerations (for conservation checks)."""
-        return expr.xreplace({j.ddot: a for j, a in zip(self.jets, self.accelerations, strict=True)})
+        return expr.xreplace(
+            {j.ddot: a for j, a in zip(self.jets, self.accelerations, strict=True)}
+        )
 
     def symbols(self) -> set[sp.Symbol]:
         """The free symbols of L other than the jets and t: the parameters."""

@@ -47,7 +47,9 @@ def param(
 ) -> Parameter:
     """Declare a parameter; `domain` is `positive`, `nonnegative`, `real` or an interval."""
     if domain is None:
-        raise SceneError("?", [f"parameter {name!r}: no domain (declare positive, real or an interval)"])
+        raise SceneError(
+            "?", [f"parameter {name!r}: no domain (declare positive, real or an interval)"]
+        )
     return Parameter(name, Domain.parse(domain), unit, tuple(values), description)
 
 
@@ -154,7 +156,9 @@ class Scene:
             if canonical not in self.coordinates:
                 problems.append(f"renames: {canonical!r} is not a coordinate")
             if not choices or choices[0] != canonical:
-                problems.append(f"renames: the first name for {canonical!r} must be {canonical!r} itself")
+                problems.append(
+                    f"renames: the first name for {canonical!r} must be {canonical!r} itself"
+                )
         for name, choices in self.options.items():
             if not choices:
                 problems.append(f"options: {name!r} offers no choice")
@@ -215,7 +219,9 @@ class SceneVariant:
         problems = []
         for o, v in self.options.items():
             if o not in scene.options or v not in scene.options[o]:
-                problems.append(f"options: {o}={v!r} is not offered (offered: {scene.options.get(o)})")
+                problems.append(
+                    f"options: {o}={v!r} is not offered (offered: {scene.options.get(o)})"
+                )
         clash = set(self.names.values()) & {p.name for p in scene.parameters}
         if clash or len(set(self.names.values())) != len(self.names):
             problems.append(f"renames: coordinate names {sorted(self.names.values())} clash")
@@ -290,7 +296,10 @@ class SceneVariant:
     def constraints(self) -> tuple[tuple[str, sp.Expr], ...]:
         """Every holonomic constraint f(x, y, z, t) = 0 with a short description: the declared
         ones, then planarity (z = 0 for 2-D point masses; z = 0 and no tilt for rigid bodies)."""
-        declared = tuple(("declared", sp.sympify(f)) for f in self.scene.constraints(self.namespace, self.cartesian))
+        declared = tuple(
+            ("declared", sp.sympify(f))
+            for f in self.scene.constraints(self.namespace, self.cartesian)
+        )
         implied = []
         for b in self.bodies:
             if b.planar:
@@ -328,20 +337,26 @@ class SceneVariant:
         used: set[sp.Symbol] = set()
         for b in self.bodies:
             for label, expr in [("position", b.position), ("mass", (b.mass,))] + (
-                [("inertia", (b.inertia,)), ("angle", (b.angle,))] if isinstance(b, RigidBody) else []
+                [("inertia", (b.inertia,)), ("angle", (b.angle,))]
+                if isinstance(b, RigidBody)
+                else []
             ):
                 for x in expr:
                     free = sp.sympify(x).free_symbols
                     used |= free
                     for s in sorted(free - known, key=str):
-                        problems.append(f"bodies: {b.name}.{label} uses {s}, which is not a declared parameter")
+                        problems.append(
+                            f"bodies: {b.name}.{label} uses {s}, which is not a declared parameter"
+                        )
         V = sp.sympify(self.scene.potential(self.namespace, self.bodies))
         used |= V.free_symbols
         for s in sorted(V.free_symbols - known, key=str):
             problems.append(f"potential: uses {s}, which is not a declared parameter")
         for j in self.jets:
             if j.q not in used and j.dot not in used:
-                problems.append(f"coordinates: {j.name!r} appears in no position and not in the potential")
+                problems.append(
+                    f"coordinates: {j.name!r} appears in no position and not in the potential"
+                )
         subs = self._cartesian_substitution()
         for i, (label, f) in enumerate(self.constraints):
             if label != "declared":
@@ -371,7 +386,10 @@ class SceneVariant:
         rows = list(self.transformation.values())
         J = sp.Matrix([[sp.diff(r, j.q) for j in self.jets] for r in rows])
         rng = random.Random(0)
-        point = {s: rng.uniform(*self.domains[str(s)].sample_range()) for s in self.parameter_symbols.values()}
+        point = {
+            s: rng.uniform(*self.domains[str(s)].sample_range())
+            for s in self.parameter_symbols.values()
+        }
         point |= {j.q: rng.uniform(0.2, 1.2) for j in self.jets} | {mech.t: 0.7}
         numeric = J.xreplace(point).evalf()
         import numpy as np
@@ -425,7 +443,10 @@ class SceneVariant:
     @cached_property
     def numeric_values(self) -> dict[sp.Symbol, sp.Expr]:
         """The drawn parameter values as exact numbers (decimals read as rationals)."""
-        return {self.parameter_symbols[n]: sp.nsimplify(v, rational=True) for n, v in self.values.items()}
+        return {
+            self.parameter_symbols[n]: sp.nsimplify(v, rational=True)
+            for n, v in self.values.items()
+        }
 
     def statement(self) -> str:
         """The problem text with this variant's coordinate names and option words filled in."""

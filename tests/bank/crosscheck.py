@@ -34,7 +34,11 @@ def lagranges_method_equations(variant: SceneVariant) -> list[sp.Expr]:
     kinetic = sp.S.Zero
     for body in variant.bodies:
         coords = list(body.position) + [0] * (3 - len(body.position))
-        r = sum((sp.sympify(c).xreplace(forward) * axis for c, axis in zip(coords, (N.x, N.y, N.z))), 0 * N.x)
+        axes = (N.x, N.y, N.z)
+        r = sum(
+            (sp.sympify(c).xreplace(forward) * a for c, a in zip(coords, axes, strict=True)),
+            0 * N.x,
+        )
         point = origin.locatenew(f"P_{body.name}", r)
         point.set_vel(N, r.dt(N))
         if isinstance(body, RigidBody):
@@ -62,7 +66,9 @@ def numeric_point(variant: SceneVariant) -> dict[sp.Symbol, float]:
     return point
 
 
-def integrate(variant: SceneVariant, y0, t_end: float, method: str = "DOP853", rtol=1e-12, atol=1e-12):
+def integrate(
+    variant: SceneVariant, y0, t_end: float, method: str = "DOP853", rtol=1e-12, atol=1e-12
+):
     """Integrate A q̈ = b numerically from y0 = (q, q̇); returns (t, y) with dense samples."""
     params = numeric_point(variant)
     jets = variant.jets
@@ -74,11 +80,21 @@ def integrate(variant: SceneVariant, y0, t_end: float, method: str = "DOP853", r
     n = len(jets)
 
     def rhs(time, y):
-        qdd = np.linalg.solve(np.array(A_f(time, *y), dtype=float), np.array(b_f(time, *y), dtype=float).ravel())
+        qdd = np.linalg.solve(
+            np.array(A_f(time, *y), dtype=float), np.array(b_f(time, *y), dtype=float).ravel()
+        )
         return np.concatenate([y[n:], qdd])
 
-    sol = solve_ivp(rhs, (0.0, t_end), y0, method=method, rtol=rtol, atol=atol, dense_output=False,
-                    t_eval=np.linspace(0.0, t_end, 400))
+    sol = solve_ivp(
+        rhs,
+        (0.0, t_end),
+        y0,
+        method=method,
+        rtol=rtol,
+        atol=atol,
+        dense_output=False,
+        t_eval=np.linspace(0.0, t_end, 400),
+    )
     assert sol.success, sol.message
     return sol.t, sol.y, params
 
@@ -87,7 +103,7 @@ def evaluate_along(variant: SceneVariant, expr: sp.Expr, ts, ys, params) -> np.n
     jets = variant.jets
     args = [mech.t] + [j.q for j in jets] + [j.dot for j in jets]
     f = sp.lambdify(args, expr.xreplace(params), "numpy")
-    return np.array([float(f(time, *y)) for time, y in zip(ts, ys.T)])
+    return np.array([float(f(time, *y)) for time, y in zip(ts, ys.T, strict=True)])
 
 
 def term_scale(variant: SceneVariant, expr: sp.Expr, ts, ys, params) -> float:

@@ -32,7 +32,9 @@ def test_declared_conserved_quantities_stay_constant(scene_id):
     n = len(variant.jets)
     ts, ys, params = integrate(variant, start_state(scene_id, n), T_END)
     conserved = variant.system.conserved_quantities
-    assert conserved or variant.system.L.has(variant.namespace.t), "a time-independent L conserves h"
+    assert conserved or variant.system.L.has(variant.namespace.t), (
+        "a time-independent L conserves h"
+    )
     for name, Q in conserved.items():
         values = evaluate_along(variant, Q, ts, ys, params)
         scale = term_scale(variant, Q, ts, ys, params)

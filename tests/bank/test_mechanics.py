@@ -24,7 +24,12 @@ def test_jet_symbols_are_named_after_the_coordinate():
 
 def test_total_derivative_is_the_chain_rule_on_jets():
     f = x.q**2 * sp.sin(theta.q) + x.dot * mech.t
-    expected = 2 * x.q * x.dot * sp.sin(theta.q) + x.q**2 * sp.cos(theta.q) * theta.dot + x.ddot * mech.t + x.dot
+    expected = (
+        2 * x.q * x.dot * sp.sin(theta.q)
+        + x.q**2 * sp.cos(theta.q) * theta.dot
+        + x.ddot * mech.t
+        + x.dot
+    )
     assert sp.expand(mech.total_derivative(f, [x, theta]) - expected) == 0
 
 
@@ -36,7 +41,10 @@ def test_total_derivative_refuses_accelerations():
 def test_simple_pendulum_momentum_equation_and_energy():
     system = simple_pendulum()
     assert system.generalized_momenta == (m * l**2 * theta.dot,)
-    assert sp.expand(system.euler_lagrange[0] - (m * l**2 * theta.ddot + m * g * l * sp.sin(theta.q))) == 0
+    assert (
+        sp.expand(system.euler_lagrange[0] - (m * l**2 * theta.ddot + m * g * l * sp.sin(theta.q)))
+        == 0
+    )
     assert system.mass_matrix == sp.Matrix([[m * l**2]])
     assert sp.expand(system.forcing[0] + m * g * l * sp.sin(theta.q)) == 0
     assert sp.simplify(system.accelerations[0] + g / l * sp.sin(theta.q)) == 0
@@ -83,7 +91,12 @@ def test_total_derivative_added_to_L_leaves_the_equations_unchanged(a, b, c):
 @given(a=st.integers(1, 9), b=st.integers(1, 9))
 def test_euler_lagrange_is_linear_in_accelerations(a, b):
     """E = A q̈ − b exactly, for coupled quadratic kinetic energies."""
-    L = sp.Rational(a, 2) * x.dot**2 + b * x.dot * theta.dot * sp.cos(theta.q) + theta.dot**2 - x.q * sp.sin(theta.q)
+    L = (
+        sp.Rational(a, 2) * x.dot**2
+        + b * x.dot * theta.dot * sp.cos(theta.q)
+        + theta.dot**2
+        - x.q * sp.sin(theta.q)
+    )
     system = mech.LagrangianSystem(L, [x, theta])
     A, f = system.mass_matrix, system.forcing
     qdd = sp.Matrix([x.ddot, theta.ddot])

@@ -15,13 +15,27 @@ import pytest
 
 def start(workspace: Path) -> subprocess.Popen:
     return subprocess.Popen(
-        [sys.executable, "-m", "grader.cli", "grade", str(workspace / "out" / "manifest.json"),
-         str(workspace / "submissions"), "--out", str(workspace / "grades"), "--jobs", "1"],
-        stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+        [
+            sys.executable,
+            "-m",
+            "grader.cli",
+            "grade",
+            str(workspace / "out" / "manifest.json"),
+            str(workspace / "submissions"),
+            "--out",
+            str(workspace / "grades"),
+            "--jobs",
+            "1",
+        ],
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
     )
 
 
-def wait_for_results(folder: Path, count: int, process: subprocess.Popen, limit: float = 120) -> int:
+def wait_for_results(
+    folder: Path, count: int, process: subprocess.Popen, limit: float = 120
+) -> int:
     deadline = time.monotonic() + limit
     while time.monotonic() < deadline:
         done = len(list(folder.glob("*.json"))) if folder.exists() else 0
@@ -56,9 +70,19 @@ def test_rerun_completes_an_interrupted_run(workspace, how):
     assert finished < 12
 
     rerun = subprocess.run(
-        [sys.executable, "-m", "grader.cli", "grade", str(workspace / "out" / "manifest.json"),
-         str(workspace / "submissions"), "--out", str(workspace / "grades")],
-        capture_output=True, text=True, timeout=300,
+        [
+            sys.executable,
+            "-m",
+            "grader.cli",
+            "grade",
+            str(workspace / "out" / "manifest.json"),
+            str(workspace / "submissions"),
+            "--out",
+            str(workspace / "grades"),
+        ],
+        capture_output=True,
+        text=True,
+        timeout=300,
     )
     assert rerun.returncode == 0, rerun.stderr
     assert f"({finished} unchanged, reused)" in rerun.stdout

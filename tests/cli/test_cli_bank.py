@@ -8,7 +8,16 @@ from grader.cli import main
 from problem_bank import scene_ids
 
 REQUIRED_JSON_KEYS = {
-    "coordinates", "parameters", "dof", "T", "V", "L", "momenta", "eom", "cyclic", "conserved",
+    "coordinates",
+    "parameters",
+    "dof",
+    "T",
+    "V",
+    "L",
+    "momenta",
+    "eom",
+    "cyclic",
+    "conserved",
 }
 
 

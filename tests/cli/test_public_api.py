@@ -6,15 +6,35 @@ import problem_bank
 
 def test_problem_bank_exports():
     assert sorted(problem_bank.__all__) == [
-        "Domain", "Jet", "LagradeError", "LagrangianSystem", "Scene", "SceneError", "SceneVariant",
-        "UnknownSceneError", "generate", "get_scene", "jet", "scene_ids", "total_derivative",
+        "Domain",
+        "Jet",
+        "LagradeError",
+        "LagrangianSystem",
+        "Scene",
+        "SceneError",
+        "SceneVariant",
+        "UnknownSceneError",
+        "generate",
+        "get_scene",
+        "jet",
+        "scene_ids",
+        "total_derivative",
     ]
 
 
 def test_grader_exports():
     assert sorted(grader.__all__) == [
-        "GraderError", "ParseError", "Parsed", "RequestError", "Verdict", "Vocabulary", "check",
-        "grade", "parse_answer", "parse_equations", "parse_expression",
+        "GraderError",
+        "ParseError",
+        "Parsed",
+        "RequestError",
+        "Verdict",
+        "Vocabulary",
+        "check",
+        "grade",
+        "parse_answer",
+        "parse_equations",
+        "parse_expression",
     ]
 
 
@@ -29,6 +49,9 @@ def test_bank_never_imports_the_grader():
     import re
 
     root = pathlib.Path(problem_bank.__file__).parent
-    offenders = [p.name for p in root.rglob("*.py")
-                 if re.search(r"^\s*(from|import)\s+grader\b", p.read_text(), re.M)]
+    offenders = [
+        p.name
+        for p in root.rglob("*.py")
+        if re.search(r"^\s*(from|import)\s+grader\b", p.read_text(), re.M)
+    ]
     assert offenders == []
