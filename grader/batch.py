@@ -124,8 +124,18 @@ def _rubric(manifest_path: Path, manifest: dict) -> Rubric:
 _problems: dict[str, Problem] = {}
 
 
+def _question_key(spec: Mapping[str, Any]) -> str:
+    """What a symbolic question depends on: the scene, the variant's names and options, the
+    quantity — not its numbers, which only numeric follow-ups use (each with its own variant).
+    A class of 1,000 with 1,000 seeds asks only a handful of distinct symbolic questions."""
+    variant = get_scene(spec["scene"]).variant(spec["seed"])
+    return json.dumps(
+        [spec["scene"], variant.names, variant.options, spec.get("quantity")], sort_keys=True
+    )
+
+
 def _problem(spec: Mapping[str, Any]) -> Problem:
-    key = json.dumps(spec, sort_keys=True)
+    key = _question_key(spec)
     if key not in _problems:
         _problems[key] = build_problem(dict(spec))
     return _problems[key]
@@ -152,7 +162,7 @@ def warm_up(manifest: dict) -> None:
                 if part["part"] == "coordinates":
                     continue
                 spec = _spec(entry, part)
-                key = (json.dumps(spec, sort_keys=True), part["part"])
+                key = (_question_key(spec), part["part"])
                 if key in seen:
                     continue
                 seen.add(key)
@@ -260,9 +270,9 @@ def _judge(entry, part, answer, given, rubric: Rubric) -> Verdict:
     problem = _problem(_spec(entry, part))
     if name == "expression":
         text = answer if isinstance(answer, str) else " ".join(answer)
-        return check_numeric_followup(
-            problem.variant, problem, part["quantity"], text, rubric.numeric_tolerance
-        )
+        own = get_scene(entry["scene"]).variant(entry["seed"])  # this student's numbers
+        tolerance = rubric.numeric_tolerance
+        return check_numeric_followup(own, problem, part["quantity"], text, tolerance)
     value: Any = (
         _as_lines(answer)
         if name in MULTILINE
