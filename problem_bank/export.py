@@ -9,6 +9,7 @@ from typing import Any
 
 import sympy as sp
 
+from .render_math import symbol_names
 from .scene import SceneVariant
 
 
@@ -19,13 +20,7 @@ def expression_text(expr: sp.Expr) -> str:
 
 def latex_symbol_names(variant: SceneVariant) -> dict[sp.Symbol, str]:
     """LaTeX for jet symbols: `theta_dot` → \\dot{\\theta}, `x_M_ddot` → \\ddot{x}_{M}."""
-    names: dict[sp.Symbol, str] = {}
-    for j in variant.jets:
-        base = sp.latex(j.q)
-        head, _, sub = base.partition("_")
-        for symbol, accent in ((j.dot, "dot"), (j.ddot, "ddot")):
-            names[symbol] = f"\\{accent}{{{head}}}" + (f"_{sub}" if sub else "")
-    return names
+    return symbol_names(variant.coordinates)
 
 
 def solution_data(variant: SceneVariant) -> dict[str, Any]:

@@ -13,20 +13,23 @@ from pathlib import Path
 import pytest
 
 
+def grade_command(workspace: Path) -> list[str]:
+    """`lagrade grade` on the workspace's class, as a separate process."""
+    return [
+        sys.executable,
+        "-m",
+        "grader.cli",
+        "grade",
+        str(workspace / "out" / "manifest.json"),
+        str(workspace / "submissions"),
+        "--out",
+        str(workspace / "grades"),
+    ]
+
+
 def start(workspace: Path) -> subprocess.Popen:
     return subprocess.Popen(
-        [
-            sys.executable,
-            "-m",
-            "grader.cli",
-            "grade",
-            str(workspace / "out" / "manifest.json"),
-            str(workspace / "submissions"),
-            "--out",
-            str(workspace / "grades"),
-            "--jobs",
-            "1",
-        ],
+        grade_command(workspace) + ["--jobs", "1"],
         stdout=subprocess.PIPE,
         stderr=subprocess.PIPE,
         text=True,
@@ -70,16 +73,7 @@ def test_rerun_completes_an_interrupted_run(workspace, how):
     assert finished < 12
 
     rerun = subprocess.run(
-        [
-            sys.executable,
-            "-m",
-            "grader.cli",
-            "grade",
-            str(workspace / "out" / "manifest.json"),
-            str(workspace / "submissions"),
-            "--out",
-            str(workspace / "grades"),
-        ],
+        grade_command(workspace),
         capture_output=True,
         text=True,
         timeout=300,
