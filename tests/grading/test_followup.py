@@ -25,7 +25,12 @@ def judge(wedge, text, tolerance=0.01):
 
 def test_the_value_with_or_without_its_unit_is_right(wedge):
     value = wedge[2]
-    for text in (f"{value:.3f}", f"{value:.3g} m/s^2", f"{value:.4g} m/s**2", f"{value:.3g} [m/s^2]"):
+    for text in (
+        f"{value:.3f}",
+        f"{value:.3g} m/s^2",
+        f"{value:.4g} m/s**2",
+        f"{value:.3g} [m/s^2]",
+    ):
         assert judge(wedge, text).status == "correct", text
 
 
