@@ -9,6 +9,7 @@ whose submission, variant, rubric and grader version are unchanged.
 
 from __future__ import annotations
 
+import functools
 import gc
 import hashlib
 import json
@@ -22,6 +23,7 @@ from typing import Any
 from problem_bank.assign import project_version
 from problem_bank.bank import get_scene
 from problem_bank.errors import AssignmentError, LagradeError
+from problem_bank.scene import SceneVariant
 
 from . import atomic, report
 from .check import prepare
@@ -90,7 +92,7 @@ def load_manifest(path: Path) -> dict[str, Any]:
     mismatches = []
     for student in manifest["students"]:
         for entry in student["problems"]:
-            variant = get_scene(entry["scene"]).variant(entry["seed"])
+            variant = student_variant(entry["scene"], entry["seed"])
             if (
                 variant.names != entry["names"]
                 or variant.options != entry["options"]
@@ -124,17 +126,25 @@ def _rubric(manifest_path: Path, manifest: dict) -> Rubric:
 _problems: dict[str, Problem] = {}
 
 
+@functools.lru_cache(maxsize=4096)
+def student_variant(scene_id: str, seed: int) -> SceneVariant:
+    """A student's variant, built once per process (the manifest check, the question key and
+    the numeric follow-ups all ask for it, once per part of every submission otherwise)."""
+    return get_scene(scene_id).variant(seed)
+
+
 def _question_key(spec: Mapping[str, Any]) -> str:
     """What a symbolic question depends on: the scene, the variant's names and options, the
     quantity — not its numbers, which only numeric follow-ups use (each with its own variant).
     A class of 1,000 with 1,000 seeds asks only a handful of distinct symbolic questions."""
-    variant = get_scene(spec["scene"]).variant(spec["seed"])
+    variant = student_variant(spec["scene"], spec["seed"])
     return json.dumps(
         [spec["scene"], variant.names, variant.options, spec.get("quantity")], sort_keys=True
     )
 
 
-def _problem(spec: Mapping[str, Any]) -> Problem:
+def question(spec: Mapping[str, Any]) -> Problem:
+    """The Problem of a manifest entry, shared by every student who was asked the same thing."""
     key = _question_key(spec)
     if key not in _problems:
         _problems[key] = build_problem(dict(spec))
@@ -166,10 +176,10 @@ def warm_up(manifest: dict) -> None:
                 if key in seen:
                     continue
                 seen.add(key)
-                question = _problem(spec)
-                prepare(question, part["part"])
-                if part["part"] != "expression" and question.variant is not None:
-                    _warm_with_key(question, part)
+                asked = question(spec)
+                prepare(asked, part["part"])
+                if part["part"] != "expression" and asked.variant is not None:
+                    _warm_with_key(asked, part)
 
 
 def _warm_with_key(question: Problem, part: Mapping[str, Any]) -> None:
@@ -267,10 +277,10 @@ def _judge(entry, part, answer, given, rubric: Rubric) -> Verdict:
     name = part["part"]
     if name == "coordinates":
         return _check_coordinates(entry, answer if isinstance(answer, str) else " ".join(answer))
-    problem = _problem(_spec(entry, part))
+    problem = question(_spec(entry, part))
     if name == "expression":
         text = answer if isinstance(answer, str) else " ".join(answer)
-        own = get_scene(entry["scene"]).variant(entry["seed"])  # this student's numbers
+        own = student_variant(entry["scene"], entry["seed"])  # this student's numbers
         tolerance = rubric.numeric_tolerance
         return check_numeric_followup(own, problem, part["quantity"], text, tolerance)
     value: Any = (
@@ -335,10 +345,18 @@ def _problem_result(problem: Mapping, entry: Mapping, parts: list[dict]) -> dict
 # --- the batch ----------------------------------------------------------------------------------
 
 
-def _fingerprint(data: bytes | None, student: Mapping, rubric: Rubric, version: str) -> str:
+def _fingerprint(path: Path | None, student: Mapping, rubric: Rubric, version: str) -> str:
+    """What a result depends on: the submission's bytes (streamed, whatever their size), the
+    student's variant, the rubric and the grader's version."""
     h = hashlib.sha256()
     h.update(json.dumps([student, rubric.as_dict(), version], sort_keys=True).encode())
-    h.update(b"\x00" + (data if data is not None else b"<missing>"))
+    if path is None:
+        h.update(b"\x00<missing>")
+        return h.hexdigest()
+    h.update(b"\x00")
+    with path.open("rb") as f:
+        for chunk in iter(lambda: f.read(1 << 20), b""):
+            h.update(chunk)
     return h.hexdigest()
 
 
@@ -398,12 +416,7 @@ def grade(
     reused = 0
     for student in students:
         path, note = find_submission(submissions, student["id"])
-        data = (
-            path.read_bytes()
-            if path is not None and path.stat().st_size <= 64 * 2**20
-            else (None if path is None else _digest_large(path))
-        )
-        fingerprint = _fingerprint(data, student, rubric, version)
+        fingerprint = _fingerprint(path, student, rubric, version)
         previous = report.read_student_result(out, student["id"])
         if previous is not None and previous.get("fingerprint") == fingerprint:
             results[student["id"]] = previous
@@ -472,15 +485,6 @@ def grade(
 
 def _part_count(manifest: Mapping) -> int:
     return sum(len(p["parts"]) for p in manifest["problems"])
-
-
-def _digest_large(path: Path) -> bytes:
-    """A stand-in for the content of a file too large to hold: its SHA-256, streamed."""
-    h = hashlib.sha256()
-    with path.open("rb") as f:
-        for chunk in iter(lambda: f.read(1 << 20), b""):
-            h.update(chunk)
-    return b"sha256:" + h.hexdigest().encode()
 
 
 def _store(out: Path, manifest: Mapping, result: dict[str, Any]) -> dict[str, Any]:

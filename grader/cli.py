@@ -67,8 +67,7 @@ def _generate(args: argparse.Namespace) -> int:
     from problem_bank.assign import generate
     from problem_bank.progress import ProgressBar
 
-    bar = ProgressBar()
-    try:
+    with ProgressBar() as bar:
         result = generate(
             args.assignment,
             args.roster,
@@ -80,8 +79,6 @@ def _generate(args: argparse.Namespace) -> int:
             progress=bar,
             verify=None if args.no_verify else verify_variant,
         )
-    finally:
-        bar.close()
     for warning in result.warnings:
         print(f"warning: {warning}", file=sys.stderr)
     print(f"wrote {result.files} files for {result.students} students to {result.out_dir}")
@@ -101,8 +98,7 @@ def _grade(args: argparse.Namespace) -> int:
     from grader.batch import grade
     from problem_bank.progress import ProgressBar
 
-    bar = ProgressBar()
-    try:
+    with ProgressBar() as bar:
         summary = grade(
             args.manifest,
             args.submissions,
@@ -111,8 +107,6 @@ def _grade(args: argparse.Namespace) -> int:
             part_time_limit=args.part_time_limit,
             progress=bar,
         )
-    finally:
-        bar.close()
     counts = ", ".join(f"{k} {v}" for k, v in summary.counts.items() if v)
     print(f"{len(summary.results)} students: {counts} ({summary.reused} unchanged, reused)")
     print(f"gradebook: {summary.out_dir / 'gradebook.csv'}")
@@ -124,11 +118,8 @@ def _demo(args: argparse.Namespace) -> int:
     from grader.demo import run_demo, summary_table
     from problem_bank.progress import ProgressBar
 
-    bar = ProgressBar()
-    try:
+    with ProgressBar() as bar:
         summary, where = run_demo(args.folder, jobs=args.jobs, progress=bar)
-    finally:
-        bar.close()
     print(summary_table(summary))
     print()
     for label, path in where.items():

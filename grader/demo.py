@@ -19,14 +19,12 @@ from typing import Any
 import sympy as sp
 
 from problem_bank.assign import generate
-from problem_bank.bank import get_scene
 from problem_bank.export import latex_symbol_names
 from problem_bank.scene import SceneVariant
 
 from . import atomic
-from .batch import BatchSummary, grade
+from .batch import BatchSummary, grade, question, student_variant
 from .key import key_answer, plain
-from .problem import build_problem
 from .verify import verify_variant
 
 ASSIGNMENT = """\
@@ -177,7 +175,7 @@ def _answers(
     """The answers of one student to one problem, and what was planted (for the summary)."""
     notation = NOTATIONS[rng.choice(sorted(NOTATIONS))]
     system = variant.system
-    problem = build_problem({"scene": variant.scene.id, "seed": variant.seed})
+    problem = question({"scene": variant.scene.id, "seed": variant.seed})
     planted: list[str] = []
     answers: dict[str, Any] = {}
     for part in parts:
@@ -282,7 +280,7 @@ def write_submissions(
         lines = [f"student_id = {json.dumps(sid)}", f"name = {json.dumps(student['name'])}"]
         notes = [f"profile: {profile}"]
         for problem, entry in zip(manifest["problems"], student["problems"], strict=True):
-            variant = get_scene(entry["scene"]).variant(entry["seed"])
+            variant = student_variant(entry["scene"], entry["seed"])
             answers, planted_here = _answers(variant, problem["parts"], entry, rng, profile)
             notes += [f"problem {problem['index']} {p}" for p in planted_here]
             lines.append(f"\n[problem{problem['index']}]")

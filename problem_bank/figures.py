@@ -29,7 +29,7 @@ import sympy as sp
 from . import mechanics as mech
 from .errors import LagradeError
 from .render_math import name_latex
-from .scene import RigidBody, SceneVariant
+from .scene import RigidBody, SceneVariant, as_expr
 
 Point = tuple[Any, ...]
 
@@ -118,8 +118,9 @@ class _Geometry:
         self.three_d = any(len(b.position) == 3 for b in self.bodies)
         self.args = [j.q for j in self.jets] + [mech.t]
         positions = [self.project(b.position) for b in self.bodies]
-        self.symbolic = [tuple(sp.sympify(x).xreplace(self.values) for x in p) for p in positions]
+        self.symbolic = [tuple(as_expr(x).xreplace(self.values) for x in p) for p in positions]
         self.raw = positions
+        # lambdify on the bank's own positions (never student text): fast sweeps for drawing
         self._funcs = [sp.lambdify(self.args, list(p), modules="numpy") for p in self.symbolic]
         ns = variant.namespace
         self.scale = self._length_scale()
@@ -128,8 +129,8 @@ class _Geometry:
     def project(self, position: Sequence[sp.Expr]) -> tuple[sp.Expr, sp.Expr]:
         """2-D positions as they are; 3-D ones (z up) in an oblique view with y going back."""
         if len(position) == 2:
-            return (sp.sympify(position[0]), sp.sympify(position[1]))
-        x, y, z = (sp.sympify(c) for c in position)
+            return (as_expr(position[0]), as_expr(position[1]))
+        x, y, z = (as_expr(c) for c in position)
         return (x + _OBLIQUE[0] * y, z + _OBLIQUE[1] * y)
 
     def _length_scale(self) -> float:
@@ -160,17 +161,17 @@ class _Geometry:
             | dict(pose if pose is not None else self.pose)
             | {mech.t: self.hint.t}
         )
-        return float(sp.sympify(expr).xreplace(subs))
+        return float(as_expr(expr).xreplace(subs))
 
     def is_angle(self, q: sp.Symbol) -> bool:
         """q enters the positions (and body angles) only through trigonometric functions."""
-        exprs = [sp.sympify(x) for b in self.bodies for x in b.position]
-        exprs += [sp.sympify(b.angle) for b in self.bodies if isinstance(b, RigidBody)]
+        exprs = [as_expr(x) for b in self.bodies for x in b.position]
+        exprs += [as_expr(b.angle) for b in self.bodies if isinstance(b, RigidBody)]
         hidden = [e.replace(lambda f: isinstance(f, _TRIG), lambda f: sp.S.One) for e in exprs]
         return any(e.has(q) for e in exprs) and not any(h.has(q) for h in hidden)
 
     def moves(self, body_index: int, symbol: sp.Symbol) -> bool:
-        return any(sp.sympify(x).has(symbol) for x in self.bodies[body_index].position)
+        return any(as_expr(x).has(symbol) for x in self.bodies[body_index].position)
 
     def depends(self, body_index: int) -> int:
         return sum(self.moves(body_index, j.q) for j in self.jets)
@@ -207,7 +208,7 @@ class _Geometry:
     def identically_zero(self, expr: sp.Expr) -> bool:
         """expr vanishes at several random points (parameters, coordinates, t)."""
         try:
-            return all(abs(complex(sp.sympify(expr).evalf(subs=p))) < 1e-9 for p in self.rng_points)
+            return all(abs(complex(as_expr(expr).evalf(subs=p))) < 1e-9 for p in self.rng_points)
         except (TypeError, ValueError, ZeroDivisionError):
             return False
 
@@ -244,9 +245,9 @@ def _circle(geometry: _Geometry, body: int, q: sp.Symbol) -> tuple[np.ndarray, f
     if geometry.three_d:
         # the projection of a tilted circle is an ellipse; test the circle in 3-D instead
         raw = [
-            sp.lambdify(
+            sp.lambdify(  # the bank's own positions, never student text
                 geometry.args,
-                [sp.sympify(x).xreplace(geometry.values) for x in geometry.bodies[body].position],
+                [as_expr(x).xreplace(geometry.values) for x in geometry.bodies[body].position],
                 modules="numpy",
             )
         ]
@@ -360,8 +361,7 @@ def _plan_angle(d: _Drawing, body: int, j: mech.Jet, label: str, canonical: str)
     # the rod's length, symbolically: |P - C|² with C the mean of three points on the circle
     p_sym = [g.project(g.bodies[body].position)[k] for k in range(2)]
     c_sym = [
-        sum(sp.sympify(p).subs(j.q, a) for a in (0, 2 * sp.pi / 3, 4 * sp.pi / 3)) / 3
-        for p in p_sym
+        sum(as_expr(p).subs(j.q, a) for a in (0, 2 * sp.pi / 3, 4 * sp.pi / 3)) / 3 for p in p_sym
     ]
     length = (
         None
@@ -371,11 +371,10 @@ def _plan_angle(d: _Drawing, body: int, j: mech.Jet, label: str, canonical: str)
     if g.three_d:
         raw = g.bodies[body].position
         c3 = [
-            sum(sp.sympify(p).subs(j.q, a) for a in (0, 2 * sp.pi / 3, 4 * sp.pi / 3)) / 3
-            for p in raw
+            sum(as_expr(p).subs(j.q, a) for a in (0, 2 * sp.pi / 3, 4 * sp.pi / 3)) / 3 for p in raw
         ]
         length = _label_for_length(
-            g, sum((sp.sympify(p) - c) ** 2 for p, c in zip(raw, c3, strict=True))
+            g, sum((as_expr(p) - c) ** 2 for p, c in zip(raw, c3, strict=True))
         )
     zero = g.at(body, {j.q: np.array([0.0])})[0]
     arc = g.at(body, {j.q: np.linspace(0.0, pose, 40)})
@@ -422,7 +421,7 @@ def _plan_length(
         return
     # a straight track inclined at an angle parameter: mark that angle at its lower end
     position = g.project(g.bodies[body].position)
-    direction = [sp.diff(sp.sympify(c), j.q) for c in position]
+    direction = [sp.diff(as_expr(c), j.q) for c in position]
     for a in g.parameters_with_unit("rad"):
         for sign in (1, -1):
             if g.identically_zero(
@@ -436,7 +435,7 @@ def _plan_rotation(d: _Drawing, j: mech.Jet, label: str) -> None:
     """A coordinate that only turns a rigid body: a curved arrow around that body."""
     g = d.g
     for i, b in enumerate(g.bodies):
-        if isinstance(b, RigidBody) and sp.sympify(b.angle).has(j.q):
+        if isinstance(b, RigidBody) and as_expr(b.angle).has(j.q):
 
             def draw(ax: Any, unit: float, i: int = i) -> None:
                 centre = g.at(i)[0]
@@ -462,7 +461,7 @@ def _plan_time(d: _Drawing) -> None:
         if not g.moves(i, mech.t):
             continue
         rates = set()
-        for f in sp.sympify(sp.Tuple(*b.position)).atoms(*_TRIG):
+        for f in as_expr(sp.Tuple(*b.position)).atoms(*_TRIG):
             if f.args[0].has(mech.t):
                 rate = sp.diff(f.args[0], mech.t)
                 if not rate.has(mech.t):
@@ -487,8 +486,8 @@ def _rotation_axis(
     g: _Geometry, body: int, times: np.ndarray
 ) -> tuple[np.ndarray, np.ndarray] | None:
     """(projected centre, projected unit direction) of the axis a body circles about in time."""
-    position = [sp.sympify(x).xreplace(g.values) for x in g.bodies[body].position]
-    f = sp.lambdify(g.args, position, modules="numpy")
+    position = [as_expr(x).xreplace(g.values) for x in g.bodies[body].position]
+    f = sp.lambdify(g.args, position, modules="numpy")  # bank positions, never student text
     base = dict(g.pose)
     pts = np.array(
         [

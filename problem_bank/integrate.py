@@ -61,6 +61,7 @@ def right_hand_side(variant: SceneVariant, values: Mapping[str, float] | None = 
     params = parameter_values(variant, values)
     jets = variant.jets
     args = [mech.t] + [j.q for j in jets] + [j.dot for j in jets]
+    # lambdify on the bank's own derived matrices, never on student text (see the docstring)
     A = sp.lambdify(args, variant.system.mass_matrix.xreplace(params), "numpy")
     b = sp.lambdify(args, variant.system.forcing.xreplace(params), "numpy")
     n = len(jets)

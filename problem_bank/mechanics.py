@@ -19,7 +19,7 @@ L = ½ m l² θ̇² + m g l cos θ, p_θ = m l² θ̇, E_θ = m l² θ̈ + m g l
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Mapping, Sequence
+from collections.abc import Sequence
 from dataclasses import dataclass
 from functools import cached_property
 
@@ -188,22 +188,3 @@ class LagrangianSystem:
         return expr.xreplace(
             {j.ddot: a for j, a in zip(self.jets, self.accelerations, strict=True)}
         )
-
-    def symbols(self) -> set[sp.Symbol]:
-        """The free symbols of L other than the jets and t: the parameters."""
-        jet_symbols = {s for j in self.jets for s in (j.q, j.dot, j.ddot)}
-        return {s for s in self.L.free_symbols if s not in jet_symbols and s != t}
-
-
-def jets_of(names: Iterable[str]) -> tuple[Jet, ...]:
-    """Jets for several coordinate names, in order."""
-    return tuple(jet(n) for n in names)
-
-
-def jet_substitution(values: Mapping[str, tuple[float, float, float]], jets: Sequence[Jet]) -> dict:
-    """A sympy substitution dict {q: v, q̇: v̇, q̈: v̈} for the named coordinates."""
-    subs: dict = {}
-    for j in jets:
-        q, qd, qdd = values[j.name]
-        subs.update({j.q: q, j.dot: qd, j.ddot: qdd})
-    return subs

@@ -43,6 +43,12 @@ class ProgressBar:
         self.stream.flush()
         self._drawn = True
 
+    def __enter__(self) -> ProgressBar:
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.close()
+
     def close(self) -> None:
         if self.enabled and self._drawn:
             self.stream.write("\n")

@@ -26,6 +26,20 @@ from .errors import SceneError
 AXES = ("x", "y", "z")
 
 
+def as_expr(value: object) -> sp.Expr:
+    """A scene declaration's value as a sympy expression, without evaluating text.
+
+    Declarations are Python expressions written in the bank's own modules, so what arrives is
+    already a sympy object or a plain number (the 0 of a fixed axle); a string is refused
+    rather than parsed, so nothing here can turn text into code.
+    """
+    if isinstance(value, sp.Basic):
+        return value
+    if isinstance(value, bool) or not isinstance(value, int | float):
+        raise TypeError(f"a scene declares sympy expressions or numbers, not {value!r}")
+    return sp.Integer(value) if isinstance(value, int) else sp.Float(value)
+
+
 @dataclass(frozen=True)
 class Parameter:
     """A named constant of a scene, with the domain it lives in and, for numeric variants, its SI
@@ -264,11 +278,7 @@ class SceneVariant:
     # --- step 1–3: bodies, transformation equations, constraints, DOF ---------------------------
     @cached_property
     def bodies(self) -> tuple[Body, ...]:
-        bodies = tuple(self.scene.bodies(self.namespace))
-        return tuple(
-            type(b)(**{**b.__dict__, "position": tuple(sp.sympify(x) for x in b.position)})
-            for b in bodies
-        )
+        return tuple(_normalized(b) for b in self.scene.bodies(self.namespace))
 
     @cached_property
     def transformation(self) -> dict[str, sp.Expr]:
@@ -279,7 +289,7 @@ class SceneVariant:
             for axis, value in zip(AXES, b.position, strict=False):
                 eqs[f"{axis}_{b.name}"] = value
             if isinstance(b, RigidBody):
-                eqs[f"phi_{b.name}"] = sp.sympify(b.angle)
+                eqs[f"phi_{b.name}"] = b.angle
         return eqs
 
     @cached_property
@@ -297,8 +307,7 @@ class SceneVariant:
         """Every holonomic constraint f(x, y, z, t) = 0 with a short description: the declared
         ones, then planarity (z = 0 for 2-D point masses; z = 0 and no tilt for rigid bodies)."""
         declared = tuple(
-            ("declared", sp.sympify(f))
-            for f in self.scene.constraints(self.namespace, self.cartesian)
+            ("declared", as_expr(f)) for f in self.scene.constraints(self.namespace, self.cartesian)
         )
         implied = []
         for b in self.bodies:
@@ -322,7 +331,7 @@ class SceneVariant:
             for axis, value in zip(AXES, position, strict=True):
                 subs[getattr(c, axis)] = value
             if isinstance(b, RigidBody):
-                subs[c.phi] = sp.sympify(b.angle)
+                subs[c.phi] = b.angle
         return subs
 
     def validate(self) -> None:
@@ -342,13 +351,13 @@ class SceneVariant:
                 else []
             ):
                 for x in expr:
-                    free = sp.sympify(x).free_symbols
+                    free = x.free_symbols
                     used |= free
                     for s in sorted(free - known, key=str):
                         problems.append(
                             f"bodies: {b.name}.{label} uses {s}, which is not a declared parameter"
                         )
-        V = sp.sympify(self.scene.potential(self.namespace, self.bodies))
+        V = self.potential_energy
         used |= V.free_symbols
         for s in sorted(V.free_symbols - known, key=str):
             problems.append(f"potential: uses {s}, which is not a declared parameter")
@@ -406,7 +415,7 @@ class SceneVariant:
     @cached_property
     def potential_energy(self) -> sp.Expr:
         """V as declared (a generalized potential may depend on velocities)."""
-        return sp.expand(sp.sympify(self.scene.potential(self.namespace, self.bodies)))
+        return sp.expand(as_expr(self.scene.potential(self.namespace, self.bodies)))
 
     @cached_property
     def lagrangian(self) -> sp.Expr:
@@ -438,7 +447,7 @@ class SceneVariant:
     @cached_property
     def quantities(self) -> dict[str, sp.Expr]:
         """The scene's numeric follow-ups as closed forms in the parameters."""
-        return {q.name: sp.sympify(q.expr(self.namespace)) for q in self.scene.quantities}
+        return {q.name: as_expr(q.expr(self.namespace)) for q in self.scene.quantities}
 
     @cached_property
     def numeric_values(self) -> dict[sp.Symbol, sp.Expr]:
@@ -452,6 +461,15 @@ class SceneVariant:
         """The problem text with this variant's coordinate names and option words filled in."""
         fill = {c: self.names[c] for c in self.scene.coordinates} | dict(self.options)
         return self.scene.statement.format(**fill)
+
+
+def _normalized(body: Body) -> Body:
+    """A declared body with every field a sympy expression (positions, mass, inertia, angle)."""
+    fields = {**body.__dict__, "position": tuple(as_expr(x) for x in body.position)}
+    fields["mass"] = as_expr(body.mass)
+    if isinstance(body, RigidBody):
+        fields["inertia"], fields["angle"] = as_expr(body.inertia), as_expr(body.angle)
+    return type(body)(**fields)
 
 
 def _tidy(expr: sp.Expr) -> sp.Expr:
