@@ -25,4 +25,4 @@ def test_text_in_a_declaration_is_refused_not_evaluated():
         potential=lambda s, b: 0,
     )
     with pytest.raises(TypeError, match="sympy expressions or numbers"):
-        scene.default.bodies
+        _ = scene.default.bodies
