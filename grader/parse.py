@@ -29,6 +29,7 @@ import sympy as sp
 from problem_bank import mechanics
 from problem_bank.domains import Domain
 
+from .echo import echo as _echo
 from .errors import ParseError, RequestError
 from .latex import translate
 from .lexer import Source, Token, normalise, read_number, tokenize
@@ -248,6 +249,7 @@ class Parsed:
     rhs: sp.Expr | None
     symbols: frozenset[str]
     warnings: tuple[str, ...] = ()
+    echo: str = ""  # the plain reading, written from the parse tree (see grader.echo)
 
     @property
     def expr(self) -> sp.Expr:
@@ -259,7 +261,10 @@ class Parsed:
         return self.rhs is not None
 
     def plain(self) -> str:
-        """Echo with explicit * and ^, e.g. 'R^2*m*theta_ddot - R*g*m*sin(theta) = 0'."""
+        """Echo with explicit * and ^ in the student's order, e.g.
+        'm*R^2*theta_ddot - m*g*R*sin(theta) = 0'."""
+        if self.echo:
+            return self.echo
         from .preview import render_plain
 
         if self.rhs is None:
@@ -958,7 +963,12 @@ def _parse_source(src: Source, vocabulary: Vocabulary, latex: bool | None, mode:
         if side is not None and side.has(*_BAD_VALUES):
             start, end = (node.start, node.end) if node is not None else (0, len(src.text))
             src.fail(_NOT_FINITE, start, end)
-    return Parsed(src.original, lhs, rhs, frozenset(parser.found), tuple(parser.warnings))
+    shown = _echo(lhs_node, src.text)
+    if rhs is not None:
+        shown += " = " + (_echo(rhs_node, src.text) if rhs_node is not None else "0")
+    return Parsed(
+        src.original, lhs, rhs, frozenset(parser.found), tuple(parser.warnings), shown
+    )
 
 
 def _guarded(src: Source, vocabulary: Vocabulary, latex: bool | None, mode: str) -> Parsed:

@@ -10,7 +10,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from grader.errors import ParseError
-from grader.parse import Vocabulary, parse_answer, parse_expression
+from grader.parse import MAX_LENGTH, Vocabulary, parse_answer, parse_expression
 from problem_bank.mechanics import jet, t
 
 VOCAB = Vocabulary.from_names(["theta", "x_M"], ["m", "g", "R", "omega"], ["L"])
@@ -138,6 +138,16 @@ def _round_trip(tree, text: str, latex_mode: bool | None) -> None:
         raise AssertionError(f"{text!r} should have been refused")
     parsed = parse_expression(text, VOCAB, latex=latex_mode)
     assert _same(parsed.lhs, expected), (text, parsed.lhs, expected)
+    _echo_reads_back(parsed)
+
+
+def _echo_reads_back(parsed) -> None:
+    """The plain echo, typed back in, is read as the very same expression."""
+    echo = parsed.plain()
+    if len(echo) > MAX_LENGTH:  # explicit * and brackets can push a long answer over the limit
+        return
+    again = parse_answer(echo, VOCAB, latex=False)
+    assert (again.lhs, again.rhs) == (parsed.lhs, parsed.rhs), (parsed.source, echo)
 
 
 ROUND_TRIP = settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow])
@@ -175,16 +185,21 @@ INTERNAL = "Could not read this answer (internal error)."
 
 def _bounded(text: str) -> None:
     best = float("inf")
-    for _ in range(3):  # the machine is shared: a single slow run may be someone else's load
+    for attempt in range(3):  # the machine is shared: a single slow run may be someone else's load
         start = time.perf_counter()
         try:
-            parse_answer(text, VOCAB)
+            parsed = parse_answer(text, VOCAB)
         except ParseError as error:
             assert error.message != INTERNAL, (text, error.__context__)
             assert isinstance(error.span, tuple) and 0 <= error.span[0] <= error.span[1] <= len(
                 text
             )
             str(error)
+        else:
+            if attempt == 0:
+                elapsed = time.perf_counter() - start
+                _echo_reads_back(parsed)
+                start = time.perf_counter() - elapsed  # the check is not part of the parse time
         best = min(best, time.perf_counter() - start)
         if best < LIMIT_SECONDS:
             return

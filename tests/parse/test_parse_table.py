@@ -461,7 +461,7 @@ def test_parse_equation_reads_a_bare_expression_as_equal_to_zero() -> None:
     parsed = parse_equation("m x_ddot + k x", VOCAB)
     assert parsed.rhs == 0 and parsed.is_equation
     assert parsed.expr == s.m * s.x_ddot + s.k * s.x
-    assert parsed.plain() == "k*x + m*x_ddot = 0"
+    assert parsed.plain() == "m*x_ddot + k*x = 0"
 
 
 def test_parse_answer_keeps_an_expression_an_expression() -> None:
@@ -500,7 +500,25 @@ def test_symbols_found() -> None:
 
 def test_plain_echo_has_explicit_operators() -> None:
     parsed = parse_equation("m R^2 thetaddot - m g R sin theta = 0", VOCAB)
-    assert parsed.plain() == "R^2*m*theta_ddot - R*g*m*sin(theta) = 0"
+    assert parsed.plain() == "m*R^2*theta_ddot - m*g*R*sin(theta) = 0"
+
+
+@pytest.mark.parametrize(
+    ("text", "echo"),
+    [
+        ("1/2 m x_dot^2", "1/2*m*x_dot^2"),  # an integer fraction, then the factors it multiplies
+        ("(g/R) sin θ", "(g/R)*sin(theta)"),  # the grouping the student chose stays visible
+        (r"\frac{1}{2} m \dot{\theta}^2", "(1/2)*m*theta_dot^2"),
+        ("x^-1 + sin^2(theta)", "x^(-1) + sin(theta)^2"),
+        ("2^3^2", "2^(3^2)"),  # right-associative, shown
+        ("m*-g - -(m + M) g", "m*(-g) - -(m + M)*g"),
+        ("9.81e-3 m / (R g) / R^2", "9.81e-3*m/(R*g)/R^2"),  # numbers as written
+        ("diff(theta, t) + theta'' ", "theta_dot + theta_ddot"),
+    ],
+)
+def test_plain_echo_shows_the_reading_in_the_students_order(text: str, echo: str) -> None:
+    vocabulary = VOCAB if "'" not in text else PRIMED
+    assert parse_answer(text, vocabulary).plain() == echo
 
 
 def test_latex_echo_has_dots_and_cdots() -> None:

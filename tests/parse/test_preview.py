@@ -9,7 +9,7 @@ def test_preview_of_a_good_answer() -> None:
     status, text = preview_command("1/2 m R^2 thetadot^2", ["theta", "phi"], ["m", "R"], None)
     assert status == 0
     assert text.splitlines() == [
-        "Interpreted as: R^2*m*theta_dot^2/2",
+        "Interpreted as: 1/2*m*R^2*theta_dot^2",
         "LaTeX:          \\frac{R^{2} \\cdot m \\cdot \\dot{\\theta}^{2}}{2}",
         "Symbols found:  R, m, theta_dot",
         "Warning: the coordinate phi does not appear (nor its velocity).",

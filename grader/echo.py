@@ -1,0 +1,90 @@
+"""The plain "interpreted as" echo, written from the parser's own tree: the student's terms in the
+student's order, with every product made explicit (`*`), powers as `^`, and brackets exactly
+where the reading needs them — `1/2 m x_dot^2` echoes `1/2*m*x_dot^2`, `(g/R) sin θ` echoes
+`g/R*sin(theta)`, `θ̇` echoes `theta_dot`.
+
+Why from the tree and not from sympy: the echo exists so that a student can check how the text
+was read, which sympy's reordered, simplified printout hides; and printing a sympy tree costs
+about half a millisecond per answer, more than judging it. The echo reads back to the same
+expression (a property test checks this).
+"""
+
+from __future__ import annotations
+
+import re
+from typing import Any
+
+# Binding strength: a sub-expression is bracketed when it binds more loosely than its place needs.
+_SUM, _PRODUCT, _SIGNED, _POWER, _ATOM = range(5)
+_DECIMAL = re.compile(r"\d+\.?\d*(?:[eE][+-]?\d+)?|\.\d+(?:[eE][+-]?\d+)?")
+
+
+def echo(node: Any, text: str) -> str:
+    """The plain echo of one parsed side (a `parse.Node`); `text` is the text it was read from."""
+    return _render(node, text)[0]
+
+
+def _render(node: Any, text: str) -> tuple[str, int]:
+    """(text, binding strength) of a node."""
+    kind = node.kind
+    if kind == "sym":
+        return node.value.name, _ATOM
+    if kind == "pi":
+        return "pi", _ATOM
+    if kind == "num":
+        return _number(node, text)
+    if kind == "add":
+        return _sum(node.value, text), _SUM
+    if kind == "mul":
+        return _product(node.value, text), _PRODUCT
+    if kind == "neg":
+        return "-" + _at_least(node.value, text, _PRODUCT), _SIGNED
+    if kind == "pow":
+        base = _at_least(node.value, text, _ATOM)
+        exponent = _at_least(node.extra, text, _ATOM)
+        return f"{base}^{exponent}", _POWER
+    if kind == "call":
+        argument, power = node.extra
+        call = f"{node.value}({_render(argument, text)[0]})"
+        return (f"{call}^{power}", _POWER) if power is not None else (call, _ATOM)
+    raise AssertionError(f"unknown node kind {kind!r}")
+
+
+def _at_least(node: Any, text: str, strength: int) -> str:
+    shown, own = _render(node, text)
+    return shown if own >= strength else f"({shown})"
+
+
+def _number(node: Any, text: str) -> tuple[str, int]:
+    """A number as written (9.81, 1.6e-19), or p/q when the text is not a plain number."""
+    p, q = node.value
+    if q == 1:
+        return str(p), _ATOM
+    written = text[node.start : node.end].strip("() \t")
+    if _DECIMAL.fullmatch(written):
+        return written, _ATOM
+    return f"{p}/{q}", _PRODUCT
+
+
+def _sum(terms: list, text: str) -> str:
+    pieces = []
+    for k, term in enumerate(terms):
+        if term.kind == "neg":
+            inner = _at_least(term.value, text, _PRODUCT)
+            pieces.append(f"-{inner}" if k == 0 else f" - {inner}")
+        else:
+            shown = _render(term, text)[0]
+            pieces.append(shown if k == 0 else f" + {shown}")
+    return "".join(pieces)
+
+
+def _product(factors: list, text: str) -> str:
+    pieces = []
+    for k, factor in enumerate(factors):
+        if factor.kind == "inv":
+            pieces.append("/" + _at_least(factor.value, text, _POWER))
+        elif k == 0:
+            pieces.append(_at_least(factor, text, _SIGNED))
+        else:
+            pieces.append("*" + _at_least(factor, text, _POWER))
+    return "".join(pieces)
