@@ -966,9 +966,7 @@ def _parse_source(src: Source, vocabulary: Vocabulary, latex: bool | None, mode:
     shown = _echo(lhs_node, src.text)
     if rhs is not None:
         shown += " = " + (_echo(rhs_node, src.text) if rhs_node is not None else "0")
-    return Parsed(
-        src.original, lhs, rhs, frozenset(parser.found), tuple(parser.warnings), shown
-    )
+    return Parsed(src.original, lhs, rhs, frozenset(parser.found), tuple(parser.warnings), shown)
 
 
 def _guarded(src: Source, vocabulary: Vocabulary, latex: bool | None, mode: str) -> Parsed:
