@@ -34,6 +34,7 @@ from .equivalence import (
     Compiled,
     Outcome,
     Points,
+    affine_match,
     coordinate_range,
     decide,
     differ_by_constant,
@@ -138,7 +139,12 @@ def read(problem: Problem, item: Any, labels: Sequence[str] = (), mode: str = "a
         "equation": p.parse_equation,
         "expression": p.parse_expression,
     }
-    parsed = parse[mode](item, vocab)
+    return _read_parsed(problem, parse[mode](item, vocab))
+
+
+def _read_parsed(problem: Problem, parsed) -> Read:
+    if problem.parser_symbols_are_mine:
+        return Read(parsed.lhs, parsed.rhs, parsed.plain())
     rhs = None if parsed.rhs is None else problem.canonical(parsed.rhs)
     return Read(problem.canonical(parsed.lhs), rhs, parsed.plain())
 
@@ -176,10 +182,13 @@ def _free(problem: Problem, *exprs: sp.Expr) -> frozenset[sp.Symbol]:
     while writing its handout value as a number (`m 9.81 q` for m g q): that one keeps the
     value. A parameter that is merely missing is never pinned — with SI values (e = 1.6e-19 C)
     a dropped term would be 1e-19 of the rest and slip through any tolerance."""
+    if not problem.values:  # no handout numbers: nothing can be pinned
+        return frozenset(problem.domains)
     syms = set().union(*(e.free_symbols for e in exprs)) if exprs else set()
     numbers = [abs(float(n)) for e in exprs for n in e.atoms(sp.Number) if n != 0]
     pinned = {
-        s for s, value in problem.values.items()
+        s
+        for s, value in problem.values.items()
         if s not in syms
         and value
         and any(abs(n - abs(value)) <= 1e-3 * abs(value) for n in numbers)
@@ -391,6 +400,10 @@ def judge_lagrangian(
     """(status, score, feedback, outcome, points, mistakes) for a Lagrangian answer."""
     answer = Compiled.of(expr)
     points = problem.points("lagrangian", _free(problem, expr))
+    fast = _affine_to_reference(problem, answer, points)
+    if fast is not None:  # c (T − V) + k: the same motion, settled by values alone
+        notes = _factor_notes(fast.factor) + ([_CONSTANT_NOTE] if fast.shifted else [])
+        return ("correct", 1.0, notes, Outcome(True, "numeric", fast.worst), points, ())
     match = lagrangians_match(answer, _reference_el(problem, points), problem.jets, points)
     out = match.outcome
     factors = np.array(match.factors)
@@ -457,20 +470,42 @@ def _sentence(text: str) -> str:
     return text if text.endswith(".") else text + "."
 
 
-def _same_dynamics_notes(problem: Problem, answer: Compiled, match, points: Points) -> list[str]:
-    """Name how a right L differs from T − V: a constant, dF/dt, a global factor."""
-    notes = []
-    c = match.factor
+_CONSTANT_NOTE = (
+    "Your L differs from T − V by a constant (for example m g h, another zero "
+    "level of V); that does not change the motion."
+)
+
+
+def _affine_to_reference(problem: Problem, answer: Compiled, points: Points):
+    """answer = c (T − V) + k at the points (see `affine_match`), or None."""
+    if answer.symbols & {j.ddot for j in problem.jets}:
+        return None
+    try:
+        with np.errstate(all="ignore"):
+            values = answer.values(points.env)
+    except (UnsupportedExpression, ValueError, ZeroDivisionError, OverflowError):
+        return None
+    reference = problem.cached("L values", points, lambda: problem.L.values(points.env))
+    return affine_match(values, reference, points)
+
+
+def _factor_notes(c: float | None) -> list[str]:
     if c is None:
-        notes.append(
+        return [
             "Your L is T − V times a factor that depends on the parameters; that gives "
             "the same motion."
-        )
-    elif abs(c - 1) > 1e-9:
-        notes.append(
+        ]
+    if abs(c - 1) > 1e-9:
+        return [
             f"Your L is {_ratio_text(c)} × (T − V); a constant factor gives the same "
             "equations of motion."
-        )
+        ]
+    return []
+
+
+def _same_dynamics_notes(problem: Problem, answer: Compiled, match, points: Points) -> list[str]:
+    """Name how a right L differs from T − V: a constant, dF/dt, a global factor."""
+    notes = _factor_notes(match.factor)
     with np.errstate(all="ignore"):
         a, sa = answer.values(points.env)
         b, sb = problem.L.values(points.env)
@@ -481,10 +516,7 @@ def _same_dynamics_notes(problem: Problem, answer: Compiled, match, points: Poin
         return notes
     starts = np.searchsorted(points.group, points.group)
     if np.all(np.abs(d - d[starts]) <= 1e-9 * (size + np.abs(d[starts]))):
-        notes.append(
-            "Your L differs from T − V by a constant (for example m g h, another zero "
-            "level of V); that does not change the motion."
-        )
+        notes.append(_CONSTANT_NOTE)
     else:
         notes.append(
             "Your L differs from T − V by a total time derivative dF/dt; that gives the "
@@ -585,9 +617,7 @@ def check_eom(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
     for item in items:
         if isinstance(item, str):
             for parsed in parser().parse_equations(item, problem.vocabulary()):
-                lhs = problem.canonical(parsed.lhs)
-                rhs = None if parsed.rhs is None else problem.canonical(parsed.rhs)
-                reads.append(Read(lhs, rhs, parsed.plain()))
+                reads.append(_read_parsed(problem, parsed))
         else:
             reads.append(read(problem, item))
     echoes = [r.echo for r in reads]

@@ -427,6 +427,62 @@ class LagrangianMatch:
         return None
 
 
+@dataclass(frozen=True)
+class AffineMatch:
+    """answer = c·reference + k identically, with c and k per parameter group."""
+
+    factors: tuple[float, ...]
+    shifted: bool  # k ≠ 0 somewhere: the answer differs by a constant
+    worst: float  # the largest ratio of residual to term size
+
+    @property
+    def factor(self) -> float | None:
+        """The common factor c when all groups agree, else None."""
+        c0 = self.factors[0]
+        if all(abs(c - c0) <= 1e-8 * max(1.0, abs(c0)) for c in self.factors):
+            return c0
+        return None
+
+
+def affine_match(
+    answer: tuple[np.ndarray, np.ndarray],
+    reference: tuple[np.ndarray, np.ndarray],
+    points: Points,
+) -> AffineMatch | None:
+    """Is answer = c·reference + k, with c > 0 and k constant in each parameter group? Given
+    (value, size) of both at the points. Only a clear yes is returned (residual below
+    EQUAL_BELOW of the terms everywhere); anything else is None, for the full test to decide.
+
+    Why: a Lagrangian that is a positive multiple of T − V plus a constant has the same motion,
+    and comparing values costs a fraction of evaluating Euler–Lagrange expressions — most right
+    answers (expanded, factored, rewritten with identities, m g h dropped) are settled here."""
+    n = points.n
+    with np.errstate(all="ignore"):
+        a, sa = (np.broadcast_to(np.asarray(x, float), (n,)) for x in answer)
+        b, sb = (np.broadcast_to(np.asarray(x, float), (n,)) for x in reference)
+        group = points.group
+        count = np.bincount(group)
+        mean_a = (np.bincount(group, a) / count)[group]
+        mean_b = (np.bincount(group, b) / count)[group]
+        da, db = a - mean_a, b - mean_b
+        spread = np.bincount(group, db * db)
+        c = np.bincount(group, da * db) / spread
+        if not (np.all(np.isfinite(c)) and np.all(c > 0)):
+            return None
+        k = mean_a - c[group] * mean_b
+        residual = da - c[group] * db
+        size = sa + c[group] * sb + np.abs(k)
+        ratio = np.abs(residual) / size
+        # both must vary with the motion well above rounding, or c means nothing (a constant L)
+        varies = (spread > 1e-12 * np.bincount(group, sb * sb)) & (
+            np.bincount(group, da * da) > 1e-12 * np.bincount(group, sa * sa)
+        )
+    if not (np.all(ratio < EQUAL_BELOW) and np.all(varies)):
+        return None
+    shifted = bool(np.any(np.abs(k) > 1e-9 * size))
+    return AffineMatch(tuple(float(x) for x in c), shifted, float(ratio.max()))
+
+
 def lagrangians_match(
     answer: Compiled, reference: Compiled | Callable, jets: Sequence[Jet], points: Points
 ) -> LagrangianMatch:

@@ -71,8 +71,20 @@ class Problem:
         return names | {"t": t}
 
     def vocabulary(self, labels: Sequence[str] = ()):
-        """The parser's vocabulary for this question, with extra allowed names `labels`."""
-        return parser().Vocabulary(self.coordinates, dict(self.parameters), tuple(labels))
+        """The parser's vocabulary for this question, with extra allowed names `labels` (one
+        per set of labels: its lexicon is built once, not per answer)."""
+        key = tuple(labels)
+        cache = self.__dict__.setdefault("_vocabularies", {})
+        if key not in cache:
+            cache[key] = parser().Vocabulary(self.coordinates, dict(self.parameters), key)
+        return cache[key]
+
+    @cached_property
+    def parser_symbols_are_mine(self) -> bool:
+        """The parser reads every name as this problem's own symbol, so its output needs no
+        `canonical` pass."""
+        table = self.vocabulary()._lexicon.table
+        return all(table[n].value is s for n, s in self.by_name.items() if n in table)
 
     def canonical(self, expr: sp.Expr) -> sp.Expr:
         """expr with every symbol replaced by this problem's symbol of the same name (the parser
