@@ -11,6 +11,7 @@ import sympy as sp
 from grader.equivalence import (
     Compiled,
     Space,
+    affine_match,
     decide,
     equation_rows,
     euler_lagrange_values,
@@ -150,6 +151,39 @@ def test_lagrangians_match_up_to_factor_constant_and_total_derivative(pend, fact
     assert match.outcome.equal is equal
     if equal:
         assert match.factor == pytest.approx(factor)
+
+
+@pytest.mark.parametrize(
+    "factor, extra, shifted",
+    [(1, 0, False), (3, 0, False), (sp.Rational(1, 2), 7, True), (1, -m * g * l, True)],
+)
+def test_affine_match_settles_a_positive_multiple_plus_a_constant(pend, factor, extra, shifted):
+    space, L, points = pend
+    answer = Compiled.of(factor * sp.expand(L) + extra).values(points.env)
+    found = affine_match(answer, Compiled.of(L).values(points.env), points)
+    assert found is not None and found.factor == pytest.approx(float(factor))
+    assert found.shifted is shifted and found.worst < 1e-12
+
+
+@pytest.mark.parametrize(
+    "other",
+    [
+        lambda L: -L,  # V − T: same motion, wrong convention — for the full test to say so
+        lambda L: L + sp.cos(th.q) * th.dot * m,  # + dF/dt: same motion, values differ
+        lambda L: L + th.q * th.dot**2 * m,  # different motion
+        lambda L: sp.sin(th.q) ** 2 + sp.cos(th.q) ** 2,  # a constant with rounding noise
+        lambda L: L * (1 + 1e-7),  # close, but not within the tolerance of the terms
+        lambda L: L + 1e-6 * m * th.q,
+    ],
+)
+def test_affine_match_says_yes_or_nothing(pend, other):
+    """The fast path only ever accepts; every other case goes to the Euler–Lagrange test."""
+    space, L, points = pend
+    answer = Compiled.of(other(L)).values(points.env)
+    found = affine_match(answer, Compiled.of(L).values(points.env), points)
+    if found is not None:  # only L·(1 + 1e-7) may be a true multiple, and it is one
+        assert other(L) == L * (1 + 1e-7)
+        assert lagrangians_match(Compiled.of(other(L)), Compiled.of(L), (th,), points).outcome.equal
 
 
 def test_factor_depending_on_parameters_is_per_group(pend):
