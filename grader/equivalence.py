@@ -347,6 +347,26 @@ def values_equal(answer: Compiled, values: Callable[[object], tuple], points: Po
 # --- Euler–Lagrange expressions, numerically ------------------------------------------------------
 
 
+_MEMO: dict = {}
+_MEMO_SIZE = 256
+
+
+def _memo_inputs(kind: str, env: Mapping, jets: Sequence[Jet], make: Callable[[], dict]) -> dict:
+    """Inputs derived from the sample points alone (tiled copies, hyper-dual seeds), built once
+    per points instead of once per answer. float64 only; the entry holds `env` itself, so an
+    id is never mistaken for another's. Sample points never change once drawn; an env that
+    did would be served stale inputs. Callers must not modify what they get."""
+    key = (kind, id(env), tuple(jets))
+    hit = _MEMO.get(key)
+    if hit is not None and hit[0] is env:
+        return hit[1]
+    value = make()
+    if len(_MEMO) >= _MEMO_SIZE:
+        _MEMO.clear()
+    _MEMO[key] = (env, value)
+    return value
+
+
 def _tile(x, copies: int, n: int, backend):
     return np.tile(_broadcast(x, n, backend), copies)
 
@@ -369,32 +389,14 @@ def euler_lagrange_values(L: Compiled, jets: Sequence[Jet], env: Mapping, backen
     n_pts = len(next(iter(env.values())))
     n = len(jets)
     copies = 2 * n
-    hd: dict = {}
-    zero = 0
-    for s in L.symbols:
-        if s in env:
-            hd[s] = (_tile(env[s], copies, n_pts, backend), zero, zero, zero)
     for j in jets:
         if j.ddot in L.symbols:
             raise ValueError("a Lagrangian must not contain accelerations")
-    for k, j in enumerate(jets):
-        if j.q in L.symbols:
-            hd[j.q] = (
-                _tile(env[j.q], copies, n_pts, backend),
-                _tile(env[j.dot], copies, n_pts, backend),
-                _unit_blocks(copies, n_pts, n + k, backend),
-                zero,
-            )
-        if j.dot in L.symbols:
-            hd[j.dot] = (
-                _tile(env[j.dot], copies, n_pts, backend),
-                _tile(env[j.ddot], copies, n_pts, backend),
-                _unit_blocks(copies, n_pts, k, backend),
-                zero,
-            )
-    if t in L.symbols:
-        hd[t] = (_tile(env[t], copies, n_pts, backend), 1, zero, zero)
-    terms = L.hyperdual(hd, backend)
+    if backend is FLOAT:
+        seeds = _memo_inputs("el", env, jets, lambda: _el_seeds(jets, env, env, backend))
+    else:
+        seeds = _el_seeds(jets, env, L.symbols, backend)
+    terms = L.hyperdual({s: seeds[s] for s in L.symbols if s in seeds}, backend)
     dtype = float if backend is FLOAT else object
     E = np.zeros((n_pts, n), dtype=dtype)
     S = np.zeros((n_pts, n), dtype=dtype)
@@ -407,6 +409,35 @@ def euler_lagrange_values(L: Compiled, jets: Sequence[Jet], env: Mapping, backen
             E[:, k] = E[:, k] + dk - ck
             S[:, k] = S[:, k] + abs(dk) + abs(ck)
     return E, S
+
+
+def _el_seeds(jets: Sequence[Jet], env: Mapping, wanted, backend) -> dict:
+    """Hyper-dual inputs of the symbols in `wanted` for `euler_lagrange_values`."""
+    n_pts = len(next(iter(env.values())))
+    n = len(jets)
+    copies = 2 * n
+    seeds: dict = {}
+    for s in wanted:
+        if s in env:
+            seeds[s] = (_tile(env[s], copies, n_pts, backend), 0, 0, 0)
+    for k, j in enumerate(jets):
+        if j.q in wanted:
+            seeds[j.q] = (
+                _tile(env[j.q], copies, n_pts, backend),
+                _tile(env[j.dot], copies, n_pts, backend),
+                _unit_blocks(copies, n_pts, n + k, backend),
+                0,
+            )
+        if j.dot in wanted:
+            seeds[j.dot] = (
+                _tile(env[j.dot], copies, n_pts, backend),
+                _tile(env[j.ddot], copies, n_pts, backend),
+                _unit_blocks(copies, n_pts, k, backend),
+                0,
+            )
+    if t in wanted:
+        seeds[t] = (_tile(env[t], copies, n_pts, backend), 1, 0, 0)
+    return seeds
 
 
 @dataclass(frozen=True)
@@ -532,6 +563,12 @@ class Rows:
 
 def acceleration_blocks(jets: Sequence[Jet], env: Mapping, backend=FLOAT) -> dict:
     """env repeated n + 2 times with q̈ = 0, e_1, …, e_n, and the drawn q̈."""
+    if backend is FLOAT:
+        return _memo_inputs("blocks", env, jets, lambda: _acceleration_blocks(jets, env, FLOAT))
+    return _acceleration_blocks(jets, env, backend)
+
+
+def _acceleration_blocks(jets: Sequence[Jet], env: Mapping, backend) -> dict:
     n_pts = len(next(iter(env.values())))
     n = len(jets)
     copies = n + 2
