@@ -172,7 +172,10 @@ class Points:
     def point(self, i: int, symbols: Iterable[sp.Symbol] | None = None) -> dict[str, float]:
         """Point i as {name: value} (the witness of a difference), for the named symbols."""
         keep = self.env if symbols is None else [s for s in symbols if s in self.env]
-        return {str(s): float(f"{float(self.env[s][i]):.6g}") for s in sorted(keep, key=str)}
+        names = {s: s.name for s in keep}  # not str(s): sympy's printer is slow
+        return {
+            names[s]: float(f"{float(self.env[s][i]):.6g}") for s in sorted(keep, key=names.get)
+        }
 
 
 # --- the decision -------------------------------------------------------------------------------
