@@ -1111,13 +1111,15 @@ def check_expression(problem: Problem, answer: Any, given: Mapping | None) -> Ve
     got = _read_single(problem, answer, "expression", "x")
     ref = problem.reference_expression
     ans = Compiled.of(got.expr)
+    # The default decision (docs/methods.csv): exact where possible, bounded floats otherwise;
+    # the numeric hybrid decides only what that method cannot reach, and finds witnesses.
+    decided = ExactThenAdaptive().decide(got.expr, ref.expr, _domains_for(problem))
+    if decided:
+        return Verdict("expression", "correct", 1.0, (), got.echo, "exact_then_adaptive")
     points = problem.points("expression", _free(problem, got.expr))
     out = expressions_equal(ans, ref, points)
-    # The default decision (docs/methods.csv): exact where possible, bounded floats otherwise;
-    # the numeric hybrid above decides only what that method cannot reach, and gives witnesses.
-    decided = ExactThenAdaptive().decide(got.expr, ref.expr, _domains_for(problem))
     if decided is not None:
-        out = Outcome(decided, "exact_then_adaptive", out.worst, out.where if not decided else None)
+        out = Outcome(False, "exact_then_adaptive", out.worst, out.where)
     if out.equal:
         return Verdict("expression", "correct", 1.0, (), got.echo, _method(out))
     feedback, mistakes = [], ()
@@ -1142,7 +1144,7 @@ def check_expression(problem: Problem, answer: Any, given: Mapping | None) -> Ve
         0.0,
         tuple(feedback),
         got.echo,
-        _method(out),
+        out.method if decided is not None else _method(out),
         witness=w,
         mistakes=mistakes,
     )
