@@ -91,21 +91,12 @@ def prepare(problem: Problem, part: str) -> None:
         _ = system.euler_lagrange
         if part in ("lagrangian", "momenta", "eom", "conserved", "T", "V", "transformation"):
             problem.points(part)
-        cat = problem.catalogue
-        if part == "lagrangian":
-            _ = cat.lagrangian_mutants
-        elif part == "T" and problem.variant is not None:
-            _ = cat.kinetic_mutants
-        elif part == "V" and problem.variant is not None:
-            _ = cat.potential_mutants
-        elif part == "momenta":
-            for k in range(len(problem.jets)):
-                cat.momentum_mutants(k)
-        elif part == "eom":
-            _ = cat.row_mutants
-        elif part == "conserved":
+        if part == "conserved":
             _ = system.conserved_quantities
-            _ = cat.conserved_mutants
+        if part in ("lagrangian", "momenta", "eom", "conserved") or (
+            part in ("T", "V") and problem.variant is not None
+        ):  # the mistake catalogue, evaluated at the part's points
+            problem.catalogue.warm(part, problem.points(part))
     _prepared.add(key)
 
 

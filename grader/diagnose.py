@@ -12,10 +12,11 @@ Mutations that do not change what is judged (dropping the constant m g h from L)
 
 from __future__ import annotations
 
+import operator
 from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass
 from functools import cached_property
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 import sympy as sp
@@ -25,7 +26,6 @@ from problem_bank.mechanics import Jet, LagrangianSystem
 from .equivalence import (
     Compiled,
     Points,
-    _in_span_float,
     equation_rows,
     euler_lagrange_values,
     in_span,
@@ -154,6 +154,30 @@ def kinetic_mutants(T: sp.Expr, jets: Sequence[Jet], what: str) -> list[Mutant]:
                 )
             )
     return out
+
+
+# What a mutant may raise when it is compiled or evaluated: such a mutant is never matched.
+_SKIPPED = (UnsupportedExpression, ValueError, ZeroDivisionError, np.linalg.LinAlgError)
+
+
+@dataclass(frozen=True)
+class _Stack:
+    """Arrays of the candidates that evaluate at one set of points, one leading row each
+    (`index`: the row's position among the candidates), to test all candidates at once."""
+
+    candidates: tuple  # held, so that the id in the cache key stays theirs
+    index: np.ndarray
+    arrays: tuple
+
+    def of(self, candidates: Sequence) -> bool:
+        return len(candidates) == len(self.candidates) and all(
+            map(operator.is_, candidates, self.candidates)
+        )
+
+    def first(self, ok: np.ndarray):
+        """The first candidate whose row passed, in the candidates' order."""
+        hits = np.flatnonzero(ok)
+        return self.candidates[self.index[hits[0]]] if hits.size else None
 
 
 @dataclass(frozen=True)
@@ -370,97 +394,187 @@ class Catalogue:
         return out
 
     # --- matching ---------------------------------------------------------------------------------
+    # A wrong answer is tested against every mutant of its part, so each match tests all of
+    # them at once: the mutants' values at the points are stacked once per set of points, and
+    # a few array operations per answer find the first mutant that matches (the catalogue's
+    # order puts the most specific first). The tests are those of the one-at-a-time loop.
+
     def match_lagrangian(self, answer: Compiled, points: Points) -> Mutant | None:
         """The mutant with E(answer) = c E(mutant), c ≠ 0 per parameter group (float64 only:
         a diagnosis names a likely mistake, the verdict is decided elsewhere)."""
         Ea, Sa = euler_lagrange_values(answer, self.problem.jets, points.env)
-
-        def test(m: Mutant) -> bool:
-            Eb, Sb = self._el_values(self._compiled(m), points)
-            r, size = np.empty_like(Ea), np.empty_like(Ea)
-            for g in np.unique(points.group):
-                rows = points.group == g
-                den = float(np.sum(Eb[rows] ** 2))
-                if den == 0:
-                    return False
-                c = float(np.sum(Ea[rows] * Eb[rows])) / den
-                if abs(c) < 1e-9:
-                    return False
-                r[rows] = Ea[rows] - c * Eb[rows]
-                size[rows] = Sa[rows] + abs(c) * Sb[rows]
-            return _vanishes(r, size)
-
-        return self._first(self.lagrangian_mutants, test)
+        stack = self._el_stack(points)
+        if stack is None:
+            return None
+        Eb, Sb, den, in_group, group_of = stack.arrays
+        with np.errstate(all="ignore"):
+            # least-squares c per mutant and group; a non-finite value leaves c or r non-finite
+            # for that mutant only (rows are independent), so it does not match, as before
+            c = np.einsum("mpk,pk->mp", Eb, Ea) @ in_group / den  # (mutants, groups)
+            ok = np.all((den != 0) & (np.abs(c) >= 1e-9), axis=1)
+            c = c[:, group_of, None]  # per point: (mutants, points, 1)
+            ok &= _vanish_rows(Ea - c * Eb, Sa + np.abs(c) * Sb)
+        return stack.first(ok)
 
     def match_plain(
         self, mutants: Sequence[Mutant], answer: Compiled, points: Points
     ) -> Mutant | None:
+        """The first mutant with the answer's values at the points."""
         a, sa = _full(answer.values(points.env), points.n)
-
-        def test(m: Mutant) -> bool:
-            b, sb = self._values(m, points)
-            return _vanishes(a - b, sa + sb)
-
-        return self._first(mutants, test)
+        stack = self._value_stack(mutants, points)
+        if stack is None:
+            return None
+        b, sb = stack.arrays
+        with np.errstate(all="ignore"):
+            return stack.first(_vanish_rows(a - b, sa + sb))
 
     def match_offset(
         self, mutants: Sequence[Mutant], answer: Compiled, points: Points
     ) -> Mutant | None:
+        """The first mutant the answer equals up to a constant per parameter group (V, a
+        conserved quantity)."""
         a, sa = _full(answer.values(points.env), points.n)
+        stack = self._value_stack(mutants, points)
+        if stack is None:
+            return None
+        b, sb = stack.arrays
         starts = np.searchsorted(points.group, points.group)
-
-        def test(m: Mutant) -> bool:
-            b, sb = self._values(m, points)
+        with np.errstate(all="ignore"):
             d = a - b
-            return _vanishes(d - d[starts], sa + sb + np.abs(d[starts]))
-
-        return self._first(mutants, test)
+            return stack.first(_vanish_rows(d - d[:, starts], sa + sb + np.abs(d[:, starts])))
 
     def match_row(self, student: Compiled, points: Points) -> Mutant | None:
         """The mutation whose mutated system has the student's equation in its span."""
         p = self.problem
-        jets = p.jets
         with np.errstate(all="ignore"):
-            s = equation_rows([student], jets, points.env)
-            ref = p.cached(
-                "rows", points, lambda: equation_rows(p.euler_lagrange, jets, points.env)
-            )
+            s = equation_rows([student], p.jets, points.env)
+        stack = self._row_stack(points)
+        if stack is None:
+            return None
+        Q, rel_ref = stack.arrays
         x, xs = s.coef[:, 0, :].astype(float), s.size[:, 0].astype(float)
+        with np.errstate(all="ignore"):
+            # _in_span_float's test, its answer-independent part precomputed per mutant:
+            # x minus its projection on the mutated system's rows
+            res = x - np.einsum("mpij,mpj->mpi", Q, np.einsum("mpji,pj->mpi", Q, x))
+            r = np.linalg.norm(res, axis=2)
+            size = xs + np.linalg.norm(x, axis=1) * rel_ref
+            found = stack.first(_vanish_rows(r, size))
+        return None if found is None else found[1]
 
-        def test(pair) -> bool:
-            i, m = pair
-            rows = p.cached(
-                f"row:{id(m)}", points, lambda: equation_rows([self._compiled(m)], jets, points.env)
+    def match(self, mutants: Sequence[Mutant], test: Callable[[Compiled], bool]) -> Mutant | None:
+        """The first mutant the answer matches by `test(compiled mutant)` (a test that is not
+        a fixed array operation, so one mutant at a time)."""
+        for m in mutants:
+            try:
+                with np.errstate(all="ignore"):
+                    if test(self._compiled(m)):
+                        return m
+            except _SKIPPED:
+                continue
+        return None
+
+    def warm(self, part: str, points: Points) -> None:
+        """Build the stacks that `part`'s matching uses at `points`, so that the first wrong
+        answer to a question pays no more than the others (called when a question is prepared)."""
+        if part == "lagrangian":
+            self._el_stack(points)
+        elif part == "T":
+            self._value_stack(self.kinetic_mutants, points)
+        elif part == "V":
+            self._value_stack(self.potential_mutants, points)
+        elif part == "momenta":
+            for k in range(len(self.problem.jets)):
+                self._value_stack(self.momentum_mutants(k), points)
+        elif part == "eom":
+            self._row_stack(points)
+        elif part == "conserved":
+            self._value_stack(self.conserved_mutants, points)
+
+    # --- stacks of mutant values, per set of points ----------------------------------------------
+    def _stack(
+        self,
+        name: str,
+        candidates: Sequence,
+        points: Points,
+        evaluate: Callable[[Any], tuple[np.ndarray, ...]],
+        finish: Callable[..., tuple],
+    ) -> _Stack | None:
+        """`finish(evaluate(c) for each candidate c, stacked)`, built once per candidates and
+        points; None when no candidate evaluates. Candidates that fail to compile or evaluate
+        are left out, as the one-at-a-time loop skipped them."""
+
+        def build() -> _Stack:
+            index, rows = [], []
+            with np.errstate(all="ignore"):
+                for k, c in enumerate(candidates):
+                    try:
+                        rows.append(evaluate(c))
+                    except _SKIPPED:
+                        continue
+                    index.append(k)
+                arrays = finish(*(np.stack(a) for a in zip(*rows, strict=True))) if rows else ()
+            return _Stack(tuple(candidates), np.array(index, dtype=int), arrays)
+
+        stack = self.problem.cached(f"{name}:{id(candidates)}", points, build)
+        if not stack.of(candidates):
+            stack = build()  # the sequence changed in place since the stack was built
+        return stack if len(stack.index) else None
+
+    def _el_stack(self, points: Points) -> _Stack | None:
+        """The mutants' E and its size (mutants, points, coordinates), Σ E² per parameter
+        group (the denominator of c), and the point-to-group map."""
+
+        def finish(Eb, Sb):
+            groups, group_of = np.unique(points.group, return_inverse=True)
+            in_group = (group_of[:, None] == np.arange(len(groups))).astype(float)
+            return Eb, Sb, np.sum(Eb**2, axis=2) @ in_group, in_group, group_of
+
+        return self._stack(
+            "el-stack",
+            self.lagrangian_mutants,
+            points,
+            lambda m: self._el_values(self._compiled(m), points),
+            finish,
+        )
+
+    def _value_stack(self, mutants: Sequence[Mutant], points: Points) -> _Stack | None:
+        """The mutants' values and sizes, (mutants, points)."""
+        return self._stack(
+            "value-stack",
+            mutants,
+            points,
+            lambda m: _full(self._compiled(m).values(points.env), points.n),
+            lambda b, sb: (b, sb),
+        )
+
+    def _row_stack(self, points: Points) -> _Stack | None:
+        """Per row mutant, the reference rows with its row in place of row i, at every point,
+        reduced to what the span test of _in_span_float needs that does not depend on the
+        answer: an orthonormal basis Q (mutants, points, n + 1, rows) of the rows (the QR is
+        the costly part) and the relative size of their terms (mutants, points)."""
+        p = self.problem
+        with np.errstate(all="ignore"):
+            ref = p.cached(
+                "rows", points, lambda: equation_rows(p.euler_lagrange, p.jets, points.env)
             )
+
+        def evaluate(pair):
+            i, m = pair
+            rows = equation_rows([self._compiled(m)], p.jets, points.env)
             R = ref.coef.astype(float).copy()
             Rs = ref.size.astype(float).copy()
             R[:, i, :] = rows.coef[:, 0, :]
             Rs[:, i] = rows.size[:, 0]
-            r, size = _in_span_float(x, xs, R, Rs)
-            return _vanishes(r, size)
+            return R, Rs
 
-        found = self._first(self.row_mutants, test)
-        return None if found is None else found[1]
+        def finish(R, Rs):
+            Q, _ = np.linalg.qr(np.swapaxes(R, -1, -2))
+            norm = np.linalg.norm(R, axis=-1)
+            rel_ref = np.max(np.where(norm > 0, Rs / np.where(norm > 0, norm, 1), 0), axis=-1)
+            return Q, rel_ref
 
-    def match(self, mutants: Sequence[Mutant], test: Callable[[Compiled], bool]) -> Mutant | None:
-        """The first mutant the answer matches by `test(compiled mutant)`."""
-        return self._first(mutants, lambda m: test(self._compiled(m)))
-
-    @staticmethod
-    def _first(candidates, test):
-        for c in candidates:
-            try:
-                with np.errstate(all="ignore"):
-                    if test(c):
-                        return c
-            except (UnsupportedExpression, ValueError, ZeroDivisionError, np.linalg.LinAlgError):
-                continue
-        return None
-
-    def _values(self, m: Mutant, points: Points):
-        return self.problem.cached(
-            f"val:{id(m)}", points, lambda: _full(self._compiled(m).values(points.env), points.n)
-        )
+        return self._stack("row-stack", self.row_mutants, points, evaluate, finish)
 
     # --- helpers ----------------------------------------------------------------------------------
     def _compiled(self, m: Mutant) -> Compiled:
@@ -550,9 +664,10 @@ def _full(pair, n: int) -> tuple[np.ndarray, np.ndarray]:
     )
 
 
-def _vanishes(r: np.ndarray, size: np.ndarray) -> bool:
-    r, size = np.asarray(r, float), np.asarray(size, float)
-    return bool(np.all(np.isfinite(r)) and np.all(np.abs(r) <= 1e-9 * size))
+def _vanish_rows(r: np.ndarray, size: np.ndarray) -> np.ndarray:
+    """Per leading row (one per mutant): finite and within rounding of its terms everywhere."""
+    r, size = r.reshape(len(r), -1), size.reshape(len(size), -1)
+    return np.all(np.isfinite(r) & (np.abs(r) <= 1e-9 * size), axis=1)
 
 
 def _close(a: np.ndarray, b: np.ndarray) -> bool:

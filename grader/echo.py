@@ -56,14 +56,12 @@ def _at_least(node: Any, text: str, strength: int) -> str:
 
 
 def _number(node: Any, text: str) -> tuple[str, int]:
-    """A number as written (9.81, 1.6e-19), or p/q when the text is not a plain number."""
+    """A number as written (9.81, 1.6e-19, 1E100), else p or p/q (from a translation)."""
     p, q = node.value
-    if q == 1:
-        return str(p), _ATOM
     written = text[node.start : node.end].strip("() \t")
     if _DECIMAL.fullmatch(written):
         return written, _ATOM
-    return f"{p}/{q}", _PRODUCT
+    return (str(p), _ATOM) if q == 1 else (f"{p}/{q}", _PRODUCT)
 
 
 def _sum(terms: list, text: str) -> str:

@@ -3,10 +3,13 @@ student's own terms."""
 
 from __future__ import annotations
 
+import numpy as np
 import pytest
 import sympy as sp
 
-from grader.diagnose import plain, swap_sin_cos
+from grader.diagnose import Mutant, plain, swap_sin_cos
+from grader.equivalence import Compiled, _in_span_float, equation_rows, euler_lagrange_values
+from grader.evaluate import UnsupportedExpression
 from grader.problem import build_problem
 
 from .conftest import HOOP, WEDGE, judge
@@ -161,3 +164,138 @@ def test_helpers():
     x = sp.Symbol("x")
     assert plain(x**2 / 2) == "x^2/2"
     assert swap_sin_cos(sp.sin(x) * sp.cos(2 * x)) == sp.cos(x) * sp.sin(2 * x)
+
+
+# --- the vectorised matching is the one-at-a-time test ------------------------------------------
+
+
+def _one_at_a_time(candidates, test):
+    """The first candidate that passes `test`, skipping those that cannot be evaluated."""
+    for c in candidates:
+        try:
+            with np.errstate(all="ignore"):
+                if test(c):
+                    return c
+        except (UnsupportedExpression, ValueError, ZeroDivisionError, np.linalg.LinAlgError):
+            continue
+    return None
+
+
+def _vanishes(r, size) -> bool:
+    return bool(np.all(np.isfinite(r)) and np.all(np.abs(r) <= 1e-9 * size))
+
+
+def _values(m, points):
+    value, size = Compiled.of(m.expr).values(points.env)
+    return np.broadcast_to(value, (points.n,)), np.broadcast_to(size, (points.n,))
+
+
+def _slow_plain(mutants, a, sa, points):
+    return _one_at_a_time(
+        mutants, lambda m: _vanishes(a - _values(m, points)[0], sa + _values(m, points)[1])
+    )
+
+
+def _slow_offset(mutants, a, sa, points):
+    starts = np.searchsorted(points.group, points.group)
+
+    def test(m):
+        b, sb = _values(m, points)
+        d = a - b
+        return _vanishes(d - d[starts], sa + sb + np.abs(d[starts]))
+
+    return _one_at_a_time(mutants, test)
+
+
+def _slow_lagrangian(problem, answer, points):
+    Ea, Sa = euler_lagrange_values(answer, problem.jets, points.env)
+
+    def test(m):
+        Eb, Sb = euler_lagrange_values(Compiled.of(m.expr), problem.jets, points.env)
+        r, size = np.empty_like(Ea), np.empty_like(Ea)
+        for g in np.unique(points.group):
+            rows = points.group == g
+            den = float(np.sum(Eb[rows] ** 2))
+            if den == 0:
+                return False
+            c = float(np.sum(Ea[rows] * Eb[rows])) / den
+            if abs(c) < 1e-9:
+                return False
+            r[rows] = Ea[rows] - c * Eb[rows]
+            size[rows] = Sa[rows] + abs(c) * Sb[rows]
+        return _vanishes(r, size)
+
+    return _one_at_a_time(problem.catalogue.lagrangian_mutants, test)
+
+
+def _slow_row(problem, student, points):
+    jets = problem.jets
+    s = equation_rows([student], jets, points.env)
+    ref = equation_rows(problem.euler_lagrange, jets, points.env)
+
+    def test(pair):
+        i, m = pair
+        rows = equation_rows([Compiled.of(m.expr)], jets, points.env)
+        R, Rs = ref.coef.astype(float).copy(), ref.size.astype(float).copy()
+        R[:, i, :], Rs[:, i] = rows.coef[:, 0, :], rows.size[:, 0]
+        return _vanishes(*_in_span_float(s.coef[:, 0, :], s.size[:, 0], R, Rs))
+
+    found = _one_at_a_time(problem.catalogue.row_mutants, test)
+    return None if found is None else found[1]
+
+
+@pytest.mark.parametrize("spec", [WEDGE, HOOP, {"scene": "wedge", "seed": 3}])
+def test_vectorised_matching_names_the_same_mutant_as_one_at_a_time(spec):
+    """Each match tests all mutants at once; it must return what testing them one by one in
+    the catalogue's order returns (the first, most specific, wins), for answers that are
+    mutants, multiples or shifts of mutants, and right answers (no match)."""
+    problem = build_problem(spec)
+    cat = problem.catalogue
+    named = 0
+    with np.errstate(all="ignore"):
+        points = problem.points("lagrangian")
+        ms = cat.lagrangian_mutants
+        for e in [m.expr for m in ms] + [3 * m.expr for m in ms[:4]] + [problem.lagrangian]:
+            a = Compiled.of(e)
+            got = cat.match_lagrangian(a, points)
+            assert got is _slow_lagrangian(problem, a, points), e
+            named += got is not None
+        for part, ms, match, slow in (
+            ("T", cat.kinetic_mutants, cat.match_plain, _slow_plain),
+            ("V", cat.potential_mutants, cat.match_offset, _slow_offset),
+            ("conserved", cat.conserved_mutants, cat.match_offset, _slow_offset),
+        ):
+            points = problem.points(part)
+            for e in [m.expr for m in ms] + [m.expr + 1 for m in ms] + [2 * m.expr for m in ms]:
+                a = Compiled.of(e)
+                got = match(ms, a, points)
+                assert got is slow(ms, *_values(Mutant("", "", e), points), points), (part, e)
+                named += got is not None
+        points = problem.points("eom")
+        E = problem.system.euler_lagrange
+        pairs = cat.row_mutants
+        answers = [m.expr for _, m in pairs] + [2 * m.expr + E[-1 - i] for i, m in pairs[:4]]
+        for e in [*answers, *E]:
+            a = Compiled.of(e)
+            got = cat.match_row(a, points)
+            assert got is _slow_row(problem, a, points), e
+            named += got is not None
+    # every mutant, given as the answer, is named (itself or an earlier equivalent one)
+    sizes = [cat.lagrangian_mutants, cat.kinetic_mutants, cat.potential_mutants]
+    assert named >= sum(map(len, sizes)) + len(cat.conserved_mutants) + len(pairs)
+
+
+def test_matching_skips_mutants_that_cannot_be_evaluated_and_follows_the_list():
+    """A mutant that fails to compile is never named; a list changed in place is re-stacked."""
+    problem = build_problem(WEDGE)
+    cat = problem.catalogue
+    points = problem.points("T")
+    T = problem.kinetic_energy
+    bad = Mutant("bad", "cannot be evaluated", sp.Function("f")(sp.Symbol("q")))
+    twice = Mutant("twice", "twice T", 2 * T)
+    mutants = [bad, twice]
+    assert cat.match_plain(mutants, Compiled.of(2 * T), points) is twice
+    assert cat.match_plain([bad], Compiled.of(2 * T), points) is None
+    mutants[1] = Mutant("thrice", "thrice T", 3 * T)
+    assert cat.match_plain(mutants, Compiled.of(2 * T), points) is None
+    assert cat.match_plain(mutants, Compiled.of(3 * T), points) is mutants[1]
