@@ -18,6 +18,7 @@ answer that follows correctly from them says so (`follows_from_own_answer`).
 
 from __future__ import annotations
 
+import math
 import re
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
@@ -196,8 +197,9 @@ def _free(problem: Problem, *exprs: sp.Expr) -> frozenset[sp.Symbol]:
     return frozenset(s for s in problem.domains if s not in pinned)
 
 
-def _has_acceleration(problem: Problem, expr: sp.Expr) -> bool:
-    return any(expr.has(j.ddot) for j in problem.jets)
+def _has_acceleration(problem: Problem, expr: sp.Expr | Compiled) -> bool:
+    symbols = expr.symbols if isinstance(expr, Compiled) else expr.free_symbols
+    return any(j.ddot in symbols for j in problem.jets)
 
 
 def _witness(points: Points, outcome: Outcome, *exprs: sp.Expr) -> dict[str, float] | None:
@@ -404,6 +406,15 @@ def judge_lagrangian(
     if fast is not None:  # c (T − V) + k: the same motion, settled by values alone
         notes = _factor_notes(fast.factor) + ([_CONSTANT_NOTE] if fast.shifted else [])
         return ("correct", 1.0, notes, Outcome(True, "numeric", fast.worst), points, ())
+    if _has_acceleration(problem, answer):  # before E(L), which needs an L(q, q̇, t)
+        return (
+            "incorrect",
+            0.0,
+            ["A Lagrangian depends on coordinates, velocities and t, not on accelerations."],
+            Outcome(False, "structure", math.inf),
+            points,
+            ("acceleration",),
+        )
     match = lagrangians_match(answer, _reference_el(problem, points), problem.jets, points)
     out = match.outcome
     factors = np.array(match.factors)
@@ -441,18 +452,9 @@ def judge_lagrangian(
             points,
             ("V_minus_T",),
         )
-    if _has_acceleration(problem, expr):
-        return (
-            "incorrect",
-            0.0,
-            ["A Lagrangian depends on coordinates, velocities and t, not on accelerations."],
-            out,
-            points,
-            ("acceleration",),
-        )
     feedback = []
     mistakes: tuple[str, ...] = ()
-    mutant = problem.catalogue.match_lagrangian(answer, points)
+    mutant = problem.catalogue.match_lagrangian(answer, points, match.answer_el)
     if mutant is not None:
         feedback.append(_sentence(mutant.message))
         mistakes = (mutant.kind,)

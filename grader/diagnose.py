@@ -399,10 +399,18 @@ class Catalogue:
     # a few array operations per answer find the first mutant that matches (the catalogue's
     # order puts the most specific first). The tests are those of the one-at-a-time loop.
 
-    def match_lagrangian(self, answer: Compiled, points: Points) -> Mutant | None:
+    def match_lagrangian(
+        self,
+        answer: Compiled,
+        points: Points,
+        answer_el: tuple[np.ndarray, np.ndarray] | None = None,
+    ) -> Mutant | None:
         """The mutant with E(answer) = c E(mutant), c ≠ 0 per parameter group (float64 only:
-        a diagnosis names a likely mistake, the verdict is decided elsewhere)."""
-        Ea, Sa = euler_lagrange_values(answer, self.problem.jets, points.env)
+        a diagnosis names a likely mistake, the verdict is decided elsewhere). `answer_el`:
+        E(answer) and its size at the points, when the verdict has computed them already."""
+        if answer_el is None:
+            answer_el = euler_lagrange_values(answer, self.problem.jets, points.env)
+        Ea, Sa = answer_el
         stack = self._el_stack(points)
         if stack is None:
             return None

@@ -449,6 +449,7 @@ class LagrangianMatch:
 
     outcome: Outcome
     factors: tuple[float, ...] = ()  # c per parameter group
+    answer_el: tuple[np.ndarray, np.ndarray] | None = None  # E(answer) and its size, float64
 
     @property
     def factor(self) -> float | None:
@@ -532,6 +533,15 @@ def lagrangians_match(
             if callable(reference)
             else euler_lagrange_values(reference, jets, env, backend)
         )
+        if backend is FLOAT:  # every group at once
+            found["el"] = (Ea, Sa)
+            group = points.group
+            num = np.bincount(group, np.sum(Ea * Eb, axis=1))
+            den = np.bincount(group, np.sum(Eb * Eb, axis=1))
+            c = np.where(den != 0, num / np.where(den != 0, den, 1.0), 0.0)
+            found["c"] = list(c)
+            per_point = c[group][:, None]
+            return Ea - per_point * Eb, Sa + np.abs(per_point) * Sb
         r = np.empty_like(Ea)
         s = np.empty_like(Ea)
         factors = []
@@ -547,7 +557,9 @@ def lagrangians_match(
         return r, s
 
     outcome = decide(residual)
-    return LagrangianMatch(outcome, tuple(float(c) for c in found.get("c", ())))
+    return LagrangianMatch(
+        outcome, tuple(float(c) for c in found.get("c", ())), found.get("el")
+    )
 
 
 # --- equations linear in q̈: rows [A | c] at the points -------------------------------------------

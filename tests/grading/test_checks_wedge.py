@@ -53,6 +53,12 @@ def test_missing_cross_term_is_named():
     assert v.witness and set(v.witness) >= {"q_dot", "x_M_dot"}
 
 
+def test_an_acceleration_in_l_is_named_not_an_error():
+    v = judge(WEDGE, "lagrangian", T_TEXT + " + m q x_M_ddot")
+    assert (v.status, v.mistakes) == ("incorrect", ("acceleration",))
+    assert "not on accelerations" in v.feedback[0]
+
+
 def test_t_plus_v_is_named():
     v = judge(WEDGE, "lagrangian", T_TEXT + " - m g q sin(alpha)")
     assert v.mistakes == ("sign_of_V",)
