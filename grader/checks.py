@@ -202,10 +202,17 @@ def _has_acceleration(problem: Problem, expr: sp.Expr | Compiled) -> bool:
     return any(j.ddot in symbols for j in problem.jets)
 
 
-def _witness(points: Points, outcome: Outcome, *exprs: sp.Expr) -> dict[str, float] | None:
+def _witness(
+    points: Points, outcome: Outcome, *exprs: sp.Expr | Compiled
+) -> dict[str, float] | None:
+    """The point where the answers differ, in the symbols of `exprs` (all, without them)."""
     if outcome.where is None:
         return None
-    syms = set().union(*(e.free_symbols for e in exprs)) if exprs else None
+    syms = (
+        set().union(*(e.symbols if isinstance(e, Compiled) else e.free_symbols for e in exprs))
+        if exprs
+        else None
+    )
     return points.point(outcome.where, syms)
 
 
@@ -460,7 +467,7 @@ def judge_lagrangian(
         mistakes = (mutant.kind,)
     feedback.append(
         "Your L does not give the equations of motion of this system"
-        + _where(_witness(points, out, expr))
+        + _where(_witness(points, out, answer))
         + "."
     )
     return ("incorrect", 0.0, feedback, out, points, mistakes)
@@ -564,7 +571,7 @@ def check_kinetic(problem: Problem, answer: Any, given: Mapping | None) -> Verdi
     if mutant is not None:
         feedback.append(_sentence(mutant.message))
         mistakes = (mutant.kind,)
-    w = _witness(points, out, got.expr)
+    w = _witness(points, out, answer_c)
     feedback.append("Your T is not the kinetic energy of this system" + _where(w) + ".")
     return Verdict(
         "T", "incorrect", 0.0, tuple(feedback), got.echo, _method(out), witness=w, mistakes=mistakes
@@ -590,7 +597,7 @@ def check_potential(problem: Problem, answer: Any, given: Mapping | None) -> Ver
     if mutant is not None:
         feedback.append(_sentence(mutant.message))
         mistakes = (mutant.kind,)
-    w = _witness(points, out, got.expr)
+    w = _witness(points, out, answer_c)
     feedback.append(
         "Your V is not the potential energy of this system (up to a constant)" + _where(w) + "."
     )
@@ -662,7 +669,7 @@ def check_eom(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
             right.append(k)
             continue
         wrong.append(k)
-        witness = witness or _witness(points, out, exprs[k])
+        witness = witness or _witness(points, out, compiled[k])
         mutant = problem.catalogue.match_row(compiled[k], points)
         if mutant is not None:
             feedback.append(f"{label}: {mutant.message}.")
@@ -670,7 +677,7 @@ def check_eom(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
         else:
             feedback.append(
                 f"{label} does not follow from the Euler–Lagrange equations of this "
-                f"system{_where(_witness(points, out, exprs[k]))}."
+                f"system{_where(_witness(points, out, compiled[k]))}."
             )
     rank = row_rank(rows.coef.astype(float), right)
     follows = False
@@ -816,14 +823,14 @@ def check_momenta(problem: Problem, answer: Any, given: Mapping | None) -> Verdi
             any_wrong = True
             continue
         any_wrong, follows_all = True, False
-        witness = witness or _witness(points, out, expr)
+        witness = witness or _witness(points, out, ans)
         mutant = problem.catalogue.match_plain(problem.catalogue.momentum_mutants(k), ans, points)
         if mutant is not None:
             feedback.append(_sentence(mutant.message))
             mistakes.append(mutant.kind)
         else:
             feedback.append(
-                f"p_{j.name} is not ∂L/∂{j.name}_dot{_where(_witness(points, out, expr))}."
+                f"p_{j.name} is not ∂L/∂{j.name}_dot{_where(_witness(points, out, ans))}."
             )
     score = right / len(jets)
     status = "correct" if right == len(jets) else "incorrect"
@@ -1046,7 +1053,7 @@ def check_conserved(problem: Problem, answer: Any, given: Mapping | None) -> Ver
         elif out.equal:
             right_grads.append(grad)
         else:
-            witness = witness or _witness(points, out, r.expr)
+            witness = witness or _witness(points, out, Q)
             mutant = problem.catalogue.match_offset(problem.catalogue.conserved_mutants, Q, points)
             if mutant is not None:
                 feedback.append(_sentence(mutant.message))
@@ -1054,7 +1061,7 @@ def check_conserved(problem: Problem, answer: Any, given: Mapping | None) -> Ver
             else:
                 feedback.append(
                     f"{label} is not conserved: its time derivative along the motion "
-                    f"is not zero{_where(_witness(points, out, r.expr))}."
+                    f"is not zero{_where(_witness(points, out, Q))}."
                 )
     rank = _gradient_rank(right_grads)
     n_right = len(right_grads)
@@ -1138,7 +1145,7 @@ def check_expression(problem: Problem, answer: Any, given: Mapping | None) -> Ve
     if mutant is not None:
         feedback.append(_sentence(mutant.message))
         mistakes = (mutant.kind,)
-    w = _witness(points, out, got.expr, ref.expr)
+    w = _witness(points, out, ans, ref)
     feedback.append("Your answer is not equal to the expected expression" + _where(w) + ".")
     return Verdict(
         "expression",

@@ -58,7 +58,7 @@ _FUNCTIONS: dict[type, str] = {
 @dataclass(frozen=True)
 class Program:
     """Straight-line code for several sympy expressions: instructions in dependency order, each
-    shared subtree once. Instructions: ("in", symbol), ("const", number), ("add", args),
+    shared subtree once. Instructions: ("in", symbol), ("const", number, its float), ("add", args),
     ("mul", args), ("powi", base, n), ("powc", base, exponent), ("powe", base, exponent),
     ("fn", name, arg)."""
 
@@ -94,9 +94,9 @@ def _instruction(node: sp.Basic, emit, symbols: set) -> tuple:
     if isinstance(node, sp.Number):
         if not node.is_finite:
             raise UnsupportedExpression(f"the answer contains {node}, which is not a finite number")
-        return ("const", node)
+        return ("const", node, float(node))
     if node in (sp.pi, sp.E):
-        return ("const", node)
+        return ("const", node, float(node))
     if isinstance(node, sp.Add):
         return ("add", tuple(emit(a) for a in node.args))
     if isinstance(node, sp.Mul):
@@ -270,7 +270,7 @@ def run(program: Program, env: Mapping[sp.Symbol, Any], backend=FLOAT) -> list:
             except KeyError:
                 raise UnsupportedExpression(f"the symbol {instr[1]} has no value here") from None
         elif op == "const":
-            vals.append(backend.const(instr[1]))
+            vals.append(instr[2] if backend is FLOAT else backend.const(instr[1]))
         elif op == "add":
             acc = vals[instr[1][0]]
             for k in instr[1][1:]:
@@ -334,7 +334,7 @@ def run_hyperdual(program: Program, env: Mapping[sp.Symbol, HyperDual], backend=
             except KeyError:
                 raise UnsupportedExpression(f"the symbol {instr[1]} has no value here") from None
         elif op == "const":
-            vals.append((backend.const(instr[1]), 0, 0, 0))
+            vals.append((instr[2] if backend is FLOAT else backend.const(instr[1]), 0, 0, 0))
         elif op == "add":
             parts = [vals[k] for k in instr[1]]
             vals.append(tuple(sum((p[i] for p in parts[1:]), parts[0][i]) for i in range(4)))
