@@ -405,21 +405,22 @@ def _reference_el(problem: Problem, points: Points):
 
 def judge_lagrangian(
     problem: Problem, expr: sp.Expr
-) -> tuple[str, float, list[str], Outcome, Points, tuple[str, ...]]:
-    """(status, score, feedback, outcome, points, mistakes) for a Lagrangian answer."""
+) -> tuple[str, float, list[str], Outcome, dict[str, float] | None, tuple[str, ...]]:
+    """(status, score, feedback, outcome, witness, mistakes) for a Lagrangian answer; the
+    witness is a point where the motion differs, when it does."""
     answer = Compiled.of(expr)
     points = problem.points("lagrangian", _free(problem, expr))
     fast = _affine_to_reference(problem, answer, points)
     if fast is not None:  # c (T − V) + k: the same motion, settled by values alone
         notes = _factor_notes(fast.factor) + ([_CONSTANT_NOTE] if fast.shifted else [])
-        return ("correct", 1.0, notes, Outcome(True, "numeric", fast.worst), points, ())
+        return ("correct", 1.0, notes, Outcome(True, "numeric", fast.worst), None, ())
     if _has_acceleration(problem, answer):  # before E(L), which needs an L(q, q̇, t)
         return (
             "incorrect",
             0.0,
             ["A Lagrangian depends on coordinates, velocities and t, not on accelerations."],
             Outcome(False, "structure", math.inf),
-            points,
+            None,
             ("acceleration",),
         )
     match = lagrangians_match(answer, _reference_el(problem, points), problem.jets, points)
@@ -434,7 +435,7 @@ def judge_lagrangian(
                 "or a total time derivative)."
             ],
             out,
-            points,
+            None,
             ("trivial",),
         )
     if out.equal and np.all(factors > 0):
@@ -443,7 +444,7 @@ def judge_lagrangian(
             1.0,
             _same_dynamics_notes(problem, answer, match, points),
             out,
-            points,
+            None,
             (),
         )
     if out.equal and np.all(factors < 0):
@@ -456,7 +457,7 @@ def judge_lagrangian(
                 "V − T (or a negative multiple)."
             ],
             out,
-            points,
+            None,
             ("V_minus_T",),
         )
     feedback = []
@@ -465,12 +466,11 @@ def judge_lagrangian(
     if mutant is not None:
         feedback.append(_sentence(mutant.message))
         mistakes = (mutant.kind,)
+    witness = _witness(points, out, answer)
     feedback.append(
-        "Your L does not give the equations of motion of this system"
-        + _where(_witness(points, out, answer))
-        + "."
+        "Your L does not give the equations of motion of this system" + _where(witness) + "."
     )
-    return ("incorrect", 0.0, feedback, out, points, mistakes)
+    return ("incorrect", 0.0, feedback, out, witness, mistakes)
 
 
 def _sentence(text: str) -> str:
@@ -543,10 +543,7 @@ def _read_single(problem: Problem, answer: Any, part: str, label: str) -> Read:
 
 def check_lagrangian(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
     got = _read_single(problem, answer, "lagrangian", "L")
-    status, score, feedback, out, _points, mistakes = judge_lagrangian(problem, got.expr)
-    witness = (
-        _witness(_points, out, got.expr) if status != "correct" and out.where is not None else None
-    )
+    status, score, feedback, out, witness, mistakes = judge_lagrangian(problem, got.expr)
     return Verdict(
         "lagrangian",
         status,
