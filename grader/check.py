@@ -85,7 +85,7 @@ def prepare(problem: Problem, part: str) -> None:
     if key in _prepared:
         return
     if part == "expression":
-        problem.points("expression")
+        problem.catalogue.warm(part, problem.points("expression"))
     elif part in CHECKERS and problem.lagrangian is not None:
         system = problem.system
         _ = system.euler_lagrange

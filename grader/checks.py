@@ -30,7 +30,7 @@ import sympy as sp
 
 from problem_bank.domains import Domain
 
-from .diagnose import Mutant, plain
+from .diagnose import plain
 from .equivalence import (
     Compiled,
     Outcome,
@@ -560,7 +560,7 @@ def check_kinetic(problem: Problem, answer: Any, given: Mapping | None) -> Verdi
     got = _read_single(problem, answer, "T", "T")
     answer_c = Compiled.of(got.expr)
     points = problem.points("T", _free(problem, got.expr))
-    out = expressions_equal(answer_c, Compiled.of(problem.kinetic_energy), points)
+    out = expressions_equal(answer_c, problem.kinetic, points)
     if out.equal:
         return Verdict("T", "correct", 1.0, (), got.echo, _method(out))
     feedback, mistakes = [], ()
@@ -578,7 +578,7 @@ def check_kinetic(problem: Problem, answer: Any, given: Mapping | None) -> Verdi
 def check_potential(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
     got = _read_single(problem, answer, "V", "V")
     answer_c = Compiled.of(got.expr)
-    reference = Compiled.of(problem.potential_energy)
+    reference = problem.potential
     points = problem.points("V", _free(problem, got.expr))
     out = differ_by_constant(answer_c, reference, points)
     if out.equal:
@@ -1116,12 +1116,12 @@ def _domains_for(problem: Problem) -> dict:
 def check_expression(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
     got = _read_single(problem, answer, "expression", "x")
     ref = problem.reference_expression
-    ans = Compiled.of(got.expr)
     # The default decision (docs/methods.csv): exact where possible, bounded floats otherwise;
     # the numeric hybrid decides only what that method cannot reach, and finds witnesses.
     decided = ExactThenAdaptive().decide(got.expr, ref.expr, _domains_for(problem))
     if decided:
         return Verdict("expression", "correct", 1.0, (), got.echo, "exact_then_adaptive")
+    ans = Compiled.of(got.expr)
     points = problem.points("expression", _free(problem, got.expr))
     out = expressions_equal(ans, ref, points)
     if decided is not None:
@@ -1129,16 +1129,7 @@ def check_expression(problem: Problem, answer: Any, given: Mapping | None) -> Ve
     if out.equal:
         return Verdict("expression", "correct", 1.0, (), got.echo, _method(out))
     feedback, mistakes = [], ()
-    mutants = [
-        Mutant("sin_cos_swapped", "sin and cos are swapped", _swap(ref.expr)),
-        Mutant("wrong_sign", "the sign is wrong", -ref.expr),
-        Mutant(
-            "reciprocal",
-            "your answer is upside down (the reciprocal of the right one)",
-            1 / ref.expr,
-        ),
-    ]
-    mutant = problem.catalogue.match(mutants, lambda m: expressions_equal(ans, m, points).equal)
+    mutant = problem.catalogue.match_plain(problem.catalogue.expression_mutants, ans, points)
     if mutant is not None:
         feedback.append(_sentence(mutant.message))
         mistakes = (mutant.kind,)
@@ -1154,12 +1145,6 @@ def check_expression(problem: Problem, answer: Any, given: Mapping | None) -> Ve
         witness=w,
         mistakes=mistakes,
     )
-
-
-def _swap(expr: sp.Expr) -> sp.Expr:
-    from .diagnose import swap_sin_cos  # noqa: PLC0415
-
-    return swap_sin_cos(expr)
 
 
 # --- the table ------------------------------------------------------------------------------------

@@ -393,6 +393,21 @@ class Catalogue:
         )
         return out
 
+    # --- a reference expression ------------------------------------------------------------------
+    @cached_property
+    def expression_mutants(self) -> list[Mutant]:
+        """The usual slips with a closed-form result: sin for cos, the sign, upside down."""
+        ref = self.problem.reference_expression.expr
+        return [
+            Mutant("sin_cos_swapped", "sin and cos are swapped", swap_sin_cos(ref)),
+            Mutant("wrong_sign", "the sign is wrong", -ref),
+            Mutant(
+                "reciprocal",
+                "your answer is upside down (the reciprocal of the right one)",
+                1 / ref,
+            ),
+        ]
+
     # --- matching ---------------------------------------------------------------------------------
     # A wrong answer is tested against every mutant of its part, so each match tests all of
     # them at once: the mutants' values at the points are stacked once per set of points, and
@@ -428,7 +443,8 @@ class Catalogue:
         self, mutants: Sequence[Mutant], answer: Compiled, points: Points
     ) -> Mutant | None:
         """The first mutant with the answer's values at the points."""
-        a, sa = _full(answer.values(points.env), points.n)
+        with np.errstate(all="ignore"):
+            a, sa = _full(answer.values(points.env), points.n)
         stack = self._value_stack(mutants, points)
         if stack is None:
             return None
@@ -441,7 +457,8 @@ class Catalogue:
     ) -> Mutant | None:
         """The first mutant the answer equals up to a constant per parameter group (V, a
         conserved quantity)."""
-        a, sa = _full(answer.values(points.env), points.n)
+        with np.errstate(all="ignore"):
+            a, sa = _full(answer.values(points.env), points.n)
         stack = self._value_stack(mutants, points)
         if stack is None:
             return None
@@ -498,6 +515,8 @@ class Catalogue:
             self._row_stack(points)
         elif part == "conserved":
             self._value_stack(self.conserved_mutants, points)
+        elif part == "expression":
+            self._value_stack(self.expression_mutants, points)
 
     # --- stacks of mutant values, per set of points ----------------------------------------------
     def _stack(

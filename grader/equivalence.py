@@ -301,13 +301,22 @@ def finite_mask(compiled: Sequence[Compiled]) -> Callable[[dict], np.ndarray]:
 # --- expressions -------------------------------------------------------------------------------
 
 
+def _reference_values(reference: Compiled, points: Points, backend) -> tuple:
+    """A reference's (value, size) at the points; in float64 computed once per points."""
+    env = points.arrays(backend)
+    if backend is not FLOAT:
+        return reference.values(env, backend)
+    return _memo_inputs(
+        f"values:{id(reference)}", env, (), lambda: (reference, reference.values(env)))[1]
+
+
 def expressions_equal(answer: Compiled, reference: Compiled, points: Points) -> Outcome:
     """answer ≡ reference on the domain: a − b vanishes at every point, relative to the terms."""
 
     def residual(backend):
         env = points.arrays(backend)
         a, sa = answer.values(env, backend)
-        b, sb = reference.values(env, backend)
+        b, sb = _reference_values(reference, points, backend)
         return _broadcast(a - b, points.n, backend), _broadcast(sa + sb, points.n, backend)
 
     return decide(residual)
@@ -320,7 +329,7 @@ def differ_by_constant(answer: Compiled, reference: Compiled, points: Points) ->
     def residual(backend):
         env = points.arrays(backend)
         a, sa = answer.values(env, backend)
-        b, sb = reference.values(env, backend)
+        b, sb = _reference_values(reference, points, backend)
         d = _broadcast(a - b, points.n, backend)
         first = d[_group_starts(points)]
         return d - first, _broadcast(sa + sb, points.n, backend) + abs(first)

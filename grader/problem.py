@@ -144,6 +144,16 @@ class Problem:
         return self.variant.potential_energy
 
     @cached_property
+    def kinetic(self) -> Compiled:
+        """T, compiled once (the reference of the T part)."""
+        return Compiled.of(self.kinetic_energy)
+
+    @cached_property
+    def potential(self) -> Compiled:
+        """V, compiled once (the reference of the V part)."""
+        return Compiled.of(self.potential_energy)
+
+    @cached_property
     def dof(self) -> int:
         return self.variant.dof if self.variant is not None else len(self.jets)
 
