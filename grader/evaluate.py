@@ -95,7 +95,7 @@ def _instruction(node: sp.Basic, emit, symbols: set) -> tuple:
         if not node.is_finite:
             raise UnsupportedExpression(f"the answer contains {node}, which is not a finite number")
         return ("const", node, float(node))
-    if node in (sp.pi, sp.E):
+    if node is sp.pi or node is sp.E:  # singletons: `is`, not sympy's slow ==
         return ("const", node, float(node))
     if isinstance(node, sp.Add):
         return ("add", tuple(emit(a) for a in node.args))
@@ -107,7 +107,7 @@ def _instruction(node: sp.Basic, emit, symbols: set) -> tuple:
             return ("powi", emit(base), int(exponent))
         if isinstance(exponent, sp.Rational | sp.Float):
             return ("powc", emit(base), exponent)
-        if base == sp.E:  # E**x is exp(x)
+        if base is sp.E:  # E**x is exp(x)
             return ("fn", "exp", emit(exponent))
         # b**e with a non-constant exponent: exp(e log b), defined for b > 0.
         return ("powe", emit(base), emit(exponent))
