@@ -20,16 +20,16 @@ from .errors import DomainError
 
 _BOUND = re.compile(
     r"""^\s*(?P<sign>[+-])?\s*
-        (?P<num>\d+(?:\.\d+)?)?\s*
+        (?P<num>\d+(?:\.\d+)?(?:[eE][+-]?\d{1,3})?)?\s*
         (?:\*?\s*(?P<pi>pi|π))?\s*
-        (?:/\s*(?P<den>\d+(?:\.\d+)?))?\s*$""",
+        (?:/\s*(?P<den>\d+(?:\.\d+)?(?:[eE][+-]?\d{1,3})?))?\s*$""",
     re.VERBOSE,
 )
 _INTERVAL = re.compile(r"^\s*(?P<lo_br>[\(\[])(?P<lo>[^,]+),(?P<hi>[^\)\]]+)(?P<hi_br>[\)\]])\s*$")
 
 
 def _parse_bound(text: str) -> sp.Expr:
-    """'pi/2' → π/2, '-1.5' → −3/2, '2pi' → 2π; inf is ±oo."""
+    """'pi/2' → π/2, '-1.5' → −3/2, '2pi' → 2π, '1e-28' → 10⁻²⁸ (exactly); inf is ±oo."""
     stripped = text.strip()
     if stripped in ("inf", "oo", "+inf", "+oo"):
         return sp.oo
@@ -38,13 +38,16 @@ def _parse_bound(text: str) -> sp.Expr:
     match = _BOUND.match(stripped)
     if not match or not (match["num"] or match["pi"]):
         raise DomainError(
-            f"cannot read the interval bound {text!r}; write a number, pi, 2*pi or pi/2"
+            f"cannot read the interval bound {text!r}; write a number (1.5, 2e-3), pi, 2*pi "
+            "or pi/2"
         )
     value: sp.Expr = sp.Rational(str(Fraction(match["num"]))) if match["num"] else sp.S.One
     if match["pi"]:
         value *= sp.pi
     if match["den"]:
         value /= sp.Rational(str(Fraction(match["den"])))
+    if not math.isfinite(float(value)):
+        raise DomainError(f"the interval bound {text!r} is too large for a number")
     return -value if match["sign"] == "-" else value
 
 

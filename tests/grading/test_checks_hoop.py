@@ -106,3 +106,19 @@ def test_expression_problem_with_domains():
     assert judge(problem2, "expression", "sqrt(1 - sin(alpha)^2)").status == "correct"
     problem3 = {"expression": "cos(alpha)", "parameters": {"alpha": "real"}}
     assert judge(problem3, "expression", "sqrt(1 - sin(alpha)^2)").status == "incorrect"
+
+
+def test_expression_problem_with_si_domains():
+    """A cyclotron radius with an electron's charge and mass: bounds in scientific notation."""
+    problem = {
+        "expression": "m*v/(e*B)",
+        "parameters": {
+            "m": "[9.1e-31, 9.2e-31]",
+            "e": "(1.5e-19, 1.7e-19)",
+            "v": "(1e5, 1e7)",
+            "B": "(1e-3, 1)",
+        },
+    }
+    assert judge(problem, "expression", "(m v)/(B e)").status == "correct"
+    assert judge(problem, "expression", "m v/(B e) + 1e-12").status == "incorrect"
+    assert judge(problem, "expression", "e B/(m v)").mistakes == ("reciprocal",)
