@@ -228,9 +228,13 @@ def decide(residual: Residual) -> Outcome:
 
 
 def _ratio(r: np.ndarray, s: np.ndarray) -> np.ndarray:
-    """|r| / s, with 0/0 = 0 (an answer and reference that are both exactly zero agree)."""
-    ratio = np.abs(r) / np.where(s > 0, s, 1.0)
-    return np.where((s == 0) & (r == 0), 0.0, np.where((s == 0) & (r != 0), np.inf, ratio))
+    """|r| / s, with 0/0 = 0 (an answer and reference that are both exactly zero agree) and
+    r/0 = inf for r ≠ 0; nan where r is nan (undefined). Call under np.errstate."""
+    ratio = np.abs(r) / s
+    both_zero = (s == 0) & (r == 0)
+    if both_zero.any():
+        ratio = np.where(both_zero, 0.0, ratio)
+    return ratio
 
 
 def _mp_ratio(r, s) -> float:
