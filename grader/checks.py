@@ -992,10 +992,7 @@ def _conservation(
         total, size, _grad = time_derivative_on_shell(
             Q, jets, points.arrays(backend), acc(backend), backend
         )
-        n = points.n
-        total = np.full(n, total) if np.ndim(total) == 0 else total
-        size = np.full(n, size) if np.ndim(size) == 0 else size
-        return total, size
+        return _full_length(total, points.n), _full_length(size, points.n)
 
     out = decide(residual)
     with np.errstate(all="ignore"):
@@ -1026,9 +1023,11 @@ def check_conserved(problem: Problem, answer: Any, given: Mapping | None) -> Ver
             [_conservation(problem, Compiled.of(q), points)[2] for q in key.values()]
         ),
     )
+    own = _own_lagrangian(problem, given)
     feedback, mistakes, outcomes = [], [], []
     right_grads = []
     witness = None
+    follows_all, any_wrong = True, False
     for k, r in enumerate(reads):
         label = f"{echoes[k]}"
         if _has_acceleration(problem, r.expr):
@@ -1049,7 +1048,14 @@ def check_conserved(problem: Problem, answer: Any, given: Mapping | None) -> Ver
             mistakes.append("constant")
         elif out.equal:
             right_grads.append(grad)
+        elif own is not None and _conserved_by_own(problem, own, Q, points):
+            feedback.append(
+                f"{label} is conserved by the motion of your own Lagrangian, which is not "
+                "the right one."
+            )
+            any_wrong = True
         else:
+            any_wrong, follows_all = True, False
             witness = witness or _witness(points, out, Q)
             mutant = problem.catalogue.match_offset(problem.catalogue.conserved_mutants, Q, points)
             if mutant is not None:
@@ -1079,6 +1085,7 @@ def check_conserved(problem: Problem, answer: Any, given: Mapping | None) -> Ver
     status = "correct" if score >= 1.0 - 1e-12 and not feedback else "incorrect"
     if status == "correct":
         score = 1.0
+    follows = status != "correct" and any_wrong and follows_all and own is not None
     return Verdict(
         "conserved",
         status,
@@ -1087,8 +1094,40 @@ def check_conserved(problem: Problem, answer: Any, given: Mapping | None) -> Ver
         echoes,
         _method(*outcomes),
         witness=witness,
+        follows_from_own_answer=follows,
         mistakes=tuple(mistakes),
     )
+
+
+def _conserved_by_own(problem: Problem, own: sp.Expr, Q: Compiled, points: Points) -> bool:
+    """Follow-through: D_t Q = 0 along the motion of the student's own L (its accelerations
+    from its own Euler–Lagrange equations), decided like the reference case."""
+    own_c = Compiled.of(own)
+    jets = problem.jets
+    try:
+        with np.errstate(all="ignore"):
+            acc = solve_accelerations(lagrangian_rows(own_c, jets, points.env))
+        if not np.all(np.isfinite(acc)):
+            return False  # the own L has no motion here (a singular mass matrix)
+
+        def residual(backend):
+            env = points.arrays(backend)
+            a = (
+                acc
+                if backend is FLOAT
+                else solve_accelerations(lagrangian_rows(own_c, jets, env, backend), backend)
+            )
+            total, size, _grad = time_derivative_on_shell(Q, jets, env, a, backend)
+            return _full_length(total, points.n), _full_length(size, points.n)
+
+        return decide(residual).equal
+    except (UnsupportedExpression, ValueError, ZeroDivisionError, np.linalg.LinAlgError):
+        return False
+
+
+def _full_length(x, n: int):
+    """A per-point array of length n (a constant comes out of the evaluator as a scalar)."""
+    return np.full(n, x) if np.ndim(x) == 0 else x
 
 
 def _gradient_rank(grads: Sequence[np.ndarray]) -> int:

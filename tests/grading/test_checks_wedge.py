@@ -130,6 +130,32 @@ def test_equations_that_follow_from_the_students_own_wrong_lagrangian():
     assert any("your own Lagrangian" in f for f in v.feedback)
 
 
+def test_conserved_quantities_that_follow_from_the_students_own_wrong_lagrangian():
+    own_L = "1/2 m (x_M_dot^2 + q_dot^2) + 1/2 M x_M_dot^2 + m g q sin(alpha)"  # no cross term
+    own_conserved = [
+        "p_x_M = (M+m) x_M_dot",  # x_M is cyclic in the student's L, without the cross term
+        "1/2 m (x_M_dot^2 + q_dot^2) + 1/2 M x_M_dot^2 - m g q sin(alpha)",  # its energy
+    ]
+    v = judge(WEDGE, "conserved", own_conserved, given={"lagrangian": own_L})
+    assert v.status == "incorrect" and v.follows_from_own_answer
+    assert sum("motion of your own Lagrangian" in f for f in v.feedback) == 2
+    # without the student's L, or with a quantity that no motion conserves, no follow-through
+    alone = judge(WEDGE, "conserved", own_conserved)
+    assert alone.status == "incorrect" and not alone.follows_from_own_answer
+    mixed = judge(
+        WEDGE, "conserved", [own_conserved[0], "q_dot x_M"], given={"lagrangian": own_L}
+    )
+    assert mixed.status == "incorrect" and not mixed.follows_from_own_answer
+    # a right answer stays right whatever the student's L
+    right = judge(
+        WEDGE,
+        "conserved",
+        ["p_x = (M + m) x_M_dot + m q_dot cos(alpha)", T_TEXT + " - m g q sin(alpha)"],
+        given={"lagrangian": own_L},
+    )
+    assert right.status == "correct" and not right.follows_from_own_answer
+
+
 def test_momenta_labelled_or_in_order():
     right = ["p_x_M = (M+m) x_M_dot + m q_dot cos(alpha)", "p_q = m q_dot + m x_M_dot cos(alpha)"]
     assert judge(WEDGE, "momenta", right).status == "correct"
