@@ -63,6 +63,15 @@ HINTS: dict[str, FigureHint] = {
         dimensions=(("h", lambda s: ((s.x_M, 0), (s.x_M, s.h))),),
     ),
     "hoop": FigureHint(solid=frozenset({"theta"}), rods=False),
+    # the pucks well apart, away from the origin, so that X, Y, r and θ each have room
+    "two_body_spring": FigureHint(
+        poses={
+            "X": lambda s: 3 * s.l_0,
+            "Y": lambda s: 2 * s.l_0,
+            "r": lambda s: 2 * s.l_0,
+            "theta": lambda s: 0.5,
+        }
+    ),
 }
 
 _ANGLE_POSES = (0.6, 1.0, 0.35, 0.8)
@@ -169,6 +178,12 @@ class _Geometry:
         exprs += [as_expr(b.angle) for b in self.bodies if isinstance(b, RigidBody)]
         hidden = [e.replace(lambda f: isinstance(f, _TRIG), lambda f: sp.S.One) for e in exprs]
         return any(e.has(q) for e in exprs) and not any(h.has(q) for h in hidden)
+
+    @cached_property
+    def constrained(self) -> bool:
+        """The scene declares constraints (tracks, rods, surfaces), so coordinate sweeps trace
+        something real; without any, bodies move freely and a sweep would look like a rail."""
+        return any(label == "declared" for label, _ in self.variant.constraints)
 
     def moves(self, body_index: int, symbol: sp.Symbol) -> bool:
         return any(as_expr(x).has(symbol) for x in self.bodies[body_index].position)
@@ -311,16 +326,19 @@ def _plan(geometry: _Geometry) -> _Drawing:
             pose = g.pose[j.q]
             lo, hi = min(0.0, pose - g.scale), pose + g.scale
         sweep = np.linspace(lo, hi, 181)
-        for i in carriers:
+        for n, i in enumerate(carriers):
             pts = g.at(i, {j.q: sweep})
             d.add_points(pts)
             if g.is_angle(j.q):
                 style = "solid" if canonical in g.hint.solid else "path"
                 d.traces.append((pts, style))
-                _plan_angle(d, i, j, label, canonical)
+                if n == 0:  # one label per coordinate, however many bodies it moves
+                    _plan_angle(d, i, j, label, canonical)
             else:
-                d.traces.append((pts, "solid"))
-                _plan_length(d, i, j, label, pts, centre_of)
+                if g.constrained:  # the sweep traces a track; a free body has none
+                    d.traces.append((pts, "solid"))
+                if n == 0:
+                    _plan_length(d, i, j, label, pts, centre_of)
     _plan_time(d)
     for name, ends in g.hint.dimensions:
         a, b = (np.array([g.number(c) for c in g.project(p)]) for p in ends(ns))
@@ -378,7 +396,7 @@ def _plan_angle(d: _Drawing, body: int, j: mech.Jet, label: str, canonical: str)
         )
     zero = g.at(body, {j.q: np.array([0.0])})[0]
     arc = g.at(body, {j.q: np.linspace(0.0, pose, 40)})
-    rods = g.hint.rods
+    rods = g.hint.rods and g.constrained  # a free orbit (Kepler) hangs from nothing
 
     def draw(ax: Any, unit: float) -> None:
         ax.plot(
