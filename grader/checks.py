@@ -30,7 +30,7 @@ import sympy as sp
 
 from problem_bank.domains import Domain
 
-from .diagnose import plain
+from .diagnose import Mutant, plain
 from .equivalence import (
     Compiled,
     Outcome,
@@ -46,9 +46,11 @@ from .equivalence import (
     in_span,
     lagrangian_rows,
     lagrangians_match,
+    reference_values,
     row_rank,
     solve_accelerations,
     time_derivative_on_shell,
+    to_length,
     values_equal,
 )
 from .errors import ParseError, RequestError
@@ -410,10 +412,6 @@ def judge_lagrangian(
     witness is a point where the motion differs, when it does."""
     answer = Compiled.of(expr)
     points = problem.points("lagrangian", _free(problem, expr))
-    fast = _affine_to_reference(problem, answer, points)
-    if fast is not None:  # c (T − V) + k: the same motion, settled by values alone
-        notes = _factor_notes(fast.factor) + ([_CONSTANT_NOTE] if fast.shifted else [])
-        return ("correct", 1.0, notes, Outcome(True, "numeric", fast.worst), None, ())
     if _has_acceleration(problem, answer):  # before E(L), which needs an L(q, q̇, t)
         return (
             "incorrect",
@@ -423,6 +421,10 @@ def judge_lagrangian(
             None,
             ("acceleration",),
         )
+    fast = _affine_to_reference(problem, answer, points)
+    if fast is not None:  # c (T − V) + k: the same motion, settled by values alone
+        notes = _factor_notes(fast.factor) + ([_CONSTANT_NOTE] if fast.shifted else [])
+        return ("correct", 1.0, notes, Outcome(True, "numeric", fast.worst), None, ())
     match = lagrangians_match(answer, _reference_el(problem, points), problem.jets, points)
     out = match.outcome
     factors = np.array(match.factors)
@@ -487,15 +489,12 @@ _CONSTANT_NOTE = (
 
 def _affine_to_reference(problem: Problem, answer: Compiled, points: Points):
     """answer = c (T − V) + k at the points (see `affine_match`), or None."""
-    if answer.symbols & {j.ddot for j in problem.jets}:
-        return None
     try:
         with np.errstate(all="ignore"):
             values = answer.values(points.env)
     except (UnsupportedExpression, ValueError, ZeroDivisionError, OverflowError):
         return None
-    reference = problem.cached("L values", points, lambda: problem.L.values(points.env))
-    return affine_match(values, reference, points)
+    return affine_match(values, reference_values(problem.L, points), points)
 
 
 def _factor_notes(c: float | None) -> list[str]:
@@ -517,7 +516,7 @@ def _same_dynamics_notes(problem: Problem, answer: Compiled, match, points: Poin
     notes = _factor_notes(match.factor)
     with np.errstate(all="ignore"):
         a, sa = answer.values(points.env)
-        b, sb = problem.L.values(points.env)
+        b, sb = reference_values(problem.L, points)
         factors = np.array(match.factors)[points.group]
         d = np.broadcast_to(a - factors * b, (points.n,))
         size = np.broadcast_to(sa + np.abs(factors) * sb, (points.n,))
@@ -556,6 +555,31 @@ def check_lagrangian(problem: Problem, answer: Any, given: Mapping | None) -> Ve
     )
 
 
+def _incorrect(
+    part: str,
+    got: Read,
+    mutant: Mutant | None,
+    sentence: str,
+    witness: Mapping[str, float] | None,
+    method: str,
+) -> Verdict:
+    """A wrong single-expression answer: the named mistake (when the catalogue knows it),
+    then what is wrong, with a point where it shows."""
+    feedback = [_sentence(mutant.message)] if mutant is not None else []
+    feedback.append(sentence + _where(witness) + ".")
+    mistakes = (mutant.kind,) if mutant is not None else ()
+    return Verdict(
+        part,
+        "incorrect",
+        0.0,
+        tuple(feedback),
+        got.echo,
+        method,
+        witness=witness,
+        mistakes=mistakes,
+    )
+
+
 def check_kinetic(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
     got = _read_single(problem, answer, "T", "T")
     answer_c = Compiled.of(got.expr)
@@ -563,15 +587,14 @@ def check_kinetic(problem: Problem, answer: Any, given: Mapping | None) -> Verdi
     out = expressions_equal(answer_c, problem.kinetic, points)
     if out.equal:
         return Verdict("T", "correct", 1.0, (), got.echo, _method(out))
-    feedback, mistakes = [], ()
     mutant = problem.catalogue.match_plain(problem.catalogue.kinetic_mutants, answer_c, points)
-    if mutant is not None:
-        feedback.append(_sentence(mutant.message))
-        mistakes = (mutant.kind,)
-    w = _witness(points, out, answer_c)
-    feedback.append("Your T is not the kinetic energy of this system" + _where(w) + ".")
-    return Verdict(
-        "T", "incorrect", 0.0, tuple(feedback), got.echo, _method(out), witness=w, mistakes=mistakes
+    return _incorrect(
+        "T",
+        got,
+        mutant,
+        "Your T is not the kinetic energy of this system",
+        _witness(points, out, answer_c),
+        _method(out),
     )
 
 
@@ -589,17 +612,14 @@ def check_potential(problem: Problem, answer: Any, given: Mapping | None) -> Ver
                 "that is fine.",
             )
         return Verdict("V", "correct", 1.0, notes, got.echo, _method(out))
-    feedback, mistakes = [], ()
     mutant = problem.catalogue.match_offset(problem.catalogue.potential_mutants, answer_c, points)
-    if mutant is not None:
-        feedback.append(_sentence(mutant.message))
-        mistakes = (mutant.kind,)
-    w = _witness(points, out, answer_c)
-    feedback.append(
-        "Your V is not the potential energy of this system (up to a constant)" + _where(w) + "."
-    )
-    return Verdict(
-        "V", "incorrect", 0.0, tuple(feedback), got.echo, _method(out), witness=w, mistakes=mistakes
+    return _incorrect(
+        "V",
+        got,
+        mutant,
+        "Your V is not the potential energy of this system (up to a constant)",
+        _witness(points, out, answer_c),
+        _method(out),
     )
 
 
@@ -992,7 +1012,7 @@ def _conservation(
         total, size, _grad = time_derivative_on_shell(
             Q, jets, points.arrays(backend), acc(backend), backend
         )
-        return _full_length(total, points.n), _full_length(size, points.n)
+        return to_length(total, points.n, backend), to_length(size, points.n, backend)
 
     out = decide(residual)
     with np.errstate(all="ignore"):
@@ -1118,16 +1138,11 @@ def _conserved_by_own(problem: Problem, own: sp.Expr, Q: Compiled, points: Point
                 else solve_accelerations(lagrangian_rows(own_c, jets, env, backend), backend)
             )
             total, size, _grad = time_derivative_on_shell(Q, jets, env, a, backend)
-            return _full_length(total, points.n), _full_length(size, points.n)
+            return to_length(total, points.n, backend), to_length(size, points.n, backend)
 
         return decide(residual).equal
     except (UnsupportedExpression, ValueError, ZeroDivisionError, np.linalg.LinAlgError):
         return False
-
-
-def _full_length(x, n: int):
-    """A per-point array of length n (a constant comes out of the evaluator as a scalar)."""
-    return np.full(n, x) if np.ndim(x) == 0 else x
 
 
 def _gradient_rank(grads: Sequence[np.ndarray]) -> int:
@@ -1167,22 +1182,14 @@ def check_expression(problem: Problem, answer: Any, given: Mapping | None) -> Ve
         out = Outcome(False, "exact_then_adaptive", out.worst, out.where)
     if out.equal:
         return Verdict("expression", "correct", 1.0, (), got.echo, _method(out))
-    feedback, mistakes = [], ()
     mutant = problem.catalogue.match_plain(problem.catalogue.expression_mutants, ans, points)
-    if mutant is not None:
-        feedback.append(_sentence(mutant.message))
-        mistakes = (mutant.kind,)
-    w = _witness(points, out, ans, ref)
-    feedback.append("Your answer is not equal to the expected expression" + _where(w) + ".")
-    return Verdict(
+    return _incorrect(
         "expression",
-        "incorrect",
-        0.0,
-        tuple(feedback),
-        got.echo,
+        got,
+        mutant,
+        "Your answer is not equal to the expected expression",
+        _witness(points, out, ans, ref),
         out.method if decided is not None else _method(out),
-        witness=w,
-        mistakes=mistakes,
     )
 
 

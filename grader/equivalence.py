@@ -280,7 +280,7 @@ def _sum(items: Iterable):
     return total
 
 
-def _broadcast(x, n: int, backend=FLOAT):
+def to_length(x, n: int, backend=FLOAT):
     """x as an array of length n (constants come out of the evaluator as scalars)."""
     if np.ndim(x) == 0:
         return np.full(n, x, dtype=float if backend is FLOAT else object)
@@ -296,7 +296,7 @@ def finite_mask(compiled: Sequence[Compiled]) -> Callable[[dict], np.ndarray]:
         with np.errstate(all="ignore"):
             for c in compiled:
                 value, size = c.values(env)
-                ok &= np.isfinite(_broadcast(value, n)) & np.isfinite(_broadcast(size, n))
+                ok &= np.isfinite(to_length(value, n)) & np.isfinite(to_length(size, n))
         return ok
 
     return valid
@@ -305,13 +305,14 @@ def finite_mask(compiled: Sequence[Compiled]) -> Callable[[dict], np.ndarray]:
 # --- expressions -------------------------------------------------------------------------------
 
 
-def _reference_values(reference: Compiled, points: Points, backend) -> tuple:
+def reference_values(reference: Compiled, points: Points, backend=FLOAT) -> tuple:
     """A reference's (value, size) at the points; in float64 computed once per points."""
     env = points.arrays(backend)
     if backend is not FLOAT:
         return reference.values(env, backend)
     return _memo_inputs(
-        f"values:{id(reference)}", env, (), lambda: (reference, reference.values(env)))[1]
+        f"values:{id(reference)}", env, (), lambda: (reference, reference.values(env))
+    )[1]
 
 
 def expressions_equal(answer: Compiled, reference: Compiled, points: Points) -> Outcome:
@@ -320,8 +321,8 @@ def expressions_equal(answer: Compiled, reference: Compiled, points: Points) -> 
     def residual(backend):
         env = points.arrays(backend)
         a, sa = answer.values(env, backend)
-        b, sb = _reference_values(reference, points, backend)
-        return _broadcast(a - b, points.n, backend), _broadcast(sa + sb, points.n, backend)
+        b, sb = reference_values(reference, points, backend)
+        return to_length(a - b, points.n, backend), to_length(sa + sb, points.n, backend)
 
     return decide(residual)
 
@@ -333,10 +334,10 @@ def differ_by_constant(answer: Compiled, reference: Compiled, points: Points) ->
     def residual(backend):
         env = points.arrays(backend)
         a, sa = answer.values(env, backend)
-        b, sb = _reference_values(reference, points, backend)
-        d = _broadcast(a - b, points.n, backend)
+        b, sb = reference_values(reference, points, backend)
+        d = to_length(a - b, points.n, backend)
         first = d[_group_starts(points)]
-        return d - first, _broadcast(sa + sb, points.n, backend) + abs(first)
+        return d - first, to_length(sa + sb, points.n, backend) + abs(first)
 
     return decide(residual)
 
@@ -355,7 +356,7 @@ def values_equal(answer: Compiled, values: Callable[[object], tuple], points: Po
         env = points.arrays(backend)
         a, sa = answer.values(env, backend)
         b, sb = values(backend)
-        return _broadcast(a - b, points.n, backend), _broadcast(sa, points.n, backend) + abs(sb)
+        return to_length(a - b, points.n, backend), to_length(sa, points.n, backend) + abs(sb)
 
     return decide(residual)
 
@@ -384,7 +385,7 @@ def _memo_inputs(kind: str, env: Mapping, jets: Sequence[Jet], make: Callable[[]
 
 
 def _tile(x, copies: int, n: int, backend):
-    return np.tile(_broadcast(x, n, backend), copies)
+    return np.tile(to_length(x, n, backend), copies)
 
 
 def _unit_blocks(copies: int, n: int, hot: int, backend):
@@ -417,8 +418,8 @@ def euler_lagrange_values(L: Compiled, jets: Sequence[Jet], env: Mapping, backen
     E = np.zeros((n_pts, n), dtype=dtype)
     S = np.zeros((n_pts, n), dtype=dtype)
     for term in terms:
-        d = _broadcast(term[3], copies * n_pts, backend)
-        c = _broadcast(term[2], copies * n_pts, backend)
+        d = to_length(term[3], copies * n_pts, backend)
+        c = to_length(term[2], copies * n_pts, backend)
         for k in range(n):
             dk = d[k * n_pts : (k + 1) * n_pts]
             ck = c[(n + k) * n_pts : (n + k + 1) * n_pts]
@@ -456,6 +457,15 @@ def _el_seeds(jets: Sequence[Jet], env: Mapping, wanted, backend) -> dict:
     return seeds
 
 
+def common_factor(factors: Sequence[float]) -> float | None:
+    """The factor shared by every parameter group (within 1e-8), or None when they differ
+    (a factor that depends on the parameters) or there are none."""
+    if not factors:
+        return None
+    c0 = factors[0]
+    return c0 if all(abs(c - c0) <= 1e-8 * max(1.0, abs(c0)) for c in factors) else None
+
+
 @dataclass(frozen=True)
 class LagrangianMatch:
     """How a Lagrangian relates to a reference: E(L′) = c E(L) with c per parameter group."""
@@ -467,12 +477,7 @@ class LagrangianMatch:
     @property
     def factor(self) -> float | None:
         """The common factor c when all groups agree, else None."""
-        if not self.factors:
-            return None
-        c0 = self.factors[0]
-        if all(abs(c - c0) <= 1e-8 * max(1.0, abs(c0)) for c in self.factors):
-            return c0
-        return None
+        return common_factor(self.factors)
 
 
 @dataclass(frozen=True)
@@ -486,10 +491,7 @@ class AffineMatch:
     @property
     def factor(self) -> float | None:
         """The common factor c when all groups agree, else None."""
-        c0 = self.factors[0]
-        if all(abs(c - c0) <= 1e-8 * max(1.0, abs(c0)) for c in self.factors):
-            return c0
-        return None
+        return common_factor(self.factors)
 
 
 def affine_match(
@@ -570,9 +572,7 @@ def lagrangians_match(
         return r, s
 
     outcome = decide(residual)
-    return LagrangianMatch(
-        outcome, tuple(float(c) for c in found.get("c", ())), found.get("el")
-    )
+    return LagrangianMatch(outcome, tuple(float(c) for c in found.get("c", ())), found.get("el"))
 
 
 # --- equations linear in q̈: rows [A | c] at the points -------------------------------------------
@@ -643,8 +643,8 @@ def equation_rows(
     vals, sizes = [], []
     for eq in equations:
         v, s = eq.values(stacked, backend)
-        vals.append(_broadcast(v, n_all, backend))
-        sizes.append(_broadcast(s, n_all, backend))
+        vals.append(to_length(v, n_all, backend))
+        sizes.append(to_length(s, n_all, backend))
     return rows_from_values(np.stack(vals, axis=-1), np.stack(sizes, axis=-1), jets, env)
 
 
@@ -768,7 +768,7 @@ def gradient(expr: Compiled, variables: Sequence[sp.Symbol], env: Mapping, backe
             hd[v] = (hd[v][0], _unit_blocks(copies, n_pts, k, backend), 0, 0)
     per_term = []
     for term in expr.hyperdual(hd, backend):
-        d = _broadcast(term[1], copies * n_pts, backend)
+        d = to_length(term[1], copies * n_pts, backend)
         per_term.append(d.reshape(copies, n_pts).T)
     return per_term
 

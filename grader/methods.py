@@ -96,6 +96,19 @@ def _evaluate_float(program: ev.Program, env: Mapping[sp.Symbol, np.ndarray], n:
     return _as_float_array(a, n), _as_float_array(b, n)
 
 
+def _sampled(answer, reference, ranges_of, n: int, seed: int) -> tuple | None:
+    """(program, symbols, (a, b, env)) for the pair at n points where the reference is
+    defined, each symbol drawn in `ranges_of(symbols)`; None when the pair cannot be compiled
+    or too few points are usable (the method has no verdict)."""
+    program = _program(answer, reference)
+    if program is None:
+        return None
+    symbols = _free_symbols(answer, reference)
+    rng = np.random.default_rng(seed)
+    got = _usable_points(program, symbols, ranges_of(symbols), n, rng)
+    return None if got is None else (program, symbols, got)
+
+
 def _usable_points(
     program: ev.Program,
     symbols,
@@ -195,15 +208,10 @@ class FloatSampling:
         object.__setattr__(self, "name", f"float{self.points}pt_rtol{_fmt_tol(self.rtol)}")
 
     def decide(self, answer, reference, domains) -> bool | None:
-        program = _program(answer, reference)
-        if program is None:
+        sampled = _sampled(answer, reference, lambda s: _ranges(s, domains), self.points, self.seed)
+        if sampled is None:
             return None
-        symbols = _free_symbols(answer, reference)
-        rng = np.random.default_rng(self.seed)
-        got = _usable_points(program, symbols, _ranges(symbols, domains), self.points, rng)
-        if got is None:
-            return None
-        a, b, _ = got
+        a, b, _ = sampled[2]
         if not np.all(np.isfinite(a)):
             return False
         return bool(np.all(np.abs(a - b) <= self.rtol * np.maximum(np.abs(a), np.abs(b))))
@@ -571,15 +579,10 @@ class ExactThenAdaptive:
     name: str = "exact_then_adaptive"
 
     def decide(self, answer, reference, domains) -> bool | None:
-        program = _program(answer, reference)
-        if program is None:
+        sampled = _sampled(answer, reference, lambda s: _ranges(s, domains), self.points, self.seed)
+        if sampled is None:
             return None
-        symbols = _free_symbols(answer, reference)
-        rng = np.random.default_rng(self.seed)
-        got = _usable_points(program, symbols, _ranges(symbols, domains), self.points, rng)
-        if got is None:
-            return None
-        _, _, env = got
+        program, symbols, (_, _, env) = sampled
         n = len(next(iter(env.values()))) if env else 1
         with np.errstate(all="ignore"):
             (a, ea), (b, eb) = _bounded_run(program, env, ev.FLOAT)
@@ -669,9 +672,7 @@ class HybridDefault:
         from .equivalence import ReferenceUndefined, numeric_equivalent  # noqa: PLC0415
 
         try:
-            return bool(
-                numeric_equivalent(answer, reference, domains, seed=self.seed).equivalent
-            )
+            return bool(numeric_equivalent(answer, reference, domains, seed=self.seed).equivalent)
         except (ReferenceUndefined, ev.UnsupportedExpression):
             return None
 
@@ -699,15 +700,10 @@ class WeBWorK:
     name: str = "webwork"
 
     def decide(self, answer, reference, domains) -> bool | None:
-        program = _program(answer, reference)
-        if program is None:
+        sampled = _sampled(answer, reference, lambda s: [(-2.0, 2.0)] * len(s), 5, self.seed)
+        if sampled is None:
             return None
-        symbols = _free_symbols(answer, reference)
-        rng = np.random.default_rng(self.seed)
-        got = _usable_points(program, symbols, [(-2.0, 2.0)] * len(symbols), 5, rng)
-        if got is None:
-            return None
-        a, b, _ = got
+        a, b, _ = sampled[2]
         if not np.all(np.isfinite(a)):
             return False
         tol = np.where(np.abs(b) < 1e-14, 1e-12, 1e-3 * np.abs(b))
