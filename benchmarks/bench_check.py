@@ -31,9 +31,9 @@ sys.path.insert(0, str(ROOT))
 
 import sympy as sp  # noqa: E402
 
-from grader.check import Worker, run_batch  # noqa: E402
-from grader.diagnose import plain  # noqa: E402
-from problem_bank.bank import get_scene, scene_ids  # noqa: E402
+from lagrade.bank.registry import get_scene, scene_ids  # noqa: E402
+from lagrade.judge.catalogue import plain  # noqa: E402
+from lagrade.judge.check import Worker, run_batch  # noqa: E402
 from tests.grading.corpus import Item, corpus, expected_status  # noqa: E402
 
 
@@ -136,8 +136,8 @@ def judged_without_parsing(items: list[Item]) -> list[float]:
     pass parses (and derives each question), the timed second pass gets the same Parsed objects
     back, so the time is the judging and the feedback alone — simplify's footing, which also
     starts from parsed expressions. Everything else is the production code path."""
-    from grader import parse  # noqa: PLC0415
-    from grader.check import check_request  # noqa: PLC0415
+    from lagrade.judge.check import check_request
+    from lagrade.notation import parse
 
     names = ("parse_answer", "parse_equation", "parse_expression", "parse_equations")
     originals = {name: getattr(parse, name) for name in names}

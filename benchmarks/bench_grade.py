@@ -16,9 +16,9 @@ import tempfile
 import time
 from pathlib import Path
 
-from grader.batch import grade
-from grader.demo import write_submissions
-from problem_bank.assign import generate
+from lagrade.assign.generate import generate
+from lagrade.cli.demo import write_submissions
+from lagrade.grading.batch import grade
 
 ASSIGNMENT = """\
 title = "Grading benchmark"

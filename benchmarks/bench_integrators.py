@@ -27,9 +27,9 @@ import sympy as sp
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
-from problem_bank import mechanics as mech  # noqa: E402
-from problem_bank.bank import get_scene, scene_ids  # noqa: E402
-from problem_bank.integrate import METHOD, RTOL, integrate, parameter_values, right_hand_side  # noqa: E402
+from benchmarks.integrate import METHOD, RTOL, integrate, parameter_values, right_hand_side  # noqa: E402
+from lagrade.bank.registry import get_scene, scene_ids  # noqa: E402
+from lagrade.mechanics import lagrange as mech  # noqa: E402
 
 DOCS = ROOT / "docs"
 METHODS = ("RK45", "DOP853", "Radau", "LSODA")

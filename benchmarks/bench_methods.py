@@ -33,7 +33,7 @@ sys.path.insert(0, str(ROOT))
 
 from benchmarks.corpus import verify_labels  # noqa: E402
 from benchmarks.corpus.corpus import ParsedPair, load  # noqa: E402
-from grader.methods import DEFAULT_NAME, Method, all_methods  # noqa: E402
+from benchmarks.methods import DEFAULT_NAME, Method, all_methods  # noqa: E402
 
 DOCS = ROOT / "docs"
 _FORK = mp.get_context("fork")

@@ -22,8 +22,8 @@ from sympy.parsing.sympy_parser import (
     standard_transformations,
 )
 
-import problem_bank
-from grader.parse import Vocabulary, parse_answer
+from lagrade import bank
+from lagrade.notation.parse import Vocabulary, parse_answer
 
 TRANSFORMATIONS = standard_transformations + (implicit_multiplication_application, convert_xor)
 
@@ -32,7 +32,7 @@ def cases() -> list[tuple[str, str, str, Vocabulary, dict]]:
     """(label, our text, parse_expr text, vocabulary, parse_expr local dict)."""
     out = []
     for scene_id in ("wedge", "hoop"):
-        variant = problem_bank.get_scene(scene_id).default
+        variant = bank.get_scene(scene_id).default
         vocab = Vocabulary.from_variant(variant)
         local = {s.name: s for j in variant.jets for s in (j.q, j.dot, j.ddot)}
         local |= dict(variant.parameter_symbols)
@@ -41,7 +41,7 @@ def cases() -> list[tuple[str, str, str, Vocabulary, dict]]:
         for i, eq in enumerate(variant.euler_lagrange):
             text = f"{eq} = 0"
             out.append((f"{scene_id}: EL equation {i + 1}", text, str(eq), vocab, local))
-    wedge = problem_bank.get_scene("wedge").default
+    wedge = bank.get_scene("wedge").default
     vocab = Vocabulary.from_variant(wedge)
     local = {s.name: s for j in wedge.jets for s in (j.q, j.dot, j.ddot)} | dict(
         wedge.parameter_symbols
@@ -60,7 +60,7 @@ def cases() -> list[tuple[str, str, str, Vocabulary, dict]]:
             local,
         )
     )
-    hoop = problem_bank.get_scene("hoop").default
+    hoop = bank.get_scene("hoop").default
     vocab = Vocabulary.from_variant(hoop)
     local = {s.name: s for j in hoop.jets for s in (j.q, j.dot, j.ddot)} | dict(
         hoop.parameter_symbols

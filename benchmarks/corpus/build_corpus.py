@@ -31,8 +31,8 @@ ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT))
 
 from benchmarks.corpus.corpus import PAIRS, Pair, parse_pair  # noqa: E402
-from problem_bank import mechanics as mech  # noqa: E402
-from problem_bank.bank import get_scene, scene_ids  # noqa: E402
+from lagrade.bank.registry import get_scene, scene_ids  # noqa: E402
+from lagrade.mechanics import lagrange as mech  # noqa: E402
 
 #: How many rewrites and mutations to keep per bank expression (chosen by a seeded draw).
 REWRITES_PER_EXPRESSION = 4

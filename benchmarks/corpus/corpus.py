@@ -16,8 +16,8 @@ from pathlib import Path
 
 import sympy as sp
 
-from grader.parse import Vocabulary, parse_expression
-from problem_bank.domains import REAL, Domain
+from lagrade.mechanics.domains import REAL, Domain
+from lagrade.notation.parse import Vocabulary, parse_expression
 
 PAIRS = Path(__file__).with_name("pairs.jsonl")
 

@@ -6,8 +6,8 @@ from pathlib import Path
 
 import pytest
 
-from problem_bank import get_scene, scene_ids
-from problem_bank.assignment import PARTS
+from lagrade.assign.assignment import PARTS
+from lagrade.bank import get_scene, scene_ids
 
 
 def all_parts(scene_id: str) -> list:

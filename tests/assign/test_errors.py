@@ -6,11 +6,11 @@ from pathlib import Path
 
 import pytest
 
-from problem_bank import scene_ids
-from problem_bank.assign import generate
-from problem_bank.assignment import load_assignment
-from problem_bank.errors import AssignmentError
-from problem_bank.roster import load_roster, parse_roster
+from lagrade.assign.assignment import load_assignment
+from lagrade.assign.generate import generate
+from lagrade.assign.roster import load_roster, parse_roster
+from lagrade.bank import scene_ids
+from lagrade.errors import AssignmentError
 
 from .conftest import snapshot, write_assignment
 

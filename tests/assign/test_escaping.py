@@ -5,7 +5,7 @@ from __future__ import annotations
 import tomllib
 from pathlib import Path
 
-from problem_bank.assign import md_escape, tex_escape, toml_string
+from lagrade.assign.generate import md_escape, tex_escape, toml_string
 
 from .conftest import write_roster
 
@@ -19,7 +19,7 @@ HOSTILE = [
 
 
 def test_hostile_names(small_assignment: Path, tmp_path: Path) -> None:
-    from problem_bank.assign import generate
+    from lagrade.assign.generate import generate
 
     roster = write_roster(tmp_path / "r.csv", HOSTILE)
     out = tmp_path / "out"

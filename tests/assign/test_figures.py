@@ -6,8 +6,8 @@ import xml.etree.ElementTree as ET
 
 import pytest
 
-from problem_bank import get_scene, scene_ids
-from problem_bank.figures import draw
+from lagrade.assign.figures import draw
+from lagrade.bank import get_scene, scene_ids
 
 
 @pytest.mark.parametrize("scene_id", scene_ids())

@@ -7,7 +7,7 @@ from pathlib import Path
 
 import pytest
 
-from problem_bank.assign import PDFLATEX_HINT, generate
+from lagrade.assign.generate import PDFLATEX_HINT, generate
 
 from .conftest import write_roster
 

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import io
 
-from problem_bank.progress import ProgressBar
+from lagrade.cli.progress import ProgressBar
 
 
 def test_silent_when_not_a_terminal() -> None:

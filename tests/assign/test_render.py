@@ -7,8 +7,8 @@ import tomllib
 from html.parser import HTMLParser
 from pathlib import Path
 
-from problem_bank import scene_ids
-from problem_bank.assign import generate
+from lagrade.assign.generate import generate
+from lagrade.bank import scene_ids
 
 from .conftest import write_roster
 
@@ -66,8 +66,8 @@ def test_every_scene_renders_in_every_format(whole_bank: Path, tmp_path: Path) -
 def test_key_holds_the_derived_solution(
     small_assignment: Path, roster: Path, tmp_path: Path
 ) -> None:
-    from problem_bank import get_scene
-    from problem_bank.render_math import latex
+    from lagrade.bank import get_scene
+    from lagrade.notation.printer import latex
 
     out = tmp_path / "out"
     generate(small_assignment, roster, 3, out, ["md"])
@@ -104,7 +104,7 @@ def test_a_template_naming_a_missing_field_fails(
 ) -> None:
     import pytest
 
-    from problem_bank.errors import AssignmentError
+    from lagrade.errors import AssignmentError
 
     mine = tmp_path / "mine"
     mine.mkdir()

@@ -4,8 +4,8 @@ from __future__ import annotations
 
 import sympy as sp
 
-from problem_bank.mechanics import jet
-from problem_bank.render_math import latex, mathml, plain, symbol_names
+from lagrade.mechanics.lagrange import jet
+from lagrade.notation.printer import latex, mathml, plain, symbol_names
 
 
 def test_dots_over_the_letter_not_the_subscript() -> None:

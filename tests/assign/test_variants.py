@@ -4,8 +4,8 @@ from __future__ import annotations
 
 from collections import Counter
 
-from problem_bank.assignment import Part, Problem
-from problem_bank.variants import build_pool, digest, student_variants
+from lagrade.assign.assignment import Part, Problem
+from lagrade.assign.variants import build_pool, digest, student_variants
 
 WEDGE = Problem(1, "wedge", (Part("lagrangian", 1),))
 HOOP = Problem(2, "hoop", (Part("lagrangian", 1),))
@@ -23,7 +23,7 @@ def test_distinct_variants_while_the_pool_allows() -> None:
 
 
 def test_pool_is_reproducible_by_scene_variant() -> None:
-    from problem_bank import get_scene
+    from lagrade.bank import get_scene
 
     for choice in build_pool(WEDGE, 3, 10):
         v = get_scene("wedge").variant(choice.seed)

@@ -7,8 +7,8 @@ import sympy as sp
 from scipy.integrate import solve_ivp
 from sympy.physics import mechanics as me
 
-from problem_bank import mechanics as mech
-from problem_bank.scene import RigidBody, SceneVariant
+from lagrade.mechanics import lagrange as mech
+from lagrade.mechanics.scene import RigidBody, SceneVariant
 
 
 def to_dynamic(variant: SceneVariant):

@@ -8,7 +8,7 @@ drift stays below 1e-8 of the size of its terms, and a non-cyclic momentum must 
 import numpy as np
 import pytest
 
-from problem_bank import get_scene, scene_ids
+from lagrade.bank import get_scene, scene_ids
 
 from .crosscheck import evaluate_along, integrate, term_scale
 

@@ -3,7 +3,7 @@
 import pytest
 import sympy as sp
 
-from problem_bank import get_scene, scene_ids
+from lagrade.bank import get_scene, scene_ids
 
 from .crosscheck import lagranges_method_equations
 

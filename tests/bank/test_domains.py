@@ -5,8 +5,8 @@ from __future__ import annotations
 import pytest
 import sympy as sp
 
-from problem_bank.domains import Domain
-from problem_bank.errors import LagradeError
+from lagrade.errors import LagradeError
+from lagrade.mechanics.domains import Domain
 
 
 @pytest.mark.parametrize(

@@ -5,7 +5,7 @@ import sympy as sp
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from problem_bank import mechanics as mech
+from lagrade.mechanics import lagrange as mech
 
 m, g, l, k = sp.symbols("m g l k", positive=True)
 theta = mech.jet("theta")

@@ -8,8 +8,8 @@ import string
 
 import pytest
 
-from problem_bank import get_scene, scene_ids
-from problem_bank.scene import SceneVariant
+from lagrade.bank import get_scene, scene_ids
+from lagrade.mechanics.scene import SceneVariant
 
 LECTURE = (
     "free_particle",

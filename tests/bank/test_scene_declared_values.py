@@ -3,7 +3,7 @@
 import pytest
 import sympy as sp
 
-from problem_bank.scene import PointMass, Scene, as_expr, param
+from lagrade.mechanics.scene import PointMass, Scene, as_expr, param
 
 
 def test_numbers_and_expressions_pass_through():

@@ -12,8 +12,8 @@ import pytest
 import sympy as sp
 from sympy import cos, sin
 
-from problem_bank import SceneError
-from problem_bank.scene import PointMass, Scene, SceneVariant, gravity, param
+from lagrade.errors import SceneError
+from lagrade.mechanics.scene import PointMass, Scene, SceneVariant, gravity, param
 
 PENDULUM = Scene(
     id="test_pendulum",

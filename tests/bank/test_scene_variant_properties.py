@@ -9,7 +9,7 @@ import sympy as sp
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from problem_bank import get_scene, scene_ids
+from lagrade.bank import get_scene, scene_ids
 
 
 @settings(max_examples=40, deadline=None)

@@ -13,9 +13,9 @@ import numpy as np
 import pytest
 import sympy as sp
 
-from problem_bank import get_scene, scene_ids
-from problem_bank import mechanics as mech
-from problem_bank.scene import SceneVariant
+from lagrade.bank import get_scene, scene_ids
+from lagrade.mechanics import lagrange as mech
+from lagrade.mechanics.scene import SceneVariant
 
 
 # --- helpers --------------------------------------------------------------------------------

@@ -8,8 +8,8 @@ from pathlib import Path
 
 import pytest
 
-from grader.demo import write_submissions
-from problem_bank.assign import generate
+from lagrade.assign.generate import generate
+from lagrade.cli.demo import write_submissions
 
 ASSIGNMENT = """\
 title = "Batch test"

@@ -10,9 +10,9 @@ from pathlib import Path
 
 import pytest
 
-from grader import batch
-from grader.batch import grade
-from grader.isolation import Limits
+from lagrade.grading import batch
+from lagrade.grading.batch import grade
+from lagrade.judge.isolation import Limits
 
 
 def rows(out: Path) -> dict[str, dict[str, str]]:

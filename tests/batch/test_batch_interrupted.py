@@ -18,7 +18,7 @@ def grade_command(workspace: Path) -> list[str]:
     return [
         sys.executable,
         "-m",
-        "grader.cli",
+        "lagrade",
         "grade",
         str(workspace / "out" / "manifest.json"),
         str(workspace / "submissions"),

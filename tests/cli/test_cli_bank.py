@@ -4,8 +4,8 @@ import json
 
 import pytest
 
-from grader.cli import main
-from problem_bank import scene_ids
+from lagrade.bank import scene_ids
+from lagrade.cli.main import main
 
 REQUIRED_JSON_KEYS = {
     "coordinates",

@@ -1,57 +1,75 @@
-"""The front doors: what `problem_bank` and `grader` export is pinned, so a change is a decision."""
+"""The front doors: what `lagrade` and each layer export is pinned, so a change is a decision."""
 
-import grader
-import problem_bank
+import importlib
 
+import pytest
 
-def test_problem_bank_exports():
-    assert sorted(problem_bank.__all__) == [
-        "Domain",
-        "Jet",
-        "LagradeError",
-        "LagrangianSystem",
-        "Scene",
-        "SceneError",
-        "SceneVariant",
-        "UnknownSceneError",
-        "generate",
-        "get_scene",
-        "jet",
-        "scene_ids",
-        "total_derivative",
-    ]
-
-
-def test_grader_exports():
-    assert sorted(grader.__all__) == [
+EXPORTS = {
+    "lagrade": [
+        "AssignmentError",
         "GraderError",
+        "LagradeError",
         "ParseError",
         "Parsed",
         "RequestError",
+        "SceneError",
+        "UnknownSceneError",
         "Verdict",
         "Vocabulary",
+        "__version__",
         "check",
+        "generate",
+        "get_scene",
         "grade",
         "parse_answer",
         "parse_equations",
         "parse_expression",
-    ]
+        "scene_ids",
+    ],
+    "lagrade.mechanics": [
+        "Domain",
+        "Jet",
+        "LagrangianSystem",
+        "PointMass",
+        "Quantity",
+        "RigidBody",
+        "Scene",
+        "SceneVariant",
+        "jet",
+        "total_derivative",
+    ],
+    "lagrade.bank": ["get_scene", "scene_ids"],
+    "lagrade.notation": [
+        "Parsed",
+        "Vocabulary",
+        "parse_answer",
+        "parse_equation",
+        "parse_equations",
+        "parse_expression",
+    ],
+    "lagrade.judge": [
+        "PARTS",
+        "Problem",
+        "Verdict",
+        "build_problem",
+        "check",
+        "key_answer",
+        "run_checker",
+        "verify_variant",
+    ],
+    "lagrade.assign": ["Assignment", "Student", "generate", "load_assignment", "load_roster"],
+    "lagrade.grading": ["BatchSummary", "grade"],
+    "lagrade.cli": ["main"],
+}
 
 
-def test_every_export_exists():
-    for module in (problem_bank, grader):
-        for name in module.__all__:
-            assert getattr(module, name) is not None
+@pytest.mark.parametrize("module", sorted(EXPORTS))
+def test_exports_are_pinned(module):
+    assert sorted(importlib.import_module(module).__all__) == sorted(EXPORTS[module])
 
 
-def test_bank_never_imports_the_grader():
-    import pathlib
-    import re
-
-    root = pathlib.Path(problem_bank.__file__).parent
-    offenders = [
-        p.name
-        for p in root.rglob("*.py")
-        if re.search(r"^\s*(from|import)\s+grader\b", p.read_text(), re.M)
-    ]
-    assert offenders == []
+@pytest.mark.parametrize("module", sorted(EXPORTS))
+def test_every_export_exists(module):
+    loaded = importlib.import_module(module)
+    for name in loaded.__all__:
+        assert getattr(loaded, name) is not None

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import pytest
 
-from grader.check import check
+from lagrade.judge.check import check
 
 WEDGE = {"scene": "wedge"}
 HOOP = {"scene": "hoop"}

@@ -18,9 +18,9 @@ from functools import cache
 import mpmath
 import sympy as sp
 
-from grader.diagnose import plain  # noqa: I001
-from problem_bank import mechanics as mech
-from problem_bank.bank import get_scene, scene_ids
+from lagrade.bank.registry import get_scene, scene_ids
+from lagrade.judge.catalogue import plain
+from lagrade.mechanics import lagrange as mech
 
 DIGITS = 50
 POINTS = 5

@@ -8,7 +8,8 @@ import json
 
 import pytest
 
-from grader.check import (
+from lagrade.errors import RequestError
+from lagrade.judge.check import (
     Worker,
     add_check_arguments,
     check,
@@ -16,7 +17,6 @@ from grader.check import (
     run_batch,
     run_check_command,
 )
-from grader.errors import RequestError
 
 from .conftest import HOOP_ADHOC
 

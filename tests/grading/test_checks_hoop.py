@@ -79,7 +79,7 @@ def test_transformation_of_the_rotating_hoop():
 
 
 def test_adhoc_problem_errors_are_request_errors():
-    from grader.errors import RequestError
+    from lagrade.errors import RequestError
 
     with pytest.raises(RequestError, match="coordinates"):
         judge({"lagrangian": "theta_dot^2"}, "eom", ["theta_ddot = 0"])

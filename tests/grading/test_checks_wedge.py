@@ -142,9 +142,7 @@ def test_conserved_quantities_that_follow_from_the_students_own_wrong_lagrangian
     # without the student's L, or with a quantity that no motion conserves, no follow-through
     alone = judge(WEDGE, "conserved", own_conserved)
     assert alone.status == "incorrect" and not alone.follows_from_own_answer
-    mixed = judge(
-        WEDGE, "conserved", [own_conserved[0], "q_dot x_M"], given={"lagrangian": own_L}
-    )
+    mixed = judge(WEDGE, "conserved", [own_conserved[0], "q_dot x_M"], given={"lagrangian": own_L})
     assert mixed.status == "incorrect" and not mixed.follows_from_own_answer
     # a right answer stays right whatever the student's L
     right = judge(

@@ -7,10 +7,10 @@ import numpy as np
 import pytest
 import sympy as sp
 
-from grader.diagnose import Mutant, plain, swap_sin_cos
-from grader.equivalence import Compiled, _in_span_float, equation_rows, euler_lagrange_values
-from grader.evaluate import UnsupportedExpression
-from grader.problem import build_problem
+from lagrade.judge.catalogue import Mutant, plain, swap_sin_cos
+from lagrade.judge.equivalence import Compiled, _in_span_float, equation_rows, euler_lagrange_values
+from lagrade.judge.evaluate import UnsupportedExpression
+from lagrade.judge.problem import build_problem
 
 from .conftest import HOOP, WEDGE, judge
 
@@ -147,7 +147,7 @@ def test_mutations_that_change_nothing_are_left_out():
 
 
 def test_catalogue_is_built_for_every_scene():
-    from problem_bank.bank import scene_ids
+    from lagrade.bank.registry import scene_ids
 
     for sid in scene_ids():
         problem = build_problem({"scene": sid})

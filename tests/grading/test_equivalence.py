@@ -8,7 +8,8 @@ import numpy as np
 import pytest
 import sympy as sp
 
-from grader.equivalence import (
+from lagrade.bank import get_scene
+from lagrade.judge.equivalence import (
     Compiled,
     Space,
     affine_match,
@@ -24,9 +25,9 @@ from grader.equivalence import (
     solve_accelerations,
     time_derivative_on_shell,
 )
-from grader.evaluate import MP, UnsupportedExpression, compile_program, run
-from problem_bank import Domain, get_scene
-from problem_bank.mechanics import jet, t
+from lagrade.judge.evaluate import MP, UnsupportedExpression, compile_program, run
+from lagrade.mechanics import Domain
+from lagrade.mechanics.lagrange import jet, t
 
 x, y = sp.symbols("x y", real=True)
 q = jet("q")

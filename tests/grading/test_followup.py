@@ -3,9 +3,9 @@
 import pytest
 import sympy as sp
 
-from grader.followup import check_numeric_followup
-from grader.problem import build_problem
-from problem_bank import get_scene
+from lagrade.bank import get_scene
+from lagrade.judge.followup import check_numeric_followup
+from lagrade.judge.problem import build_problem
 
 SEED = 3
 

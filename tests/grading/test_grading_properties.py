@@ -9,9 +9,9 @@ import sympy as sp
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from grader.diagnose import plain
-from problem_bank import mechanics as mech
-from problem_bank.bank import get_scene
+from lagrade.bank.registry import get_scene
+from lagrade.judge.catalogue import plain
+from lagrade.mechanics import lagrange as mech
 
 from .conftest import judge
 from .corpus import _points, corpus, expected_status, lagrangian_label, single_term_mutations

@@ -3,11 +3,11 @@ every mistake of the catalogue: what `lagrade generate` checks before it writes 
 
 import pytest
 
-from grader.checks import run_checker
-from grader.problem import build_problem
-from grader.verify import verify_variant
-from problem_bank import get_scene, scene_ids
-from problem_bank.assignment import PARTS, Part
+from lagrade.assign.assignment import PARTS, Part
+from lagrade.bank import get_scene, scene_ids
+from lagrade.judge.checks import run_checker
+from lagrade.judge.problem import build_problem
+from lagrade.judge.verify import verify_variant
 
 
 @pytest.mark.parametrize("scene_id", scene_ids())
@@ -26,6 +26,11 @@ def test_dropping_the_magnetic_term_is_wrong_in_every_gauge(seed):
     variant = get_scene("charged_particle").variant(seed)
     problem = build_problem({"scene": "charged_particle", "seed": seed})
     x, y, z = (j.dot for j in variant.jets)
-    verdict = run_checker(problem, "lagrangian", "1/2 m (x_dot^2 + y_dot^2 + z_dot^2)".replace(
-        "x_dot", str(x)).replace("y_dot", str(y)).replace("z_dot", str(z)))
+    verdict = run_checker(
+        problem,
+        "lagrangian",
+        "1/2 m (x_dot^2 + y_dot^2 + z_dot^2)".replace("x_dot", str(x))
+        .replace("y_dot", str(y))
+        .replace("z_dot", str(z)),
+    )
     assert verdict.status == "incorrect"

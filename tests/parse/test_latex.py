@@ -5,11 +5,11 @@ from __future__ import annotations
 import pytest
 import sympy as sp
 
-from grader.errors import ParseError
-from grader.latex import translate
-from grader.lexer import Source
-from grader.parse import Vocabulary, parse_answer, parse_expression
-from problem_bank.mechanics import jet
+from lagrade.errors import ParseError
+from lagrade.mechanics.lagrange import jet
+from lagrade.notation.latex import translate
+from lagrade.notation.lexer import Source
+from lagrade.notation.parse import Vocabulary, parse_answer, parse_expression
 
 VOCAB = Vocabulary.from_names(["x_M", "q", "theta"], ["m", "M", "g", "alpha"])
 

@@ -10,8 +10,14 @@ import pickle
 
 import pytest
 
-from grader.errors import GraderError, ParseError
-from grader.parse import Vocabulary, parse_answer, parse_equation, parse_equations, parse_expression
+from lagrade.errors import GraderError, ParseError
+from lagrade.notation.parse import (
+    Vocabulary,
+    parse_answer,
+    parse_equation,
+    parse_equations,
+    parse_expression,
+)
 
 VOCAB = Vocabulary.from_names(
     ["theta", "x_M", "q", "x"],

@@ -11,8 +11,8 @@ from pathlib import Path
 import pytest
 import sympy.parsing.sympy_parser as sympy_parser
 
-from grader.errors import ParseError
-from grader.parse import Vocabulary, parse_answer, parse_equations
+from lagrade.errors import ParseError
+from lagrade.notation.parse import Vocabulary, parse_answer, parse_equations
 
 VOCAB = Vocabulary.from_names(["theta", "x"], ["m", "g", "l"], ["L"])
 SENTINEL = Path("/tmp/lagrade_parse_hostile_sentinel")

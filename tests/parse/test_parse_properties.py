@@ -9,9 +9,9 @@ import sympy as sp
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from grader.errors import ParseError
-from grader.parse import MAX_LENGTH, Vocabulary, parse_answer, parse_expression
-from problem_bank.mechanics import jet, t
+from lagrade.errors import ParseError
+from lagrade.mechanics.lagrange import jet, t
+from lagrade.notation.parse import MAX_LENGTH, Vocabulary, parse_answer, parse_expression
 
 VOCAB = Vocabulary.from_names(["theta", "x_M"], ["m", "g", "R", "omega"], ["L"])
 TH, XM = jet("theta"), jet("x_M")

@@ -31,9 +31,15 @@ from sympy import (
     tanh,
 )
 
-from grader.parse import Vocabulary, parse_answer, parse_equation, parse_equations, parse_expression
-from problem_bank.domains import Domain
-from problem_bank.mechanics import jet, t
+from lagrade.mechanics.domains import Domain
+from lagrade.mechanics.lagrange import jet, t
+from lagrade.notation.parse import (
+    Vocabulary,
+    parse_answer,
+    parse_equation,
+    parse_equations,
+    parse_expression,
+)
 
 COORDINATES = ("theta", "phi", "x_M", "q", "r", "x", "theta_1", "theta2")
 PARAMETERS = {
@@ -427,9 +433,9 @@ def test_pi_declared_as_a_parameter_is_the_parameter() -> None:
 
 
 def test_parameters_are_the_very_symbols_of_the_reference() -> None:
-    import problem_bank
+    from lagrade import bank
 
-    variant = problem_bank.get_scene("wedge").default
+    variant = bank.get_scene("wedge").default
     vocab = Vocabulary.from_variant(variant)
     reference = variant.lagrangian
     parsed = parse_expression(str(reference), vocab)

@@ -1,5 +1,5 @@
 """Where equivalence methods break, pinned: each hard case of the corpus that some method gets
-wrong is a regression test that the default (grader.equivalence.expressions_equivalent, which
+wrong is a regression test that the default (lagrade.judge.adaptive.ExactThenAdaptive, which
 is `exact_then_adaptive`) must get right — and the test also checks that the named weak method
 still gets it wrong, so the case stays hard. The cases that made the study replace the previous
 default (`numeric_hybrid`) are pinned the same way; the default must decide every hard case.
@@ -11,7 +11,8 @@ from __future__ import annotations
 
 import pytest
 
-from grader.methods import DEFAULT_NAME, ExactThenAdaptive, Method, all_methods, method_named
+from benchmarks.methods import DEFAULT_NAME, Method, all_methods, method_named
+from lagrade.judge.adaptive import ExactThenAdaptive
 
 # (pair id, a method that gets it wrong) — the default decides each of these correctly.
 PINS = [

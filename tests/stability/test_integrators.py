@@ -8,9 +8,9 @@ import numpy as np
 import pytest
 import sympy as sp
 
-from problem_bank import mechanics as mech
-from problem_bank.bank import get_scene
-from problem_bank.integrate import ATOL, METHOD, RTOL, integrate, parameter_values
+from benchmarks.integrate import ATOL, METHOD, RTOL, integrate, parameter_values
+from lagrade.bank.registry import get_scene
+from lagrade.mechanics import lagrange as mech
 
 
 def relative_drift(variant, expr: sp.Expr, sol) -> float:
@@ -63,7 +63,7 @@ def test_kepler_angular_momentum_drifts_with_lsoda_at_1e_6():
 
 
 def test_default_is_what_the_docstring_names():
-    import problem_bank.integrate as integrate_module
+    import benchmarks.integrate as integrate_module
 
     assert f"{METHOD}" in integrate_module.__doc__
     assert f"{RTOL:g}" in integrate_module.__doc__ and ATOL == RTOL

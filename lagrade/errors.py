@@ -1,0 +1,146 @@
+"""The one error tree of lagrade: every error a user can act on, and nothing else.
+
+    LagradeError                    anything a user can fix; str() says what to do next
+    ├── DomainError                 a parameter domain that cannot be read ('(0, pi/2)' is fine)
+    ├── SceneError                  an inconsistent scene declaration (lists every problem)
+    ├── UnknownSceneError           a scene id the bank does not have (lists the ids)
+    ├── AssignmentError             an assignment file, roster, manifest or folder unusable as given
+    └── GraderError                 reading and judging answers
+        ├── ParseError              student text that does not parse (message, span, source, hint)
+        ├── RequestError            a grading request or problem definition that is malformed
+        ├── UnsupportedExpression   something the numeric evaluator cannot compute (names it)
+        └── ReferenceUndefined      a reference with no finite value anywhere on its domains
+
+A broken invariant in our own code is an assertion, never one of these. Every class pickles, so
+an error crosses from a worker process to the parent with its type.
+"""
+
+from __future__ import annotations
+
+import unicodedata
+
+
+class LagradeError(Exception):
+    """Base of every error a user of lagrade can act on."""
+
+
+class DomainError(LagradeError, ValueError):
+    """A parameter domain that cannot be read."""
+
+
+class SceneError(LagradeError):
+    """A scene whose declaration is inconsistent; `problems` lists each one, naming its field."""
+
+    def __init__(self, scene_id: str, problems: list[str]):
+        self.scene_id = scene_id
+        self.problems = list(problems)
+        lines = "\n".join(f"  - {p}" for p in self.problems)
+        super().__init__(f"scene {scene_id!r} is not valid:\n{lines}")
+
+    def __reduce__(self):
+        return (SceneError, (self.scene_id, self.problems))
+
+
+class UnknownSceneError(LagradeError, KeyError):
+    """A scene id that the bank does not have."""
+
+    def __init__(self, scene_id: str, known: list[str]):
+        self.scene_id = scene_id
+        self.known = list(known)
+        super().__init__(scene_id)
+
+    def __str__(self) -> str:
+        return f"unknown scene {self.scene_id!r}; the bank has: {', '.join(self.known)}"
+
+    def __reduce__(self):
+        return (UnknownSceneError, (self.scene_id, self.known))
+
+
+class AssignmentError(LagradeError):
+    """An assignment file, roster or output location that cannot be used as given."""
+
+
+class GraderError(LagradeError):
+    """Base of the errors of reading and judging answers."""
+
+
+class RequestError(GraderError):
+    """A grading request (problem definition, part name, answer shape) that cannot be used."""
+
+
+class UnsupportedExpression(GraderError):
+    """An expression that contains something the numeric evaluator does not know (an undefined
+    function, an unknown symbol, a complex constant); the message names it."""
+
+
+class ReferenceUndefined(GraderError):
+    """The reference has no finite value at any point that could be drawn from the domains."""
+
+
+class ParseError(GraderError):
+    """Student text that cannot be read: a plain message, the span (start, end) of the offending
+    characters in `source`, and optionally a hint; str() adds the source line and a caret.
+
+    Built only by `lagrade.notation.lexer.Source.fail`, so every parse failure carries a position.
+    """
+
+    def __init__(
+        self,
+        message: str,
+        span: tuple[int, int] = (0, 0),
+        source: str = "",
+        hint: str | None = None,
+    ):
+        super().__init__(message)
+        self.message = message
+        self.span = (int(span[0]), int(span[1]))
+        self.source = source
+        self.hint = hint
+
+    @property
+    def position(self) -> int:
+        """0-based index of the first offending character."""
+        return self.span[0]
+
+    def __reduce__(self):
+        return (ParseError, (self.message, self.span, self.source, self.hint))
+
+    def __str__(self) -> str:
+        lines = [self.message]
+        if self.source:
+            line, column, width = _caret_window(self.source, *self.span)
+            lines += ["  " + line, "  " + " " * column + "^" * width]
+        if self.hint:
+            lines.append(f"Hint: {self.hint}")
+        return "\n".join(lines)
+
+
+def _caret_window(source: str, start: int, end: int, room: int = 72) -> tuple[str, int, int]:
+    """The source line holding `start`, cut to about `room` characters around the span, with
+    unprintable characters shown as '?', and the caret's column and width on it."""
+    start = max(0, min(start, len(source)))
+    end = max(start, min(end, len(source)))
+    line_start = source.rfind("\n", 0, start) + 1
+    line_end = source.find("\n", start)
+    line_end = len(source) if line_end < 0 else line_end
+    end = min(end, line_end)
+    lo = max(line_start, start - room // 2)
+    hi = min(line_end, lo + room)
+    prefix = "…" if lo > line_start else ""
+    suffix = "…" if hi < line_end else ""
+    shown, column, width = [], len(prefix), 0
+    for i in range(lo, hi):
+        c = source[i]
+        if unicodedata.combining(c):
+            shown.append(c)  # draws on the previous character: takes no column
+            continue
+        if c == "\t":
+            c = " "
+        elif unicodedata.category(c)[0] in "CZ" and c != " ":
+            c = "?"  # invisible, bidirectional or control: never echo it raw to a terminal
+        shown.append(c)
+        if i < start:
+            column += 1
+        elif i < end:
+            width += 1
+    return prefix + "".join(shown) + suffix, column, max(1, width)

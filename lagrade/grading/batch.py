@@ -1,0 +1,491 @@
+"""Grade a folder of answer sheets against a generated assignment's manifest.
+
+Every student on the roster gets exactly one result: graded, or `missing`, `invalid`, `timeout`
+or `error` with its reason. Each submission is graded in its own forked process with CPU,
+memory and wall-clock limits (a hostile file costs only its author); each part has its own time
+limit inside it. Results are written atomically as they arrive, and a rerun reuses every result
+whose submission, variant, rubric and grader version are unchanged.
+"""
+
+from __future__ import annotations
+
+import functools
+import gc
+import hashlib
+import json
+import signal
+from collections.abc import Callable, Mapping
+from contextlib import contextmanager
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+from lagrade.assign.generate import project_version
+from lagrade.bank.registry import get_scene
+from lagrade.errors import AssignmentError, LagradeError
+from lagrade.grading import atomic, report
+from lagrade.grading.rubric import Rubric, load_rubric
+from lagrade.grading.submission import UnreadableAnswer, find_submission, read_sheet
+from lagrade.judge.check import prepare
+from lagrade.judge.checks import Verdict, run_checker
+from lagrade.judge.followup import check_numeric_followup
+from lagrade.judge.isolation import Limits, run_isolated
+from lagrade.judge.key import key_answer
+from lagrade.judge.problem import Problem, build_problem
+from lagrade.mechanics.scene import SceneVariant
+
+#: Parts whose answer sheet field holds one item per line.
+MULTILINE = frozenset({"transformation", "eom", "momenta", "conserved"})
+#: Parts that can follow from the student's own Lagrangian.
+FOLLOW_L = frozenset({"eom", "momenta", "cyclic", "conserved"})
+STATUSES = ("graded", "missing", "invalid", "timeout", "error")
+
+
+@dataclass(frozen=True)
+class BatchSummary:
+    """What a grading run did: counts by status, where the outputs are, what was reused."""
+
+    out_dir: Path
+    counts: dict[str, int]
+    reused: int
+    results: list[dict[str, Any]] = field(repr=False)
+
+    @property
+    def all_graded(self) -> bool:
+        return self.counts.get("graded", 0) == sum(self.counts.values())
+
+
+class PartTimeout(Exception):
+    """A part's own time limit ran out (raised by SIGALRM inside the grading child)."""
+
+
+@contextmanager
+def _alarm(seconds: float):
+    """Interrupt Python-level work after `seconds` (the child's CPU limit backs up C loops)."""
+
+    def ring(signum, frame):
+        raise PartTimeout
+
+    previous = signal.signal(signal.SIGALRM, ring)
+    signal.setitimer(signal.ITIMER_REAL, seconds)
+    try:
+        yield
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, previous)
+
+
+# --- the manifest -------------------------------------------------------------------------------
+
+
+def load_manifest(path: Path) -> dict[str, Any]:
+    """Read manifest.json and check that the bank still reproduces every variant in it."""
+    try:
+        manifest = json.loads(Path(path).read_text(encoding="utf-8"))
+    except FileNotFoundError:
+        raise AssignmentError(f"no manifest at {path}; run `lagrade generate` first") from None
+    except (OSError, UnicodeDecodeError, json.JSONDecodeError) as error:
+        raise AssignmentError(f"cannot read the manifest {path}: {error}") from None
+    if not isinstance(manifest, dict) or manifest.get("format") != "lagrade-manifest/1":
+        raise AssignmentError(f"{path} is not a lagrade manifest (format lagrade-manifest/1)")
+    mismatches = []
+    for student in manifest["students"]:
+        for entry in student["problems"]:
+            variant = student_variant(entry["scene"], entry["seed"])
+            if (
+                variant.names != entry["names"]
+                or variant.options != entry["options"]
+                or {k: float(v) for k, v in variant.values.items()}
+                != {k: float(v) for k, v in entry["values"].items()}
+            ):
+                mismatches.append(f"{student['id']} problem {entry['index']} ({entry['scene']})")
+    if mismatches:
+        raise AssignmentError(
+            "the bank no longer reproduces these variants, so grading would not match the "
+            f"handouts: {', '.join(mismatches[:10])}" + (" …" if len(mismatches) > 10 else "")
+        )
+    return manifest
+
+
+def _rubric(manifest_path: Path, manifest: dict) -> Rubric:
+    info = manifest["assignment"]
+    copy = manifest_path.parent / info.get("file", "assignment.toml")
+    if not copy.exists():
+        return Rubric()
+    if hashlib.sha256(copy.read_bytes()).hexdigest() != info.get("sha256"):
+        raise AssignmentError(f"{copy} changed after the assignment was generated; restore it")
+    try:
+        return load_rubric(copy)
+    except LagradeError as error:
+        raise AssignmentError(str(error)) from None
+
+
+# --- grading one student -------------------------------------------------------------------------
+
+_problems: dict[str, Problem] = {}
+
+
+@functools.lru_cache(maxsize=4096)
+def student_variant(scene_id: str, seed: int) -> SceneVariant:
+    """A student's variant, built once per process (the manifest check, the question key and
+    the numeric follow-ups all ask for it, once per part of every submission otherwise)."""
+    return get_scene(scene_id).variant(seed)
+
+
+def _question_key(spec: Mapping[str, Any]) -> str:
+    """What a symbolic question depends on: the scene, the variant's names and options, the
+    quantity — not its numbers, which only numeric follow-ups use (each with its own variant).
+    A class of 1,000 with 1,000 seeds asks only a handful of distinct symbolic questions."""
+    variant = student_variant(spec["scene"], spec["seed"])
+    return json.dumps(
+        [spec["scene"], variant.names, variant.options, spec.get("quantity")], sort_keys=True
+    )
+
+
+def question(spec: Mapping[str, Any]) -> Problem:
+    """The Problem of a manifest entry, shared by every student who was asked the same thing."""
+    key = _question_key(spec)
+    if key not in _problems:
+        _problems[key] = build_problem(dict(spec))
+    return _problems[key]
+
+
+def _spec(entry: Mapping[str, Any], part: Mapping[str, Any]) -> dict[str, Any]:
+    spec = {"scene": entry["scene"], "seed": entry["seed"]}
+    if part["part"] == "expression":
+        spec["quantity"] = part["quantity"]
+    return spec
+
+
+def warm_up(manifest: dict) -> None:
+    """Derive every reference the batch needs in the parent, so forked children share it.
+
+    Besides `prepare`, each distinct question is asked its own key once: that fills the lazy
+    caches a real answer touches (compiled mutants, sample points, reference values), which a
+    child would otherwise rebuild and throw away for every submission (measured: about 3× the
+    grading time of a warm process)."""
+    seen = set()
+    for student in manifest["students"]:
+        for entry, problem in zip(student["problems"], manifest["problems"], strict=True):
+            for part in problem["parts"]:
+                if part["part"] == "coordinates":
+                    continue
+                spec = _spec(entry, part)
+                key = (_question_key(spec), part["part"])
+                if key in seen:
+                    continue
+                seen.add(key)
+                asked = question(spec)
+                prepare(asked, part["part"])
+                if part["part"] != "expression" and asked.variant is not None:
+                    _warm_with_key(asked, part)
+
+
+def _warm_with_key(question: Problem, part: Mapping[str, Any]) -> None:
+    """Ask a question its own key (trusted: `generate` verified it), under a time limit; a
+    failure here only means a colder start for the children, never a stopped batch."""
+    name = part["part"]
+    variant = question.variant
+    given = {"lagrangian": key_answer(variant, "lagrangian")} if name in FOLLOW_L else None
+    try:
+        with _alarm(10.0):
+            run_checker(question, name, key_answer(variant, name, part.get("quantity")), given)
+    except (PartTimeout, LagradeError, ArithmeticError, ValueError):
+        pass
+
+
+def _as_lines(answer: Any) -> list[str]:
+    if isinstance(answer, list):
+        return [line for item in answer for line in item.splitlines() if line.strip()]
+    return [line for line in str(answer).splitlines() if line.strip()]
+
+
+def _blank(answer: Any) -> bool:
+    if isinstance(answer, list):
+        return not any(str(a).strip() for a in answer)
+    return not str(answer).strip()
+
+
+def _check_coordinates(entry: Mapping[str, Any], answer: str) -> Verdict:
+    """Generalized coordinates: exactly the problem's coordinates (any order, commas or spaces)."""
+    given = [n for n in answer.replace(";", ",").replace(",", " ").split() if n]
+    wanted = list(entry["coordinates"])
+    if sorted(given) == sorted(wanted):
+        return Verdict("coordinates", "correct", 1.0, (), ", ".join(given), "exact")
+    feedback = f"This problem uses {len(wanted)} generalized coordinates ({', '.join(wanted)})."
+    return Verdict("coordinates", "incorrect", 0.0, (feedback,), ", ".join(given), "exact")
+
+
+def grade_part(
+    entry: Mapping[str, Any],
+    part: Mapping[str, Any],
+    answer: Any,
+    given: dict[str, Any],
+    rubric: Rubric,
+    time_limit: float,
+) -> dict[str, Any]:
+    """One part's result: the verdict, the points it earns and the feedback."""
+    name = part["part"]
+    if answer is None or (not isinstance(answer, UnreadableAnswer) and _blank(answer)):
+        verdict = Verdict(
+            name, "incorrect", 0.0, ("Not answered.",), "", "blank", mistakes=("blank",)
+        )
+    elif isinstance(answer, UnreadableAnswer):
+        verdict = Verdict(
+            name,
+            "invalid",
+            0.0,
+            (f"This answer is a {answer.kind}; write it as a string.",),
+            "",
+            "parse",
+        )
+    else:
+        try:
+            with _alarm(time_limit):
+                verdict = _judge(entry, part, answer, given, rubric)
+        except PartTimeout:
+            verdict = Verdict(
+                name,
+                "timeout",
+                0.0,
+                (
+                    f"Checking this answer took longer than {time_limit:g} s; it was "
+                    "stopped and needs a look by the instructor.",
+                ),
+                "",
+                "timeout",
+            )
+    share = rubric.fraction(
+        verdict.status, verdict.score, verdict.mistakes, verdict.follows_from_own_answer
+    )
+    return {
+        "key": part["key"],
+        "part": name,
+        "verdict": verdict.status,
+        "points": round(share * float(part["points"]), 6),
+        "max_points": float(part["points"]),
+        "feedback": list(verdict.feedback),
+        "interpreted": verdict.interpreted,
+        "method": verdict.method,
+        "mistakes": list(verdict.mistakes),
+        "follows_from_own_answer": verdict.follows_from_own_answer,
+    }
+
+
+def _judge(entry, part, answer, given, rubric: Rubric) -> Verdict:
+    name = part["part"]
+    if name == "coordinates":
+        return _check_coordinates(entry, answer if isinstance(answer, str) else " ".join(answer))
+    problem = question(_spec(entry, part))
+    if name == "expression":
+        text = answer if isinstance(answer, str) else " ".join(answer)
+        own = student_variant(entry["scene"], entry["seed"])  # this student's numbers
+        tolerance = rubric.numeric_tolerance
+        return check_numeric_followup(own, problem, part["quantity"], text, tolerance)
+    value: Any = (
+        _as_lines(answer)
+        if name in MULTILINE
+        else (answer if isinstance(answer, str) else "\n".join(answer))
+    )
+    if name == "cyclic" and isinstance(value, str):
+        value = [n for n in value.replace(";", ",").replace("\n", ",").split(",") if n.strip()]
+        value = [n.strip() for n in value]
+        if [n.lower() for n in value] == ["none"]:
+            value = []
+    return run_checker(problem, name, value, given if name in FOLLOW_L else None)
+
+
+def grade_student(task: Mapping[str, Any]) -> dict[str, Any]:
+    """Grade one student's sheet (runs inside the isolated child)."""
+    student, manifest, rubric = task["student"], task["manifest"], task["rubric"]
+    problems = manifest["problems"]
+    sheet = read_sheet(Path(task["path"]), student["id"], len(problems))
+    base = {"warnings": list(sheet.warnings) + ([task["note"]] if task.get("note") else [])}
+    if not sheet.readable:
+        return {**base, "status": "invalid", "reason": sheet.reason, "problems": []}
+    graded = []
+    timeouts = []
+    for problem, entry in zip(problems, student["problems"], strict=True):
+        answers = sheet.answers.get(problem["index"], {})
+        given: dict[str, Any] = {}
+        if (
+            "lagrangian" in answers
+            and isinstance(answers["lagrangian"], str)
+            and answers["lagrangian"].strip()
+        ):
+            given["lagrangian"] = answers["lagrangian"]
+        parts = [
+            grade_part(
+                entry, part, answers.get(part["key"]), given, rubric, task["part_time_limit"]
+            )
+            for part in problem["parts"]
+        ]
+        timeouts += [
+            f"problem {problem['index']} {p['key']}" for p in parts if p["verdict"] == "timeout"
+        ]
+        graded.append(_problem_result(problem, entry, parts))
+    status, reason = "graded", ""
+    if timeouts:
+        status, reason = "timeout", "ran out of time on " + ", ".join(timeouts)
+    return {**base, "status": status, "reason": reason, "problems": graded}
+
+
+def _problem_result(problem: Mapping, entry: Mapping, parts: list[dict]) -> dict[str, Any]:
+    return {
+        "index": problem["index"],
+        "scene": entry["scene"],
+        "title": problem["title"],
+        "score": round(sum(p["points"] for p in parts), 6),
+        "max_score": float(sum(p["max_points"] for p in parts)),
+        "parts": parts,
+    }
+
+
+# --- the batch ----------------------------------------------------------------------------------
+
+
+def _fingerprint(path: Path | None, student: Mapping, rubric: Rubric, version: str) -> str:
+    """What a result depends on: the submission's bytes (streamed, whatever their size), the
+    student's variant, the rubric and the grader's version."""
+    h = hashlib.sha256()
+    h.update(json.dumps([student, rubric.as_dict(), version], sort_keys=True).encode())
+    if path is None:
+        h.update(b"\x00<missing>")
+        return h.hexdigest()
+    h.update(b"\x00")
+    with path.open("rb") as f:
+        for chunk in iter(lambda: f.read(1 << 20), b""):
+            h.update(chunk)
+    return h.hexdigest()
+
+
+def _finish(
+    student: Mapping, manifest: Mapping, outcome: dict[str, Any], fingerprint: str, version: str
+) -> dict[str, Any]:
+    """The full per-student result: identity, status, totals, problems, provenance."""
+    max_score = float(
+        manifest["assignment"].get("total_points")
+        or sum(float(p["points"]) for prob in manifest["problems"] for p in prob["parts"])
+    )
+    problems = outcome.get("problems", [])
+    score = round(sum(p["score"] for p in problems), 6)
+    return {
+        "student": {"id": student["id"], "name": student["name"]},
+        "status": outcome["status"],
+        "reason": outcome.get("reason", ""),
+        "warnings": outcome.get("warnings", []),
+        "score": score,
+        "max_score": max_score,
+        "problems": problems,
+        "fingerprint": fingerprint,
+        "lagrade_version": version,
+    }
+
+
+def grade(
+    manifest_path: Path,
+    submissions: Path,
+    out_dir: Path | None = None,
+    *,
+    jobs: int = 1,
+    part_time_limit: float = 2.0,
+    limits: Limits | None = None,
+    progress: Callable[[int, int, str], None] | None = None,
+) -> BatchSummary:
+    """Grade every roster student's sheet in `submissions`; write results into `out_dir`
+    (default: `grades/` beside the manifest). See the module docstring for the guarantees."""
+    manifest_path = Path(manifest_path)
+    submissions = Path(submissions)
+    if not submissions.is_dir():
+        raise AssignmentError(f"submissions folder {submissions} does not exist")
+    manifest = load_manifest(manifest_path)
+    rubric = _rubric(manifest_path, manifest)
+    out = Path(out_dir) if out_dir is not None else manifest_path.parent / "grades"
+    out.mkdir(parents=True, exist_ok=True)
+    atomic.remove_stale_temporaries(out)
+    version = project_version()
+    students = manifest["students"]
+    limits = limits or Limits(
+        cpu_seconds=int(30 + 4 * part_time_limit * _part_count(manifest)),
+        wall_seconds=20 + 3 * part_time_limit * _part_count(manifest),
+    )
+
+    results: dict[str, dict[str, Any]] = {}
+    tasks = []
+    reused = 0
+    for student in students:
+        path, note = find_submission(submissions, student["id"])
+        fingerprint = _fingerprint(path, student, rubric, version)
+        previous = report.read_student_result(out, student["id"])
+        if previous is not None and previous.get("fingerprint") == fingerprint:
+            results[student["id"]] = previous
+            reused += 1
+            continue
+        if path is None:
+            outcome = {
+                "status": "missing",
+                "reason": "no answer sheet was submitted",
+                "problems": [],
+            }
+            results[student["id"]] = _store(
+                out, manifest, _finish(student, manifest, outcome, fingerprint, version)
+            )
+            continue
+        tasks.append(
+            (
+                student["id"],
+                {
+                    "student": student,
+                    "manifest": manifest,
+                    "rubric": rubric,
+                    "path": str(path),
+                    "note": note,
+                    "part_time_limit": part_time_limit,
+                    "fingerprint": fingerprint,
+                },
+            )
+        )
+
+    if tasks:
+        warm_up(manifest)
+        # Children are forked: keep the collector off the parent's (now immortal) objects, or
+        # every child would touch, and so copy, the whole heap (measured: half its time).
+        gc.collect()
+        gc.freeze()
+    by_id = {s["id"]: s for s in students}
+    done = len(results)
+    for outcome in run_isolated(grade_student, tasks, jobs=jobs, limits=limits):
+        student = by_id[outcome.key]
+        fingerprint = dict(tasks)[outcome.key]["fingerprint"]
+        if outcome.status == "ok":
+            value = outcome.value
+        elif outcome.status == "timeout":
+            value = {"status": "timeout", "reason": f"grading {outcome.reason}", "problems": []}
+        else:
+            report.log_error(out, student["id"], outcome.reason)
+            value = {
+                "status": "error",
+                "reason": "the grader failed on this submission "
+                "(logged in errors.log); the instructor should look at it",
+                "problems": [],
+            }
+        results[student["id"]] = _store(
+            out, manifest, _finish(student, manifest, value, fingerprint, version)
+        )
+        done += 1
+        if progress:
+            progress(done, len(students), student["id"])
+
+    ordered = [results[s["id"]] for s in students]
+    report.write_class_reports(out, manifest, ordered)
+    counts = {s: sum(1 for r in ordered if r["status"] == s) for s in STATUSES}
+    return BatchSummary(out, counts, reused, ordered)
+
+
+def _part_count(manifest: Mapping) -> int:
+    return sum(len(p["parts"]) for p in manifest["problems"])
+
+
+def _store(out: Path, manifest: Mapping, result: dict[str, Any]) -> dict[str, Any]:
+    report.write_student_outputs(out, manifest, result)
+    return result

@@ -1,0 +1,241 @@
+"""What a grading run writes: per-student JSON, feedback pages and Gradescope results, and for
+the class a gradebook, a summary (success rate per part, most common named mistakes) and the
+score distribution as a chart. Every file is written atomically; the same results give the
+same bytes."""
+
+from __future__ import annotations
+
+import csv
+import functools
+import io
+import json
+from collections import Counter
+from collections.abc import Mapping, Sequence
+from pathlib import Path
+from typing import Any
+
+from lagrade.assign.generate import environment
+from lagrade.grading import atomic
+
+STUDENTS = "students"
+
+
+@functools.lru_cache(maxsize=1)
+def _templates():
+    """The shipped templates' environment, built once per process (compiling is the slow part)."""
+    return environment()
+
+
+def _student_json(out: Path, student_id: str) -> Path:
+    return out / STUDENTS / f"{student_id}.json"
+
+
+def read_student_result(out: Path, student_id: str) -> dict[str, Any] | None:
+    """A previous run's result for this student, or None when absent or unreadable."""
+    path = _student_json(out, student_id)
+    try:
+        data = json.loads(path.read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return None
+    return data if isinstance(data, dict) and "fingerprint" in data else None
+
+
+def log_error(out: Path, student_id: str, details: str) -> None:
+    """Keep the traceback of a grader failure for the instructor (one file per student)."""
+    atomic.write_text(out / "errors" / f"{student_id}.log", details + "\n")
+
+
+def gradescope_results(result: Mapping[str, Any]) -> dict[str, Any]:
+    """Gradescope's results.json: total score and one test per part."""
+    tests = []
+    for problem in result["problems"]:
+        for part in problem["parts"]:
+            tests.append(
+                {
+                    "name": f"Problem {problem['index']} ({problem['title']}): {part['key']}",
+                    "score": part["points"],
+                    "max_score": part["max_points"],
+                    "output": " ".join(part["feedback"]) or part["verdict"],
+                }
+            )
+    payload: dict[str, Any] = {"score": result["score"], "tests": tests}
+    if result["status"] != "graded":
+        payload["output"] = f"{result['status']}: {result['reason']}"
+    return payload
+
+
+def write_student_outputs(out: Path, manifest: Mapping[str, Any], result: dict[str, Any]) -> None:
+    """Feedback pages, results.json, then the JSON result (last: its presence marks the student
+    as done for a rerun)."""
+    sid = result["student"]["id"]
+    env = _templates()
+    context = {"assignment": manifest["assignment"], "result": result}
+    atomic.write_text(
+        out / "feedback" / f"{sid}.md", env.get_template("feedback.md.j2").render(context)
+    )
+    atomic.write_text(
+        out / "feedback" / f"{sid}.html", env.get_template("feedback.html.j2").render(context)
+    )
+    atomic.write_json(out / "gradescope" / sid / "results.json", gradescope_results(result))
+    atomic.write_json(_student_json(out, sid), result)
+
+
+def gradebook_csv(manifest: Mapping[str, Any], results: Sequence[Mapping[str, Any]]) -> str:
+    """One row per roster student: id, name, status, score, max, percent, per problem, reason."""
+    buffer = io.StringIO()
+    writer = csv.writer(buffer, lineterminator="\n")
+    problems = manifest["problems"]
+    writer.writerow(
+        ["id", "name", "status", "score", "max_score", "percent"]
+        + [f"problem{p['index']}" for p in problems]
+        + ["reason"]
+    )
+    for r in results:
+        per_problem = {p["index"]: p["score"] for p in r["problems"]}
+        percent = 100 * r["score"] / r["max_score"] if r["max_score"] else 0.0
+        writer.writerow(
+            [
+                r["student"]["id"],
+                r["student"]["name"],
+                r["status"],
+                _num(r["score"]),
+                _num(r["max_score"]),
+                f"{percent:.1f}",
+            ]
+            + [_num(per_problem.get(p["index"], 0.0)) for p in problems]
+            + [r["reason"]]
+        )
+    return buffer.getvalue()
+
+
+def _num(x: float) -> str:
+    return f"{x:g}"
+
+
+def class_summary(
+    manifest: Mapping[str, Any], results: Sequence[Mapping[str, Any]]
+) -> dict[str, Any]:
+    """Success rate per part (over students whose sheets were graded), the most common named
+    mistakes per problem, and the statuses."""
+    graded = [r for r in results if r["problems"]]
+    problems = []
+    for problem in manifest["problems"]:
+        parts, mistakes = [], Counter()
+        examples: dict[tuple[str, str], str] = {}
+        for part in problem["parts"]:
+            verdicts = [
+                p
+                for r in graded
+                for pr in r["problems"]
+                if pr["index"] == problem["index"]
+                for p in pr["parts"]
+                if p["key"] == part["key"]
+            ]
+            correct = sum(1 for v in verdicts if v["verdict"] == "correct")
+            blank = sum(1 for v in verdicts if "blank" in v["mistakes"])
+            parts.append(
+                {
+                    "key": part["key"],
+                    "answered": len(verdicts) - blank,
+                    "correct": correct,
+                    "success_rate": round(correct / len(verdicts), 4) if verdicts else None,
+                }
+            )
+            for v in verdicts:
+                # The first named mistake is the diagnosis; its sentence leads the feedback.
+                kind = v["mistakes"][0] if v["mistakes"] else None
+                if kind and kind != "blank":
+                    mistakes[(part["key"], kind)] += 1
+                    examples.setdefault(
+                        (part["key"], kind), v["feedback"][0] if v["feedback"] else kind
+                    )
+        top = [
+            {"part": k[0], "mistake": k[1], "feedback": examples[k], "count": n}
+            for k, n in sorted(mistakes.items(), key=lambda kv: (-kv[1], kv[0]))[:8]
+        ]
+        problems.append(
+            {
+                "index": problem["index"],
+                "scene": problem["scene"],
+                "title": problem["title"],
+                "parts": parts,
+                "common_mistakes": top,
+            }
+        )
+    scores = [r["score"] for r in results]
+    return {
+        "students": len(results),
+        "statuses": dict(sorted(Counter(r["status"] for r in results).items())),
+        "mean_score": round(sum(scores) / len(scores), 4) if scores else 0.0,
+        "max_score": results[0]["max_score"] if results else 0.0,
+        "problems": problems,
+    }
+
+
+def summary_markdown(manifest: Mapping[str, Any], summary: Mapping[str, Any]) -> str:
+    lines = [f"# {manifest['assignment']['title']}: grading summary", ""]
+    lines.append(
+        f"{summary['students']} students; statuses: "
+        + ", ".join(f"{k} {v}" for k, v in summary["statuses"].items())
+        + f"; mean score {summary['mean_score']:g} of {summary['max_score']:g}."
+    )
+    lines += ["", "![score distribution](scores.svg)", ""]
+    for problem in summary["problems"]:
+        lines += [
+            f"## Problem {problem['index']}: {problem['title']} ({problem['scene']})",
+            "",
+            "| part | answered | correct | success rate |",
+            "| --- | --- | --- | --- |",
+        ]
+        for p in problem["parts"]:
+            rate = "–" if p["success_rate"] is None else f"{100 * p['success_rate']:.0f} %"
+            lines.append(f"| {p['key']} | {p['answered']} | {p['correct']} | {rate} |")
+        if problem["common_mistakes"]:
+            lines += ["", "Most common named mistakes:", ""]
+            lines += [
+                f'- {m["count"]} × {m["part"]}, `{m["mistake"]}`, e.g. "{m["feedback"]}"'
+                for m in problem["common_mistakes"]
+            ]
+        lines.append("")
+    return "\n".join(lines)
+
+
+def score_chart(
+    results: Sequence[Mapping[str, Any]], max_score: float
+) -> tuple[bytes, bytes] | None:
+    """The score distribution as (PNG, SVG) bytes, deterministic; None without matplotlib."""
+    try:
+        import matplotlib
+
+        matplotlib.use("Agg", force=False)
+        from matplotlib.figure import Figure
+    except ImportError:
+        return None
+    scores = [r["score"] for r in results if r["status"] != "missing"]
+    with matplotlib.rc_context({"svg.hashsalt": "lagrade", "svg.fonttype": "none"}):
+        fig = Figure(figsize=(6, 3.2))
+        ax = fig.add_subplot()
+        bins = max(5, min(20, int(max_score) or 5))
+        ax.hist(scores, bins=bins, range=(0, max_score or 1), color="#4c72b0", edgecolor="white")
+        ax.set_xlabel("score")
+        ax.set_ylabel("students")
+        ax.set_title(f"Score distribution ({len(scores)} submissions)")
+        fig.tight_layout()
+        png, svg = io.BytesIO(), io.BytesIO()
+        fig.savefig(png, format="png", dpi=100, metadata={"Software": None})
+        fig.savefig(svg, format="svg", metadata={"Date": None})
+    return png.getvalue(), svg.getvalue()
+
+
+def write_class_reports(
+    out: Path, manifest: Mapping[str, Any], results: Sequence[Mapping[str, Any]]
+) -> None:
+    """gradebook.csv, summary.json, summary.md and the score chart."""
+    atomic.write_text(out / "gradebook.csv", gradebook_csv(manifest, results))
+    summary = class_summary(manifest, results)
+    atomic.write_json(out / "summary.json", summary)
+    atomic.write_text(out / "summary.md", summary_markdown(manifest, summary))
+    chart = score_chart(results, summary["max_score"])
+    if chart is not None:
+        atomic.write_bytes(out / "scores.png", chart[0])
+        atomic.write_bytes(out / "scores.svg", chart[1])

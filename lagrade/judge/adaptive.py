@@ -1,0 +1,279 @@
+"""The default equivalence of expressions, chosen from the speed-against-accuracy study
+(docs/methods.csv: zero wrong verdicts, on the Pareto front): exact where the expressions allow
+it (`lagrade.judge.exact`), otherwise float64 values carrying a running error bound, with the
+precision raised in mpmath only where the bound cannot decide.
+
+Expressions may come from student text, so nothing here calls `lambdify`, `sympify` or `eval`:
+numbers come from the whitelist compiler of `lagrade.judge.evaluate`.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping, Sequence
+from dataclasses import dataclass
+
+import mpmath
+import numpy as np
+import sympy as sp
+
+from lagrade.judge import evaluate as ev
+from lagrade.judge.exact import Domains, ExactRational, sorted_symbols
+from lagrade.mechanics.domains import REAL
+
+# --- sampling ---------------------------------------------------------------------------------
+
+
+def sample_ranges(symbols: Sequence[sp.Symbol], domains: Domains) -> list[tuple[float, float]]:
+    return [domains.get(s, REAL).sample_range() for s in symbols]
+
+
+def draw(
+    symbols: Sequence[sp.Symbol],
+    ranges: Sequence[tuple[float, float]],
+    n: int,
+    rng: np.random.Generator,
+) -> dict[sp.Symbol, np.ndarray]:
+    """n points, each coordinate uniform in its range (float64 arrays keyed by symbol)."""
+    return {s: rng.uniform(lo, hi, n) for s, (lo, hi) in zip(symbols, ranges, strict=True)}
+
+
+def compile_pair(answer: sp.Expr, reference: sp.Expr) -> ev.Program | None:
+    try:
+        return ev.compile_program([answer, reference])
+    except ev.UnsupportedExpression:
+        return None
+
+
+def as_float_array(values, n: int) -> np.ndarray:
+    out = np.asarray(values, dtype=float)
+    return np.broadcast_to(out, (n,)) if out.ndim == 0 else out
+
+
+def evaluate_float(program: ev.Program, env: Mapping[sp.Symbol, np.ndarray], n: int):
+    with np.errstate(all="ignore"):
+        a, b = ev.run(program, env, ev.FLOAT)
+    return as_float_array(a, n), as_float_array(b, n)
+
+
+def sampled_pair(answer, reference, ranges_of, n: int, seed: int) -> tuple | None:
+    """(program, symbols, (a, b, env)) for the pair at n points where the reference is
+    defined, each symbol drawn in `ranges_of(symbols)`; None when the pair cannot be compiled
+    or too few points are usable (the method has no verdict)."""
+    program = compile_pair(answer, reference)
+    if program is None:
+        return None
+    symbols = sorted_symbols(answer, reference)
+    rng = np.random.default_rng(seed)
+    got = usable_points(program, symbols, ranges_of(symbols), n, rng)
+    return None if got is None else (program, symbols, got)
+
+
+def usable_points(
+    program: ev.Program,
+    symbols,
+    ranges,
+    n: int,
+    rng,
+    rounds: int = 6,
+) -> tuple[np.ndarray, np.ndarray, dict] | None:
+    """Values of (answer, reference) at n points where the reference is defined (finite and
+    real); points where it is not are redrawn, `rounds` times at most. None: too few points."""
+    kept_a, kept_b, kept_env = [], [], {s: [] for s in symbols}
+    have = 0
+    for _ in range(rounds):
+        want = n - have
+        batch = max(want, 4)
+        env = draw(symbols, ranges, batch, rng)
+        a, b = evaluate_float(program, env, batch)
+        ok = np.isfinite(b)
+        idx = np.nonzero(ok)[0][:want]
+        kept_a.append(a[idx])
+        kept_b.append(b[idx])
+        for s in symbols:
+            kept_env[s].append(env[s][idx])
+        have += len(idx)
+        if have >= n:
+            break
+    if have == 0:
+        return None
+    env_all = {s: np.concatenate(v) for s, v in kept_env.items()}
+    return np.concatenate(kept_a), np.concatenate(kept_b), env_all
+
+
+# --- the study's proposal: exact where possible, else rounding-aware numbers --------------------
+
+# Derivatives of the whitelisted functions, for the running error bound: f(x + δ) − f(x) ≈ f'(x) δ.
+_DERIVATIVE: dict[str, Callable] = {
+    "sin": lambda B, x, f: B.cos(x),
+    "cos": lambda B, x, f: B.sin(x),
+    "tan": lambda B, x, f: 1 + f * f,
+    "cot": lambda B, x, f: 1 + f * f,
+    "sec": lambda B, x, f: f * B.tan(x),
+    "csc": lambda B, x, f: f / B.tan(x),
+    "asin": lambda B, x, f: 1 / B.sqrt(1 - x * x),
+    "acos": lambda B, x, f: 1 / B.sqrt(1 - x * x),
+    "atan": lambda B, x, f: 1 / (1 + x * x),
+    "sinh": lambda B, x, f: B.cosh(x),
+    "cosh": lambda B, x, f: B.sinh(x),
+    "tanh": lambda B, x, f: 1 - f * f,
+    "exp": lambda B, x, f: f,
+    "log": lambda B, x, f: 1 / x,
+    "abs": lambda B, x, f: 1,
+    "sign": lambda B, x, f: 0,
+}
+
+
+def _bounded_run(program: ev.Program, env: Mapping, B) -> list[tuple]:
+    """Values of the program's outputs with a first-order running error bound (Wilkinson's
+    running error analysis): each node carries (v, e) with |computed − exact| ≲ e · u, u the unit
+    roundoff of the arithmetic. The bound follows the cancellation inside the expression, not
+    only at its top level, so a true identity evaluated through 1 − cos x or γ − 1 is not
+    mistaken for a difference, while a real difference stands out once u is small enough."""
+    vals: list[tuple] = []
+    for instr in program.code:
+        op = instr[0]
+        if op == "in":
+            vals.append((env[instr[1]], 0))
+        elif op == "const":
+            c = B.const(instr[1])
+            vals.append((c, abs(c)))
+        elif op == "add":
+            parts = [vals[k] for k in instr[1]]
+            v = parts[0][0]
+            for p in parts[1:]:
+                v = v + p[0]
+            mag = sum((abs(p[0]) for p in parts[1:]), abs(parts[0][0]))
+            err = sum((p[1] for p in parts[1:]), parts[0][1])
+            vals.append((v, err + (len(parts) - 1) * mag))
+        elif op == "mul":
+            parts = [vals[k] for k in instr[1]]
+            v, e = parts[0]
+            for w, f in parts[1:]:
+                e = abs(w) * e + abs(v) * f
+                v = v * w
+                e = e + abs(v)
+            vals.append((v, e))
+        elif op == "powi":
+            (b, eb), n = vals[instr[1]], instr[2]
+            v = b**n if n >= 0 else 1 / b ** (-n)
+            vals.append((v, abs(n) * abs(v) * eb / abs(b) + (abs(n) + 1) * abs(v)))
+        elif op == "powc":
+            (b, eb), r = vals[instr[1]], B.const(instr[2])
+            v = B.power(b, r)
+            vals.append((v, abs(r) * abs(v) * eb / abs(b) + 4 * abs(v)))
+        elif op == "powe":
+            (b, eb), (x, ex) = vals[instr[1]], vals[instr[2]]
+            v = B.exp(x * B.log(b))
+            vals.append((v, abs(v) * (abs(B.log(b)) * ex + abs(x) * eb / abs(b)) + 8 * abs(v)))
+        else:
+            name, (x, ex) = instr[1], vals[instr[2]]
+            f = ev._apply(B, name, x)
+            d = _DERIVATIVE[name](B, x, f)
+            vals.append((f, abs(d) * ex + 2 * abs(f)))
+    return [vals[k] for k in program.outputs]
+
+
+#: Safety factor on the first-order bound (higher-order terms, the rounding of the bound itself).
+_SAFETY = 64.0
+
+
+@dataclass(frozen=True)
+class ExactThenAdaptive:
+    """The study's proposal for the default, built because no measured method was both never
+    wrong and fast: exact evaluation (`ExactRational`) where the expressions allow it, otherwise
+    numbers whose rounding is bounded, with precision raised only where the bound cannot decide.
+
+    1. float64 at `points` points in the declared domains, each value with a running error bound
+       E (see `_bounded_run`): |a − b| > 64 E u means the answers differ — most wrong answers stop
+       here, in microseconds. (The bound follows cancellation inside the expression, so a true
+       identity that loses digits in float64 is not rejected.)
+    2. Otherwise, if the pair is a rational function of symbols and of trig of their
+       combinations, the exact test decides.
+    3. Otherwise mpmath at 50, 100, 200 digits on `confirm` of the points: different as soon as
+       |a − b| exceeds the bound, equal once the bound is below 10^-(digits/2) of the values and
+       |a − b| within it (a difference that small at every point is no student's answer), and
+       equal at 200 digits if still within the bound.
+    """
+
+    points: int = 12
+    confirm: int = 3
+    seed: int = 20240
+    name: str = "exact_then_adaptive"
+
+    def decide(self, answer, reference, domains) -> bool | None:
+        sampled = sampled_pair(
+            answer, reference, lambda s: sample_ranges(s, domains), self.points, self.seed
+        )
+        if sampled is None:
+            return None
+        program, symbols, (_, _, env) = sampled
+        n = len(next(iter(env.values()))) if env else 1
+        with np.errstate(all="ignore"):
+            (a, ea), (b, eb) = _bounded_run(program, env, ev.FLOAT)
+        a, b = as_float_array(a, n), as_float_array(b, n)
+        bound = _SAFETY * np.finfo(float).eps * (as_float_array(ea, n) + as_float_array(eb, n))
+        finite = np.isfinite(a) & np.isfinite(b) & np.isfinite(bound)
+        if np.any(finite & (np.abs(a - b) > bound)):
+            return False
+        exact = ExactRational(seed=self.seed).decide(answer, reference, domains)
+        if exact is not None:
+            return exact
+        order = np.argsort(finite, kind="stable")  # points the float test left open first
+        chosen = order[: max(self.confirm, int(np.count_nonzero(~finite)))]
+        return _adaptive_mp(answer, reference, symbols, env, chosen)
+
+
+def _mp_bounded(program: ev.Program, values: Mapping) -> tuple:
+    """(value, bound) of a one-output program in mpmath; a division by zero is undefined (nan)."""
+    try:
+        return _bounded_run(program, values, _MpScalar)[0]
+    except ZeroDivisionError:
+        return mpmath.mpf("nan"), mpmath.mpf("nan")
+
+
+def _adaptive_mp(answer: sp.Expr, reference: sp.Expr, symbols, env, chosen) -> bool:
+    """Decide at the chosen points in mpmath, raising the precision while the bound cannot."""
+    prog_a, prog_b = ev.compile_program([answer]), ev.compile_program([reference])
+    for i in chosen:
+        point = {s: float(env[s][i]) for s in symbols}
+        for digits in (50, 100, 200):
+            with mpmath.workdps(digits):
+                values = {s: mpmath.mpf(v) for s, v in point.items()}
+                (a, ea), (b, eb) = _mp_bounded(prog_a, values), _mp_bounded(prog_b, values)
+                if not (mpmath.isfinite(b) and mpmath.isfinite(eb)):
+                    break  # the reference is undefined here after all: skip the point
+                if not (mpmath.isfinite(a) and mpmath.isfinite(ea)):
+                    return False
+                u = mpmath.mpf(2) ** (-mpmath.mp.prec)
+                bound = _SAFETY * u * (ea + eb)
+                diff = abs(a - b)
+                if diff > bound:
+                    return False
+                scale = max(abs(a), abs(b))
+                if bound <= mpmath.mpf(10) ** (-digits // 2) * scale:
+                    break  # equal at this point
+    return True
+
+
+class _MpScalar:
+    """mpmath scalars as a backend of `_bounded_run`; complex results (outside the real domain)
+    become nan, as in float64."""
+
+    @staticmethod
+    def _real(f):
+        def g(*xs):
+            try:
+                y = f(*xs)
+            except (ValueError, ZeroDivisionError, OverflowError):
+                return mpmath.mpf("nan")
+            return mpmath.mpf("nan") if isinstance(y, mpmath.mpc) else y
+
+        return staticmethod(g)
+
+    sin, cos, tan = _real(mpmath.sin), _real(mpmath.cos), _real(mpmath.tan)
+    exp, log, sqrt = _real(mpmath.exp), _real(mpmath.log), _real(mpmath.sqrt)
+    asin, acos, atan = _real(mpmath.asin), _real(mpmath.acos), _real(mpmath.atan)
+    sinh, cosh, tanh = _real(mpmath.sinh), _real(mpmath.cosh), _real(mpmath.tanh)
+    power, sign = _real(mpmath.power), _real(mpmath.sign)
+    abs = staticmethod(abs)
+    const = staticmethod(ev.MP.const)

@@ -1,0 +1,385 @@
+"""A small compiler from sympy trees to straight-line numeric code, evaluated on whole arrays of
+sample points at once, in float64 (fast) or in mpmath at 50 digits (confirmation).
+
+Why not `lambdify`: it prints the expression to Python source and executes it, which the project
+forbids for anything derived from student text. Here a whitelist of sympy node types is walked
+once into a list of instructions; anything else (an undefined function, a Derivative, the
+imaginary unit) is rejected with a clear message.
+
+Besides plain values the evaluator carries hyper-dual numbers f = a + b ε₁ + c ε₂ + d ε₁ε₂
+(ε₁² = ε₂² = 0): seeding ε₁ with the direction of the motion (∂t = 1, ∂q = q̇, ∂q̇ = q̈) and ε₂
+with ∂/∂q̇_j makes d = D_t(∂L/∂q̇_j) exactly — the Euler–Lagrange expressions of any L, at every
+sample point, without differentiating symbolically.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+from typing import Any
+
+import mpmath
+import numpy as np
+import sympy as sp
+
+from lagrade.errors import UnsupportedExpression
+
+#: Digits of the confirming evaluation.
+MP_DIGITS = 50
+
+
+# --- compilation ------------------------------------------------------------------------------
+
+_FUNCTIONS: dict[type, str] = {
+    sp.sin: "sin",
+    sp.cos: "cos",
+    sp.tan: "tan",
+    sp.cot: "cot",
+    sp.sec: "sec",
+    sp.csc: "csc",
+    sp.asin: "asin",
+    sp.acos: "acos",
+    sp.atan: "atan",
+    sp.sinh: "sinh",
+    sp.cosh: "cosh",
+    sp.tanh: "tanh",
+    sp.exp: "exp",
+    sp.log: "log",
+    sp.Abs: "abs",
+    sp.sign: "sign",
+}
+
+
+@dataclass(frozen=True)
+class Program:
+    """Straight-line code for several sympy expressions: instructions in dependency order, each
+    shared subtree once. Instructions: ("in", symbol), ("const", number, its float), ("add", args),
+    ("mul", args), ("powi", base, n), ("powc", base, exponent), ("powe", base, exponent),
+    ("fn", name, arg)."""
+
+    code: tuple[tuple, ...]
+    outputs: tuple[int, ...]
+    symbols: frozenset[sp.Symbol]
+
+
+def compile_program(exprs: Sequence[sp.Expr]) -> Program:
+    """Compile `exprs` (each a sympy expression over the whitelist) into one Program whose
+    outputs are the expressions in order."""
+    code: list[tuple] = []
+    index: dict[sp.Basic, int] = {}
+    symbols: set[sp.Symbol] = set()
+
+    def emit(node: sp.Basic) -> int:
+        found = index.get(node)
+        if found is not None:
+            return found
+        instr = _instruction(node, emit, symbols)
+        code.append(instr)
+        index[node] = len(code) - 1
+        return len(code) - 1
+
+    outputs = tuple(emit(sp.S(e) if isinstance(e, int | float) else e) for e in exprs)
+    return Program(tuple(code), outputs, frozenset(symbols))
+
+
+def _instruction(node: sp.Basic, emit, symbols: set) -> tuple:
+    if isinstance(node, sp.Symbol):
+        symbols.add(node)
+        return ("in", node)
+    if isinstance(node, sp.Number):
+        if not node.is_finite:
+            raise UnsupportedExpression(f"the answer contains {node}, which is not a finite number")
+        return ("const", node, float(node))
+    if node is sp.pi or node is sp.E:  # singletons: `is`, not sympy's slow ==
+        return ("const", node, float(node))
+    if isinstance(node, sp.Add):
+        return ("add", tuple(emit(a) for a in node.args))
+    if isinstance(node, sp.Mul):
+        return ("mul", tuple(emit(a) for a in node.args))
+    if isinstance(node, sp.Pow):
+        base, exponent = node.args
+        if isinstance(exponent, sp.Integer):
+            return ("powi", emit(base), int(exponent))
+        if isinstance(exponent, sp.Rational | sp.Float):
+            return ("powc", emit(base), exponent)
+        if base is sp.E:  # E**x is exp(x)
+            return ("fn", "exp", emit(exponent))
+        # b**e with a non-constant exponent: exp(e log b), defined for b > 0.
+        return ("powe", emit(base), emit(exponent))
+    if isinstance(node, sp.Function):
+        name = _FUNCTIONS.get(type(node))
+        if name is None:
+            raise UnsupportedExpression(f"the function {type(node).__name__} is not supported")
+        if len(node.args) != 1:
+            raise UnsupportedExpression(f"{type(node).__name__} with {len(node.args)} arguments")
+        return ("fn", name, emit(node.args[0]))
+    raise UnsupportedExpression(f"cannot evaluate {node} ({type(node).__name__})")
+
+
+# --- backends: float64 arrays or mpmath object arrays -------------------------------------------
+
+
+def _mp_real(f, nargs: int = 1):
+    """An mpmath function made elementwise, with complex results (log of a negative number,
+    asin outside [-1, 1]) mapped to nan: outside the real domain, as in float64."""
+
+    def real(*xs):
+        try:
+            y = f(*xs)
+        except (ValueError, ZeroDivisionError, OverflowError):
+            return mpmath.mpf("nan")
+        return mpmath.mpf("nan") if isinstance(y, mpmath.mpc) else y
+
+    return np.frompyfunc(real, nargs, 1)
+
+
+class _Float:
+    """float64 numpy."""
+
+    name = "numeric"
+    sin, cos, tan, exp, log = np.sin, np.cos, np.tan, np.exp, np.log
+    asin, acos, atan = np.arcsin, np.arccos, np.arctan
+    sinh, cosh, tanh, sqrt, abs, sign = np.sinh, np.cosh, np.tanh, np.sqrt, np.abs, np.sign
+    power = np.power
+
+    @staticmethod
+    def const(value: sp.Expr) -> float:
+        return float(value)
+
+    @staticmethod
+    def array(values: np.ndarray) -> np.ndarray:
+        return np.asarray(values, dtype=float)
+
+    @staticmethod
+    def finite(values) -> np.ndarray:
+        return np.isfinite(values)
+
+
+class _Mp:
+    """mpmath at MP_DIGITS digits, elementwise over object arrays (the caller sets mp.dps)."""
+
+    name = "mpmath"
+    sin, cos, tan = _mp_real(mpmath.sin), _mp_real(mpmath.cos), _mp_real(mpmath.tan)
+    exp, log = _mp_real(mpmath.exp), _mp_real(mpmath.log)
+    asin, acos, atan = _mp_real(mpmath.asin), _mp_real(mpmath.acos), _mp_real(mpmath.atan)
+    sinh, cosh, tanh = _mp_real(mpmath.sinh), _mp_real(mpmath.cosh), _mp_real(mpmath.tanh)
+    sqrt, abs, sign = _mp_real(mpmath.sqrt), np.frompyfunc(abs, 1, 1), _mp_real(mpmath.sign)
+    power = _mp_real(mpmath.power, 2)
+
+    @staticmethod
+    def const(value: sp.Expr):
+        if value == sp.pi:
+            return mpmath.mp.pi
+        if value == sp.E:
+            return mpmath.mp.e
+        if isinstance(value, sp.Rational):
+            return mpmath.mpf(int(value.p)) / int(value.q)
+        return mpmath.mpf(value._mpf_) if hasattr(value, "_mpf_") else mpmath.mpf(float(value))
+
+    @staticmethod
+    def array(values) -> np.ndarray:
+        flat = np.asarray(values, dtype=float)
+        out = np.empty(flat.shape, dtype=object)
+        for i, v in np.ndenumerate(flat):
+            out[i] = mpmath.mpf(float(v))
+        return out
+
+    @staticmethod
+    def finite(values) -> np.ndarray:
+        arr = np.asarray(values, dtype=object)
+        return np.array([mpmath.isfinite(v) for v in arr.ravel()], dtype=bool).reshape(arr.shape)
+
+
+FLOAT = _Float
+MP = _Mp
+
+# First and second derivatives of each function, as functions of (x, f(x)), for the chain rule
+# f(a + δ) = f(a) + f'(a) δ + ½ f''(a) δ² on hyper-dual numbers.
+
+
+def _derivatives(B, name: str, x, f):
+    if name == "sin":
+        c = B.cos(x)
+        return c, -f
+    if name == "cos":
+        s = B.sin(x)
+        return -s, -f
+    if name == "tan":
+        d1 = 1 + f * f
+        return d1, 2 * f * d1
+    if name == "cot":
+        d1 = -(1 + f * f)
+        return d1, -2 * f * d1
+    if name == "sec":
+        t = B.tan(x)
+        return f * t, f * (t * t + f * f)
+    if name == "csc":
+        c = 1 / B.tan(x)
+        return -f * c, f * (c * c + f * f)
+    if name == "exp":
+        return f, f
+    if name == "log":
+        return 1 / x, -1 / (x * x)
+    if name in ("asin", "acos"):
+        r = 1 / B.sqrt(1 - x * x)
+        sign = 1 if name == "asin" else -1
+        return sign * r, sign * x * r * r * r
+    if name == "atan":
+        r = 1 / (1 + x * x)
+        return r, -2 * x * r * r
+    if name == "sinh":
+        return B.cosh(x), f
+    if name == "cosh":
+        return B.sinh(x), f
+    if name == "tanh":
+        d1 = 1 - f * f
+        return d1, -2 * f * d1
+    if name == "abs":
+        return B.sign(x), 0 * x
+    if name == "sign":
+        return 0 * x, 0 * x
+    raise AssertionError(name)
+
+
+def _apply(B, name: str, x):
+    if name == "cot":
+        return 1 / B.tan(x)
+    if name == "sec":
+        return 1 / B.cos(x)
+    if name == "csc":
+        return 1 / B.sin(x)
+    return getattr(B, name)(x)
+
+
+# --- evaluation -------------------------------------------------------------------------------
+
+
+def run(program: Program, env: Mapping[sp.Symbol, Any], backend=FLOAT) -> list:
+    """Values of the program's outputs; `env` maps every input symbol to an array (or scalar)."""
+    vals: list = []
+    for instr in program.code:
+        op = instr[0]
+        if op == "in":
+            try:
+                vals.append(env[instr[1]])
+            except KeyError:
+                raise UnsupportedExpression(f"the symbol {instr[1]} has no value here") from None
+        elif op == "const":
+            vals.append(instr[2] if backend is FLOAT else backend.const(instr[1]))
+        elif op == "add":
+            acc = vals[instr[1][0]]
+            for k in instr[1][1:]:
+                acc = acc + vals[k]
+            vals.append(acc)
+        elif op == "mul":
+            acc = vals[instr[1][0]]
+            for k in instr[1][1:]:
+                acc = acc * vals[k]
+            vals.append(acc)
+        elif op == "powi":
+            n = instr[2]
+            base = vals[instr[1]]
+            vals.append(base**n if n >= 0 else 1 / base ** (-n))
+        elif op == "powc":
+            vals.append(backend.power(vals[instr[1]], backend.const(instr[2])))
+        elif op == "powe":
+            vals.append(backend.exp(vals[instr[2]] * backend.log(vals[instr[1]])))
+        else:  # fn
+            vals.append(_apply(backend, instr[1], vals[instr[2]]))
+    return [vals[k] for k in program.outputs]
+
+
+HyperDual = tuple  # (a, b, c, d): a + b ε₁ + c ε₂ + d ε₁ε₂
+
+
+def _vanishes(z) -> bool:
+    """A component known to be zero: the exact integer 0 the seeds use (never an array)."""
+    return isinstance(z, int) and z == 0
+
+
+def _scaled(z, factor):
+    return z if _vanishes(z) else z * factor
+
+
+def _hd_mul(x: HyperDual, y: HyperDual) -> HyperDual:
+    a0, a1, a2, a3 = x
+    b0, b1, b2, b3 = y
+    # A factor without infinitesimal parts (a parameter, a constant) only scales the other:
+    # most products in a Lagrangian are of this kind, and skipping the zero terms halves them.
+    if _vanishes(b1) and _vanishes(b2) and _vanishes(b3):
+        return (a0 * b0, _scaled(a1, b0), _scaled(a2, b0), _scaled(a3, b0))
+    if _vanishes(a1) and _vanishes(a2) and _vanishes(a3):
+        return (a0 * b0, _scaled(b1, a0), _scaled(b2, a0), _scaled(b3, a0))
+    return (a0 * b0, a0 * b1 + a1 * b0, a0 * b2 + a2 * b0, a0 * b3 + a1 * b2 + a2 * b1 + a3 * b0)
+
+
+def _hd_chain(x: HyperDual, f, d1, d2) -> HyperDual:
+    return (f, d1 * x[1], d1 * x[2], d1 * x[3] + d2 * x[1] * x[2])
+
+
+def _hd_power(B, x: HyperDual, r) -> HyperDual:
+    """x**r for a constant r."""
+    a = x[0]
+    if isinstance(r, int):
+        if r == 1:
+            return x
+        if r == 2:
+            return (a * a, 2 * a * x[1], 2 * a * x[2], 2 * (a * x[3] + x[1] * x[2]))
+        f = a**r if r >= 0 else 1 / a ** (-r)
+        d1 = r * (a ** (r - 1) if r >= 1 else 1 / a ** (1 - r))
+        d2 = r * (r - 1) * (a ** (r - 2) if r >= 2 else 1 / a ** (2 - r))
+        return _hd_chain(x, f, d1, d2)
+    f = B.power(a, r)
+    return _hd_chain(x, f, r * f / a, r * (r - 1) * f / (a * a))
+
+
+def run_hyperdual(program: Program, env: Mapping[sp.Symbol, HyperDual], backend=FLOAT) -> list:
+    """Hyper-dual values of the outputs; `env` maps each input symbol to (a, b, c, d)."""
+    vals: list[HyperDual] = []
+    for instr in program.code:
+        op = instr[0]
+        if op == "in":
+            try:
+                vals.append(env[instr[1]])
+            except KeyError:
+                raise UnsupportedExpression(f"the symbol {instr[1]} has no value here") from None
+        elif op == "const":
+            vals.append((instr[2] if backend is FLOAT else backend.const(instr[1]), 0, 0, 0))
+        elif op == "add":
+            parts = [vals[k] for k in instr[1]]
+            vals.append(tuple(sum((p[i] for p in parts[1:]), parts[0][i]) for i in range(4)))
+        elif op == "mul":
+            acc = vals[instr[1][0]]
+            for k in instr[1][1:]:
+                acc = _hd_mul(acc, vals[k])
+            vals.append(acc)
+        elif op == "powi":
+            vals.append(_hd_power(backend, vals[instr[1]], instr[2]))
+        elif op == "powc":
+            vals.append(_hd_power(backend, vals[instr[1]], backend.const(instr[2])))
+        elif op == "powe":
+            base, expo = vals[instr[1]], vals[instr[2]]
+            a = base[0]
+            log_b = _hd_chain(base, backend.log(a), 1 / a, -1 / (a * a))
+            prod = _hd_mul(expo, log_b)
+            f = backend.exp(prod[0])
+            vals.append(_hd_chain(prod, f, f, f))
+        else:
+            name, x = instr[1], vals[instr[2]]
+            f = _apply(backend, name, x[0])
+            d1, d2 = _derivatives(backend, name, x[0], f)
+            vals.append(_hd_chain(x, f, d1, d2))
+    return [vals[k] for k in program.outputs]
+
+
+def top_terms(expr: sp.Expr) -> tuple[sp.Expr, ...]:
+    """The top-level terms of expr, with a numeric factor distributed over a sum
+    (½ (a + b) → ½ a, ½ b), so that the tolerance sees the size of each term, not of their sum."""
+    terms: list[sp.Expr] = []
+    for term in sp.Add.make_args(expr):
+        coeff, rest = term.as_coeff_Mul()
+        if isinstance(rest, sp.Add) and coeff != 1:
+            terms.extend(coeff * t for t in rest.args)
+        else:
+            terms.append(term)
+    return tuple(terms)

@@ -1,0 +1,244 @@
+"""Exact equivalence of expressions that are rational functions of their symbols and of sin, cos,
+tan (and cot, sec, csc) of integer combinations of them: exact rational arithmetic at random
+rational points, no rounding anywhere. The first stage of the default method
+(`lagrade.judge.adaptive.ExactThenAdaptive`); None for anything outside that class.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterable, Mapping
+from dataclasses import dataclass
+from fractions import Fraction
+
+import numpy as np
+import sympy as sp
+
+from lagrade.mechanics.domains import REAL, Domain
+
+Domains = Mapping[sp.Symbol, Domain]
+
+
+def sorted_symbols(*exprs: sp.Expr) -> list[sp.Symbol]:
+    """Free symbols of all exprs in a stable order (by name), so that seeded draws repeat."""
+    found: set[sp.Symbol] = set()
+    for e in exprs:
+        found |= e.free_symbols
+    return sorted(found, key=lambda s: s.name)
+
+
+_TRIG = (sp.sin, sp.cos, sp.tan, sp.cot, sp.sec, sp.csc)
+
+
+class _OutOfScope(Exception):
+    """The expression is not a rational function of symbols and trig of their combinations."""
+
+
+def _check_rational_trig(expr: sp.Expr, inside_trig: bool = False) -> None:
+    """Raise _OutOfScope unless expr is built from rationals, symbols, +, ×, integer powers, and
+    sin/cos/tan/cot/sec/csc of (rational combinations of symbols + rational multiples of π)."""
+    if expr.is_Symbol or expr.is_Rational:
+        return
+    if expr is sp.pi:
+        if inside_trig:
+            return
+        raise _OutOfScope("π outside a trig argument")
+    if expr.is_Add or expr.is_Mul:
+        for a in expr.args:
+            _check_rational_trig(a, inside_trig)
+        return
+    if expr.is_Pow:
+        if not expr.exp.is_Integer or inside_trig:
+            raise _OutOfScope(f"power {expr}")
+        _check_rational_trig(expr.base, inside_trig)
+        return
+    if isinstance(expr, _TRIG) and not inside_trig:
+        arg = expr.args[0]
+        if not all(
+            _is_linear(term) or _monomial_symbol(term) is not None for term in sp.Add.make_args(arg)
+        ):
+            raise _OutOfScope(f"non-linear trig argument {arg}")
+        _check_rational_trig(arg, inside_trig=True)
+        return
+    raise _OutOfScope(f"{type(expr).__name__}")
+
+
+def _is_linear(arg: sp.Expr) -> bool:
+    """arg = Σ r_i x_i + r π with rational r_i, r: what expand_trig splits into single symbols."""
+    for term in sp.Add.make_args(arg):
+        coeff, rest = term.as_coeff_Mul()
+        if not coeff.is_Rational or not (rest.is_Symbol or rest is sp.pi or rest == 1):
+            return False
+    return True
+
+
+def _trig_units(exprs: Iterable[sp.Expr]) -> dict[sp.Symbol, int]:
+    """For each symbol inside a trig argument, the lcm of the denominators of its coefficients
+    there: with x = L·y every argument becomes an integer combination of the y's."""
+    units: dict[sp.Symbol, int] = {}
+    for e in exprs:
+        for f in e.atoms(*_TRIG):
+            arg = f.args[0]
+            for s in arg.free_symbols:
+                q = sp.Rational(arg.coeff(s)).q
+                units[s] = math.lcm(units.get(s, 1), int(q))
+    return units
+
+
+def _pi_free(expr: sp.Expr) -> bool:
+    return not expr.has(sp.pi)
+
+
+@dataclass(frozen=True)
+class ExactRational:
+    """Exact evaluation at random rational points, for rational functions of the symbols and of
+    sin, cos, tan of their integer combinations; None for anything else (sqrt, exp, log, acos, a
+    float constant).
+
+    Why it is exact: after expand_trig every trig function is sin y or cos y of a single symbol y,
+    and the Weierstrass substitution sin y = 2u/(1+u²), cos y = (1−u²)/(1+u²) turns them into
+    rational functions of u = tan(y/2). A symbol that also stands outside trig gets its own
+    independent rational value: y and e^{iy} are algebraically independent functions, so
+    P(y, sin y, cos y) ≡ 0 exactly when it vanishes at independent generic (y, u). Sympy's rational
+    arithmetic then decides each point without rounding; a nonzero rational function vanishes at
+    `points` random rationals with negligible probability (Schwartz–Zippel).
+    """
+
+    points: int = 3
+    seed: int = 20240
+    name: str = "exact_rational"
+
+    def decide(self, answer, reference, domains) -> bool | None:
+        try:
+            for e in (answer, reference):
+                _check_rational_trig(e)
+            a, b = _weierstrass_ready(answer, reference)
+        except _OutOfScope:
+            return None
+        return _exact_compare(a, b, domains, self.points, np.random.default_rng(self.seed))
+
+
+def _monomial_symbol(arg: sp.Expr) -> sp.Symbol | None:
+    """For a trig argument c·s₁·s₂⋯ (ω t), the symbol to solve for: the last by name."""
+    coeff, rest = arg.as_coeff_Mul()
+    factors = sp.Mul.make_args(rest)
+    if not coeff.is_Rational or len(factors) < 2 or not all(f.is_Symbol for f in factors):
+        return None
+    return max(factors, key=lambda f: f.name)
+
+
+def _flatten_monomials(answer: sp.Expr, reference: sp.Expr) -> tuple[sp.Expr, sp.Expr]:
+    """Replace each monomial trig argument c·ω·t by a fresh symbol w through t = w/(c ω), in both
+    expressions at once: a change of variables (ω ≠ 0 on its domain) after which every trig
+    argument is linear."""
+    for _ in range(4):
+        monomials = {
+            term
+            for e in (answer, reference)
+            for f in e.atoms(*_TRIG)
+            for term in sp.Add.make_args(f.args[0])
+            if not _is_linear(term)
+        }
+        if not monomials:
+            return answer, reference
+        arg = min(monomials, key=str)
+        solved = _monomial_symbol(arg)
+        if solved is None:
+            raise _OutOfScope(f"trig argument {arg}")
+        w = sp.Dummy(f"w_{solved.name}", real=True)
+        value = solved * w / arg.as_coeff_Mul()[1]
+        if value.has(solved):
+            raise _OutOfScope(f"trig argument {arg}")
+        answer, reference = answer.xreplace({solved: value}), reference.xreplace({solved: value})
+    raise _OutOfScope("too many monomial trig arguments")
+
+
+def _weierstrass_ready(answer: sp.Expr, reference: sp.Expr) -> tuple[sp.Expr, sp.Expr]:
+    """Both expressions with trig arguments reduced to single symbols (x = L·y, expand_trig)."""
+    answer, reference = _flatten_monomials(answer, reference)
+    units = _trig_units((answer, reference))
+    scale = {s: units[s] * sp.Dummy(s.name, real=True) for s in units if units[s] != 1}
+    out = []
+    for e in (answer, reference):
+        e = e.xreplace(scale) if scale else e
+        e = sp.expand_trig(e)
+        for f in e.atoms(*_TRIG):
+            if not f.args[0].is_Symbol:
+                raise _OutOfScope(f"trig argument {f.args[0]} did not reduce to a symbol")
+        if not _pi_free(e):
+            raise _OutOfScope("π remained after expand_trig")
+        out.append(e)
+    # Symbols scaled by L keep their domain through the original symbol (see _exact_compare).
+    return out[0], out[1]
+
+
+def _rational_in(lo: float, hi: float, rng: np.random.Generator) -> sp.Rational:
+    """A random rational inside (lo, hi): a float drawn there, read exactly, so that the points
+    keep the scale of the domain (1e-27 stays 1e-27, not a rounded 0)."""
+    value = Fraction(float(rng.uniform(lo, hi)))  # the float itself, exactly (dyadic)
+    return sp.Rational(value.numerator, value.denominator)
+
+
+def _exact_compare(a: sp.Expr, b: sp.Expr, domains: Domains, points: int, rng) -> bool | None:
+    symbols = sorted_symbols(a, b)
+    trig_syms = sorted({f.args[0] for e in (a, b) for f in e.atoms(*_TRIG)}, key=str)
+    done = 0
+    for _ in range(points * 4):
+        subs: dict[sp.Basic, sp.Expr] = {}
+        for s in symbols:
+            dom = _domain_of(s, domains)
+            lo, hi = dom.sample_range()
+            subs[s] = _rational_in(lo, hi, rng)
+        for y in trig_syms:
+            lo, hi = _domain_of(y, domains).sample_range()
+            u_lo, u_hi = _half_tan_range(lo, hi)
+            u = _rational_in(u_lo, u_hi, rng)
+            den = 1 + u**2
+            s_val, c_val = 2 * u / den, (1 - u**2) / den
+            subs.update(
+                {
+                    sp.sin(y): s_val,
+                    sp.cos(y): c_val,
+                }
+            )
+            if c_val != 0:
+                subs[sp.tan(y)] = s_val / c_val
+                subs[sp.sec(y)] = 1 / c_val
+            if s_val != 0:
+                subs[sp.cot(y)] = c_val / s_val
+                subs[sp.csc(y)] = 1 / s_val
+        # Functions first (their arguments are symbols that are substituted next).
+        funcs = {k: v for k, v in subs.items() if not k.is_Symbol}
+        plain = {k: v for k, v in subs.items() if k.is_Symbol}
+        va = a.xreplace(funcs).xreplace(plain)
+        vb = b.xreplace(funcs).xreplace(plain)
+        if not (vb.is_Rational and vb.is_finite):
+            continue  # the reference is undefined here: redraw
+        if not (va.is_Rational and va.is_finite):
+            if va.has(sp.zoo, sp.nan, sp.oo, -sp.oo):
+                return False
+            return None
+        if va != vb:
+            return False
+        done += 1
+        if done >= points:
+            return True
+    return True if done else None
+
+
+def _domain_of(symbol: sp.Symbol, domains: Domains) -> Domain:
+    if symbol in domains:
+        return domains[symbol]
+    # A dummy standing for x / L keeps x's domain scaled; the domain only steers where points
+    # fall, so the unscaled range is good enough for an identity that must hold everywhere.
+    for s, d in domains.items():
+        if isinstance(symbol, sp.Dummy) and s.name == symbol.name:
+            return d
+    return REAL
+
+
+def _half_tan_range(lo: float, hi: float) -> tuple[float, float]:
+    """Range of u = tan(y/2) for y in (lo, hi), when that lies within (−π, π); else (−3, 3)."""
+    if -math.pi < lo < hi < math.pi:
+        return math.tan(lo / 2), math.tan(hi / 2)
+    return (-3.0, 3.0)

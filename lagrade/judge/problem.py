@@ -1,0 +1,350 @@
+"""The question a request is about: a bank variant, an instructor's ad-hoc Lagrangian, or a
+reference expression with the domains of its variables — and everything the checks derive from
+it, computed once and cached (a batch of a thousand answers to one question derives once).
+
+    {"scene": "wedge", "seed": 3}             a bank variant (no seed: the declared form)
+    {"scene": "wedge", "quantity": "block_acceleration"}   a closed-form quantity (`expression`)
+    {"lagrangian": "...", "coordinates": ["theta"], "parameters": {"m": "positive", ...}}
+    {"expression": "...", "parameters": {"g": "positive", "alpha": "(0, pi/2)"}}
+
+Instructor strings are read by the project parser like any answer, never by sympify.
+"""
+
+from __future__ import annotations
+
+import json
+import re
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+from functools import cached_property
+from typing import Any
+
+import numpy as np
+import sympy as sp
+
+from lagrade.bank.registry import get_scene
+from lagrade.errors import LagradeError, ParseError, RequestError
+from lagrade.judge.equivalence import Compiled, Points, Space, finite_mask, seed_for
+from lagrade.mechanics.domains import Domain
+from lagrade.mechanics.lagrange import Jet, LagrangianSystem, jet, t
+from lagrade.mechanics.scene import SceneVariant
+
+_NAME = re.compile(r"^[A-Za-z][A-Za-z0-9_]*$")
+
+
+def parser():
+    """The project parser (imported on first use, so that this module loads without it)."""
+    from lagrade.notation import parse
+
+    return parse
+
+
+@dataclass(eq=False)
+class Problem:
+    """One question: its coordinates (jets), parameters with domains, the reference (L, or an
+    expression) and, for a bank variant, the scene's own derivations."""
+
+    key: str
+    kind: str  # "scene" | "lagrangian" | "expression"
+    jets: tuple[Jet, ...]
+    parameters: dict[str, sp.Symbol]
+    domains: dict[sp.Symbol, Domain]
+    values: dict[sp.Symbol, float]
+    lagrangian: sp.Expr | None = None
+    expression: sp.Expr | None = None
+    variant: SceneVariant | None = None
+    coordinate_domains: dict[str, tuple[float, float]] | None = None
+
+    # --- names -------------------------------------------------------------------------------
+    @property
+    def coordinates(self) -> tuple[str, ...]:
+        return tuple(j.name for j in self.jets)
+
+    @cached_property
+    def by_name(self) -> dict[str, sp.Symbol]:
+        """Every symbol a well-formed answer can contain, by name."""
+        names = dict(self.parameters)
+        for j in self.jets:
+            names |= {str(j.q): j.q, str(j.dot): j.dot, str(j.ddot): j.ddot}
+        return names | {"t": t}
+
+    def vocabulary(self, labels: Sequence[str] = ()):
+        """The parser's vocabulary for this question, with extra allowed names `labels` (one
+        per set of labels: its lexicon is built once, not per answer)."""
+        key = tuple(labels)
+        cache = self.__dict__.setdefault("_vocabularies", {})
+        if key not in cache:
+            cache[key] = parser().Vocabulary(self.coordinates, dict(self.parameters), key)
+        return cache[key]
+
+    @cached_property
+    def parser_symbols_are_mine(self) -> bool:
+        """The parser reads every name as this problem's own symbol, so its output needs no
+        `canonical` pass."""
+        table = self.vocabulary()._lexicon.table
+        return all(table[n].value is s for n, s in self.by_name.items() if n in table)
+
+    def canonical(self, expr: sp.Expr) -> sp.Expr:
+        """expr with every symbol replaced by this problem's symbol of the same name (the parser
+        and the bank agree on symbols; this guards against a mismatch of assumptions)."""
+        swap = {}
+        for s in expr.free_symbols:
+            mine = self.by_name.get(str(s))
+            if mine is not None and mine is not s:
+                swap[s] = mine
+        return expr.xreplace(swap) if swap else expr
+
+    # --- references ---------------------------------------------------------------------------
+    @cached_property
+    def system(self) -> LagrangianSystem:
+        if self.lagrangian is None:
+            raise RequestError("this problem gives an expression, not a Lagrangian")
+        if self.variant is not None:
+            return self.variant.system
+        return LagrangianSystem(self.lagrangian, self.jets)
+
+    @cached_property
+    def space(self) -> Space:
+        return Space(self.jets, self.domains, self.values, self.coordinate_domains or {})
+
+    @cached_property
+    def L(self) -> Compiled:
+        return Compiled.of(self.system.L)
+
+    @cached_property
+    def euler_lagrange(self) -> tuple[Compiled, ...]:
+        return tuple(Compiled.of(e) for e in self.system.euler_lagrange)
+
+    @cached_property
+    def momenta(self) -> tuple[Compiled, ...]:
+        return tuple(Compiled.of(p) for p in self.system.generalized_momenta)
+
+    @cached_property
+    def reference_expression(self) -> Compiled:
+        if self.expression is None:
+            raise RequestError("this problem has no reference expression")
+        return Compiled.of(self.expression)
+
+    @cached_property
+    def kinetic_energy(self) -> sp.Expr:
+        if self.variant is None:
+            raise RequestError(
+                "T and V can be checked only for bank scenes (an ad-hoc problem gives L alone)"
+            )
+        return self.variant.kinetic_energy
+
+    @cached_property
+    def potential_energy(self) -> sp.Expr:
+        if self.variant is None:
+            raise RequestError(
+                "T and V can be checked only for bank scenes (an ad-hoc problem gives L alone)"
+            )
+        return self.variant.potential_energy
+
+    @cached_property
+    def kinetic(self) -> Compiled:
+        """T, compiled once (the reference of the T part)."""
+        return Compiled.of(self.kinetic_energy)
+
+    @cached_property
+    def potential(self) -> Compiled:
+        """V, compiled once (the reference of the V part)."""
+        return Compiled.of(self.potential_energy)
+
+    @cached_property
+    def dof(self) -> int:
+        return self.variant.dof if self.variant is not None else len(self.jets)
+
+    @cached_property
+    def catalogue(self):
+        """The mistakes this question invites, derived from its reference (grader.diagnose)."""
+        from lagrade.judge.catalogue import Catalogue
+
+        return Catalogue(self)
+
+    # --- sample points, cached per part and per set of parameters left free --------------------
+    def points(self, part: str, free: frozenset[sp.Symbol] | None = None) -> Points:
+        """Sample points for `part`. Parameters outside `free` keep a numeric variant's values
+        (an answer that writes 9.81 for g is judged at g = 9.81); without values all are free."""
+        if free is None or not self.values:
+            free = frozenset(self.domains)
+        else:
+            free = frozenset(free) & frozenset(self.domains)
+        key = (part, free)
+        cache = self.__dict__.setdefault("_points", {})
+        if key not in cache:
+            cache[key] = self.space.draw(seed_for(self.key, part), free, self._validity(part))
+        return cache[key]
+
+    def _validity(self, part: str):
+        if self.kind == "expression" or part == "expression":
+            return finite_mask([self.reference_expression])
+        if part == "transformation":
+            return finite_mask([Compiled.of(x) for x in self.variant.transformation.values()])
+        refs = [self.L, *self.euler_lagrange]
+        mask = finite_mask(refs)
+        if part in ("eom", "conserved"):
+            n = len(self.jets)
+            A = [Compiled.of(a) for a in self.system.mass_matrix]
+
+            def valid(env):
+                ok = mask(env)
+                k = len(ok)
+                with np.errstate(all="ignore"):
+                    vals = [np.broadcast_to(np.asarray(a.values(env)[0], float), (k,)) for a in A]
+                    M = np.stack(vals, axis=-1).reshape(k, n, n)
+                    det = np.linalg.det(M)
+                    scale = np.prod(np.linalg.norm(M, axis=2), axis=1)
+                return ok & np.isfinite(det) & (np.abs(det) > 1e-6 * scale)
+
+            return valid
+        return mask
+
+    # --- cached reference values at points ------------------------------------------------------
+    def cached(self, name: str, points: Points, make):
+        """A value derived from `points` (reference rows, accelerations), computed once."""
+        store = self.__dict__.setdefault("_derived", {})
+        key = (name, id(points))
+        if key not in store:
+            store[key] = make()
+        return store[key]
+
+
+# --- building a Problem from a request ------------------------------------------------------------
+
+
+def problem_key(spec: Mapping[str, Any]) -> str:
+    """The identity of a problem field: its canonical JSON (a seed for the sample points and
+    the key of the worker's cache)."""
+    return json.dumps(spec, sort_keys=True, separators=(",", ":"))
+
+
+def build_problem(spec: Any) -> Problem:
+    """A Problem from a request's "problem" field; a RequestError says what is wrong with it."""
+    if not isinstance(spec, Mapping):
+        raise RequestError('"problem" must be an object such as {"scene": "wedge", "seed": 3}')
+    key = problem_key(spec)
+    kinds = [k for k in ("scene", "lagrangian", "expression") if k in spec]
+    if len(kinds) != 1:
+        raise RequestError(
+            '"problem" must have exactly one of "scene", "lagrangian" or "expression" '
+            f"(it has {', '.join(kinds) or 'none'})"
+        )
+    if kinds[0] == "scene":
+        return _scene_problem(spec, key)
+    return _adhoc_problem(spec, key, kinds[0])
+
+
+def _scene_problem(spec: Mapping[str, Any], key: str) -> Problem:
+    _only(spec, {"scene", "seed", "quantity"})
+    scene_id, seed = spec["scene"], spec.get("seed")
+    if not isinstance(scene_id, str):
+        raise RequestError('"scene" must be a scene id such as "wedge"')
+    if seed is not None and (not isinstance(seed, int) or isinstance(seed, bool)):
+        raise RequestError(f'"seed" must be an integer, got {seed!r}')
+    try:
+        scene = get_scene(scene_id)
+        variant = scene.default if seed is None else scene.variant(seed)
+        jets = variant.jets
+        params = dict(variant.parameter_symbols)
+    except LagradeError as error:
+        raise RequestError(str(error)) from None
+    domains = {params[n]: d for n, d in variant.domains.items()}
+    values = {params[n]: float(v) for n, v in variant.values.items()}
+    expression = None
+    if "quantity" in spec:
+        quantities = variant.quantities
+        if spec["quantity"] not in quantities:
+            raise RequestError(
+                f"scene {scene_id!r} has no quantity {spec['quantity']!r}; it has: "
+                + (", ".join(quantities) or "none")
+            )
+        expression = quantities[spec["quantity"]]
+    return Problem(
+        key,
+        "scene",
+        jets,
+        params,
+        domains,
+        values,
+        lagrangian=variant.lagrangian,
+        expression=expression,
+        variant=variant,
+    )
+
+
+def _adhoc_problem(spec: Mapping[str, Any], key: str, kind: str) -> Problem:
+    _only(spec, {kind, "coordinates", "parameters"})
+    text = spec[kind]
+    if not isinstance(text, str) or not text.strip():
+        raise RequestError(f'"{kind}" must be a non-empty string')
+    coords, coordinate_domains = _coordinates(
+        spec.get("coordinates", []), required=kind == "lagrangian"
+    )
+    raw_params = spec.get("parameters", {})
+    if not isinstance(raw_params, Mapping):
+        raise RequestError('"parameters" must map each name to a domain, e.g. {"m": "positive"}')
+    params: dict[str, sp.Symbol] = {}
+    domains: dict[sp.Symbol, Domain] = {}
+    taken = {n for c in coords for n in (c, c + "_dot", c + "_ddot")} | {"t"}
+    for name, dom in raw_params.items():
+        if not isinstance(name, str) or not _NAME.match(name):
+            raise RequestError(f"parameter name {name!r} is not a plain name")
+        if name in taken:
+            raise RequestError(f"parameter {name!r} clashes with a coordinate (or t)")
+        try:
+            domain = Domain.parse(dom)
+        except LagradeError as error:
+            raise RequestError(f"parameter {name!r}: {error}") from None
+        params[name] = domain.symbol(name)
+        domains[params[name]] = domain
+    jets = tuple(jet(c) for c in coords)
+    problem = Problem(key, kind, jets, params, domains, {}, coordinate_domains=coordinate_domains)
+    try:
+        parsed = parser().parse_expression(text, problem.vocabulary())
+    except ParseError as error:
+        raise RequestError(f'the problem\'s "{kind}" does not parse: {error}') from None
+    expr = problem.canonical(parsed.expr)
+    if kind == "lagrangian":
+        if any(expr.has(j.ddot) for j in jets):
+            raise RequestError("the problem's Lagrangian contains an acceleration")
+        problem.lagrangian = expr
+    else:
+        problem.expression = expr
+    return problem
+
+
+def _coordinates(raw: Any, required: bool) -> tuple[list[str], dict[str, tuple[float, float]]]:
+    """Coordinate names, given as a list or as {name: domain} (where to sample them)."""
+    ranges: dict[str, tuple[float, float]] = {}
+    if isinstance(raw, Mapping):
+        names = list(raw)
+        for name, dom in raw.items():
+            if dom is not None:
+                try:
+                    ranges[name] = Domain.parse(dom).sample_range()
+                except LagradeError as error:
+                    raise RequestError(f"coordinate {name!r}: {error}") from None
+    elif isinstance(raw, list | tuple):
+        names = list(raw)
+    else:
+        raise RequestError('"coordinates" must be a list of names such as ["theta"]')
+    if required and not names:
+        raise RequestError('an ad-hoc Lagrangian needs "coordinates", e.g. ["theta"]')
+    for name in names:
+        if not isinstance(name, str) or not _NAME.match(name):
+            raise RequestError(f"coordinate name {name!r} is not a plain name")
+        if name.endswith(("_dot", "_ddot")):
+            raise RequestError(f"coordinate {name!r}: name the coordinate, not its velocity")
+    if len(set(names)) != len(names):
+        raise RequestError(f"coordinates {names} name one coordinate twice")
+    return names, ranges
+
+
+def _only(spec: Mapping[str, Any], allowed: set[str]) -> None:
+    extra = sorted(set(spec) - allowed)
+    if extra:
+        raise RequestError(
+            f'"problem" has unknown field(s) {", ".join(map(repr, extra))}; allowed: '
+            + ", ".join(sorted(allowed))
+        )

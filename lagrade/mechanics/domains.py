@@ -1,0 +1,133 @@
+"""Parameter domains: where a parameter may lie, which sympy assumptions that implies, and how to
+draw sample values from it.
+
+Domains are written as `positive`, `nonnegative`, `real`, or an interval such as `(0, pi/2)` or
+`[0, 1]`. They come from scene declarations and from instructors' ad-hoc problems, never from
+students; bounds are read by a tiny grammar of our own (a number, optionally times pi, optionally
+over a number), not by sympify.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass
+from fractions import Fraction
+
+import sympy as sp
+
+from lagrade.errors import DomainError
+
+_BOUND = re.compile(
+    r"""^\s*(?P<sign>[+-])?\s*
+        (?P<num>\d+(?:\.\d+)?(?:[eE][+-]?\d{1,3})?)?\s*
+        (?:\*?\s*(?P<pi>pi|π))?\s*
+        (?:/\s*(?P<den>\d+(?:\.\d+)?(?:[eE][+-]?\d{1,3})?))?\s*$""",
+    re.VERBOSE,
+)
+_INTERVAL = re.compile(r"^\s*(?P<lo_br>[\(\[])(?P<lo>[^,]+),(?P<hi>[^\)\]]+)(?P<hi_br>[\)\]])\s*$")
+
+
+def _parse_bound(text: str) -> sp.Expr:
+    """'pi/2' → π/2, '-1.5' → −3/2, '2pi' → 2π, '1e-28' → 10⁻²⁸ (exactly); inf is ±oo."""
+    stripped = text.strip()
+    if stripped in ("inf", "oo", "+inf", "+oo"):
+        return sp.oo
+    if stripped in ("-inf", "-oo"):
+        return -sp.oo
+    match = _BOUND.match(stripped)
+    if not match or not (match["num"] or match["pi"]):
+        raise DomainError(
+            f"cannot read the interval bound {text!r}; write a number (1.5, 2e-3), pi, 2*pi or pi/2"
+        )
+    value: sp.Expr = sp.Rational(str(Fraction(match["num"]))) if match["num"] else sp.S.One
+    if match["pi"]:
+        value *= sp.pi
+    if match["den"]:
+        value /= sp.Rational(str(Fraction(match["den"])))
+    if not math.isfinite(float(value)):
+        raise DomainError(f"the interval bound {text!r} is too large for a number")
+    return -value if match["sign"] == "-" else value
+
+
+@dataclass(frozen=True)
+class Domain:
+    """An interval of the real line, open or closed at each end; `text` is how it was written."""
+
+    text: str
+    lower: sp.Expr
+    upper: sp.Expr
+    lower_open: bool = True
+    upper_open: bool = True
+
+    @classmethod
+    def parse(cls, text: str | Domain) -> Domain:
+        """Read `positive`, `nonnegative`, `real` or an interval `(a, b)`, `[a, b]`, `(a, b]`."""
+        if isinstance(text, Domain):
+            return text
+        if not isinstance(text, str):
+            raise DomainError(
+                f"a domain must be a string such as 'positive' or '(0, pi/2)', got {text!r}"
+            )
+        key = text.strip().lower()
+        if key == "positive":
+            return cls("positive", sp.S.Zero, sp.oo, True, True)
+        if key == "nonnegative":
+            return cls("nonnegative", sp.S.Zero, sp.oo, False, True)
+        if key == "real":
+            return cls("real", -sp.oo, sp.oo, True, True)
+        match = _INTERVAL.match(text)
+        if not match:
+            raise DomainError(
+                f"unknown domain {text!r}; use positive, nonnegative, real, or an interval "
+                "such as (0, pi/2) or [0, 1]"
+            )
+        lower, upper = _parse_bound(match["lo"]), _parse_bound(match["hi"])
+        if not bool(lower < upper):
+            raise DomainError(
+                f"empty interval {text!r}: the lower bound must be below the upper one"
+            )
+        return cls(text.strip(), lower, upper, match["lo_br"] == "(", match["hi_br"] == ")")
+
+    @property
+    def assumptions(self) -> dict[str, bool]:
+        """The sympy assumptions a symbol in this domain may carry."""
+        if self.lower == 0 and self.lower_open or bool(self.lower > 0):
+            return {"positive": True}
+        if self.lower == 0:
+            return {"nonnegative": True}
+        return {"real": True}
+
+    def symbol(self, name: str) -> sp.Symbol:
+        """The sympy symbol of a parameter `name` in this domain."""
+        return sp.Symbol(name, **self.assumptions)
+
+    def contains(self, value: float) -> bool:
+        lo, hi = float(self.lower), float(self.upper)
+        above = value > lo if self.lower_open else value >= lo
+        below = value < hi if self.upper_open else value <= hi
+        return above and below
+
+    def sample_range(self) -> tuple[float, float]:
+        """A finite range to draw test points from, strictly inside the domain.
+
+        Unbounded sides get a physically sized span (0.5 … 3 for positive quantities, ±3 for
+        reals), so that sampled values are neither tiny nor huge; closed ends are kept slightly
+        inside so that a point never lands on a boundary where an expression may be singular.
+        """
+        lo, hi = float(self.lower), float(self.upper)
+        if math.isinf(lo) and math.isinf(hi):
+            return (-3.0, 3.0)
+        if math.isinf(hi):
+            return (
+                (lo + 0.5, lo + 3.0) if lo == 0 else (lo + 0.1 * abs(lo) + 0.1, lo + 3.0 + abs(lo))
+            )
+        if math.isinf(lo):
+            return (hi - 3.0 - abs(hi), hi - 0.1 * abs(hi) - 0.1)
+        margin = 0.02 * (hi - lo)
+        return (lo + margin, hi - margin)
+
+
+POSITIVE = Domain.parse("positive")
+NONNEGATIVE = Domain.parse("nonnegative")
+REAL = Domain.parse("real")

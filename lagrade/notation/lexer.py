@@ -1,0 +1,308 @@
+"""Student text → tokens: Unicode normalisation, position bookkeeping and the tokenizer.
+
+Every later stage (LaTeX translation, parsing) works on a rewritten text; `Source` remembers,
+for each rewritten character, which characters of the student's original text it came from, so
+that every error points at what the student actually typed. `Source.fail` is the one place that
+builds a `ParseError`.
+"""
+
+from __future__ import annotations
+
+import re
+import unicodedata
+from collections.abc import Iterable
+from typing import NamedTuple, NoReturn
+
+from lagrade.errors import ParseError
+
+#: Combining dot and diaeresis: the lexer reads them as "velocity of" and "acceleration of".
+DOT_MARK = "\u0307"
+DDOT_MARK = "\u0308"
+
+
+class Source:
+    """Text being read, and for each of its characters the span in the original answer."""
+
+    __slots__ = ("original", "text", "offset", "stop", "starts", "ends")
+
+    def __init__(
+        self,
+        original: str,
+        text: str,
+        offset: int = 0,
+        stop: int | None = None,
+        starts: list[int] | None = None,
+        ends: list[int] | None = None,
+    ):
+        self.original = original
+        self.text = text
+        self.offset = offset  # used only while the text is an untouched slice of the original
+        self.stop = offset + len(text) if stop is None else stop
+        self.starts = starts
+        self.ends = ends
+
+    def locate(self, start: int, end: int) -> tuple[int, int]:
+        """Span (start, end) of this text → span in the original answer."""
+        n = len(self.text)
+        if self.starts is None:
+            start, end = min(start, n), min(max(start, end), n)
+            return self.offset + start, self.offset + end
+        assert self.ends is not None
+        if start >= n:
+            return self.stop, self.stop
+        s = self.starts[start]
+        e = self.ends[min(end, n) - 1] if end > start else s
+        return s, max(s, e)
+
+    def fail(self, message: str, start: int, end: int, hint: str | None = None) -> NoReturn:
+        """Raise the ParseError for characters start…end of this text."""
+        raise ParseError(message, self.locate(start, end), self.original, hint)
+
+    def fail_at_original(self, message: str, start: int, end: int) -> NoReturn:
+        raise ParseError(message, (start, end), self.original)
+
+    def derive(self, pieces: Iterable[tuple[str, int, int]]) -> Source:
+        """A rewritten text made of `pieces` (text, start, end): each piece replaces characters
+        start…end of this text."""
+        texts: list[str] = []
+        starts: list[int] = []
+        ends: list[int] = []
+        for piece, start, end in pieces:
+            if not piece:
+                continue
+            s, e = self.locate(start, end)
+            texts.append(piece)
+            starts.extend([s] * len(piece))
+            ends.extend([e] * len(piece))
+        return Source(self.original, "".join(texts), stop=self.stop, starts=starts, ends=ends)
+
+
+# --- Unicode normalisation -----------------------------------------------------------------------
+
+_ASCII_CONTROL = re.compile(r"[\x00-\x08\x0b\x0c\x0e-\x1f\x7f]")
+
+# Letters that look exactly like Latin ones: a student (or a paste) could hide a different symbol.
+_LOOKALIKES = frozenset("οΟΑΒΕΖΗΙΚΜΝΡΤΥΧϲϳѕіјԁһ")
+# Characters of other categories that render as nothing.
+_BLANKS = frozenset("\u034f\u115f\u1160\u17b4\u17b5\u180e\u2800\u3164\uffa0")
+
+_SUPERSCRIPTS = {
+    "⁰": "0", "¹": "1", "²": "2", "³": "3", "⁴": "4", "⁵": "5", "⁶": "6", "⁷": "7", "⁸": "8",
+    "⁹": "9", "⁻": "-",
+}  # fmt: skip
+_FRACTIONS = {
+    "½": "(1/2)", "⅓": "(1/3)", "⅔": "(2/3)", "¼": "(1/4)", "¾": "(3/4)", "⅕": "(1/5)",
+    "⅙": "(1/6)", "⅛": "(1/8)",
+}  # fmt: skip
+_OPERATORS = {
+    "·": "*", "⋅": "*", "×": "*", "∙": "*", "∗": "*", "−": "-", "–": "-", "—": "-", "÷": "/",
+    "′": "'", "’": "'", "≠": "!=", "≤": "<=", "≥": ">=",
+}  # fmt: skip
+GREEK = {
+    "α": "alpha", "β": "beta", "γ": "gamma", "δ": "delta", "ε": "epsilon", "ζ": "zeta",
+    "η": "eta", "θ": "theta", "ι": "iota", "κ": "kappa", "λ": "lambda", "μ": "mu", "ν": "nu",
+    "ξ": "xi", "π": "pi", "ρ": "rho", "σ": "sigma", "ς": "sigma", "τ": "tau", "υ": "upsilon",
+    "φ": "phi", "χ": "chi", "ψ": "psi", "ω": "omega",
+    "Γ": "Gamma", "Δ": "Delta", "Θ": "Theta", "Λ": "Lambda", "Ξ": "Xi", "Π": "Pi",
+    "Σ": "Sigma", "Φ": "Phi", "Ψ": "Psi", "Ω": "Omega",
+}  # fmt: skip
+
+
+def _is_hidden(c: str) -> bool:
+    """Invisible (format, control, unassigned) or look-alike characters."""
+    if c in "\t\n\r":
+        return False
+    if c in _LOOKALIKES or c in _BLANKS or "\u0400" <= c <= "\u052f" or "\ufe00" <= c <= "\ufe0f":
+        return True
+    return unicodedata.category(c) in ("Cc", "Cf", "Co", "Cs", "Cn", "Zl", "Zp")
+
+
+def _hidden_message(c: str, position: int) -> str:
+    # Positions in messages count from 1, as a student counts characters.
+    return f"Invisible or look-alike character U+{ord(c):04X} at position {position + 1}."
+
+
+def normalise(src: Source) -> Source:
+    """NFKC, then the operator, superscript, fraction and Greek mappings of notation.md; reject
+    invisible and look-alike characters. Plain ASCII (the usual case) is returned untouched."""
+    text = src.text
+    if text.isascii():
+        bad = _ASCII_CONTROL.search(text)
+        if bad:
+            where = src.locate(bad.start(), bad.end())[0]
+            src.fail(_hidden_message(bad.group(), where), bad.start(), bad.end())
+        return src
+    pieces: list[tuple[str, int, int]] = []
+    i, n = 0, len(text)
+    after_greek = False  # ωt is omega*t: a Greek letter is one symbol, not part of a longer name
+    while i < n:
+        c = text[i]
+        if c < "\x80":
+            if _ASCII_CONTROL.match(c):
+                src.fail(_hidden_message(c, src.locate(i, i)[0]), i, i + 1)
+            if after_greek and c.isalpha():
+                pieces.append((" ", i, i))
+            after_greek = False
+            pieces.append((c, i, i + 1))
+            i += 1
+            continue
+        after_greek = False
+        if _is_hidden(c):
+            src.fail(_hidden_message(c, src.locate(i, i)[0]), i, i + 1)
+        if c in _SUPERSCRIPTS:  # before NFKC, which would turn x² into x2
+            j = i
+            while j < n and text[j] in _SUPERSCRIPTS:
+                j += 1
+            pieces.append(("^" + "".join(_SUPERSCRIPTS[x] for x in text[i:j]), i, j))
+            i = j
+            continue
+        if c in _FRACTIONS or c in _OPERATORS:  # before NFKC, which decomposes ≠ and ½
+            pieces.append((_FRACTIONS.get(c) or _OPERATORS[c], i, i + 1))
+            i += 1
+            continue
+        j = i + 1
+        while j < n and unicodedata.combining(text[j]):
+            if _is_hidden(text[j]):
+                src.fail(_hidden_message(text[j], src.locate(j, j)[0]), j, j + 1)
+            j += 1
+        cluster = unicodedata.normalize("NFD", unicodedata.normalize("NFKC", text[i:j]))
+        out = []
+        for ch in cluster:
+            if ch < "\x80" or ch == DOT_MARK or ch == DDOT_MARK:
+                out.append(ch)
+            elif ch in GREEK:
+                before = out[-1][-1:] if out else pieces[-1][0][-1:] if pieces else ""
+                if before.isascii() and before.isalpha():
+                    out.append(" ")
+                out.append(GREEK[ch])
+                after_greek = True
+            elif ch in _OPERATORS:  # reached through NFKC, e.g. fullwidth forms
+                out.append(_OPERATORS[ch])
+            elif unicodedata.category(ch) == "Zs":
+                out.append(" ")
+            else:
+                where = src.locate(i, i)[0] + 1
+                bad = text[i:j]
+                src.fail(
+                    f"Unexpected character '{bad}' (U+{ord(c):04X}) at position {where}.", i, j
+                )
+        pieces.append(("".join(out), i, j))
+        i = j
+    return src.derive(pieces)
+
+
+# --- tokens --------------------------------------------------------------------------------------
+
+
+class Token(NamedTuple):
+    """One token. For names, `text` has braces and derivative marks removed; `marks` counts
+    time derivatives written as combining dots, `primes` the trailing primes."""
+
+    kind: str  # "num", "name", "op", "end"
+    text: str
+    start: int
+    end: int
+    spaced: bool = False  # whitespace right before it
+    marks: int = 0
+    primes: int = 0
+
+
+_TOKEN = re.compile(
+    r"""
+    (?P<ws>[ \t\r\n]+)
+  | (?P<num>(?:[0-9]+(?:\.[0-9]+)?|\.[0-9]+)(?:[eE][+-]?[0-9]+)?)
+  | (?P<name>[A-Za-z_](?:[A-Za-z0-9\u0307\u0308]|_(?:\{[A-Za-z0-9_\u0307\u0308]*\})?)*'*)
+  | (?P<op>\*\*|==|<=|>=|!=|[-+*/^=(),<>;])
+    """,
+    re.VERBOSE,
+)
+
+_EQUATION_OPS = frozenset(("==", "<", ">", "<=", ">=", "!="))
+
+_CHAR_MESSAGES = {
+    "[": "Use round brackets ( ) only.",
+    "]": "Use round brackets ( ) only.",
+    "{": "Use round brackets ( ) only.",
+    "}": "Use round brackets ( ) only.",
+    "|": "Write abs(x) for an absolute value.",
+    "!": "Factorials are not supported.",
+    "#": "Unexpected character '#': comments are not part of an answer.",
+    ".": "Unexpected '.': write decimals with digits on both sides, as in 0.5.",
+    "\\": "Unexpected backslash: LaTeX is read only when the answer is marked as LaTeX.",
+    DOT_MARK: "A combining dot must follow a coordinate's name, as in θ̇.",
+    DDOT_MARK: "A combining diaeresis must follow a coordinate's name, as in θ̈.",
+}
+
+MAX_DIGITS = 30
+MAX_DECIMAL_EXPONENT = 100
+
+
+def tokenize(src: Source) -> list[Token]:
+    """The tokens of `src`, ending with an `end` token; lexical errors raise at once."""
+    text = src.text
+    tokens: list[Token] = []
+    append = tokens.append
+    match = _TOKEN.match
+    pos, n, spaced = 0, len(text), False
+    while pos < n:
+        m = match(text, pos)
+        if m is None:
+            c = text[pos]
+            message = _CHAR_MESSAGES.get(c)
+            if message is None:
+                quote = '"' if c == "'" else "'"
+                message = f"Unexpected character {quote}{c}{quote}."
+            src.fail(message, pos, pos + 1)
+        kind = m.lastgroup
+        end = m.end()
+        if kind == "ws":
+            spaced = True
+            pos = end
+            continue
+        word = m.group()
+        if kind == "name":
+            primes = len(word) - len(word.rstrip("'"))
+            word = word[: len(word) - primes]
+            marks = 0
+            if DOT_MARK in word or DDOT_MARK in word:
+                marks = word.count(DOT_MARK) + 2 * word.count(DDOT_MARK)
+                word = word.replace(DOT_MARK, "").replace(DDOT_MARK, "")
+            if "{" in word:
+                word = word.replace("{", "").replace("}", "")
+            append(Token("name", word, pos, end, spaced, marks, primes))
+        elif kind == "op" and word in _EQUATION_OPS:
+            src.fail("Use a single '=' for an equation.", pos, end)
+        else:
+            append(Token(kind, word, pos, end, spaced))
+        spaced = False
+        pos = end
+    append(Token("end", "", n, n, spaced))
+    return tokens
+
+
+def read_number(token: Token, src: Source) -> tuple[int, int, bool]:
+    """A number token's exact value as (numerator, denominator, written_as_integer); decimals and
+    scientific notation are exact (6.674e-11 is 6674/10^14). Enforces the size limits."""
+    text = token.text
+    mantissa, _, exponent = text.replace("E", "e").partition("e")
+    whole, _, fraction = mantissa.partition(".")
+    digits = (whole + fraction).lstrip("0")
+    if len(digits) > MAX_DIGITS:
+        src.fail(f"Number too long: at most {MAX_DIGITS} digits.", token.start, token.end)
+    shift = 0
+    if exponent:
+        if len(exponent.lstrip("+-").lstrip("0")) > 3 or abs(int(exponent)) > MAX_DECIMAL_EXPONENT:
+            src.fail(
+                f"Exponent of a number too large: at most e±{MAX_DECIMAL_EXPONENT}.",
+                token.start,
+                token.end,
+            )
+        shift = int(exponent)
+    p = int(whole + fraction) if whole + fraction else 0
+    shift -= len(fraction)
+    q = 1
+    if shift >= 0:
+        p *= 10**shift
+    else:
+        q = 10**-shift
+    return p, q, not fraction and not exponent and "." not in text

@@ -1,0 +1,81 @@
+"""The layered house, held on the real import graph: every `import` and `from … import` of every
+module of lagrade, at any depth (inside functions too), may name only its own layer's package or
+a layer below. Same-layer packages (judge and assign; bank and notation) never import each other.
+"""
+
+import ast
+import pathlib
+
+import lagrade
+
+ROOT = pathlib.Path(lagrade.__file__).parent
+
+#: Each layer package and the lagrade packages it may import (errors.py sits under them all).
+ALLOWED = {
+    "mechanics": {"mechanics"},
+    "bank": {"bank", "mechanics"},
+    "notation": {"notation", "mechanics"},
+    "judge": {"judge", "notation", "bank", "mechanics"},
+    "assign": {"assign", "notation", "bank", "mechanics"},
+    "grading": {"grading", "judge", "assign", "notation", "bank", "mechanics"},
+    "cli": {"cli", "grading", "judge", "assign", "notation", "bank", "mechanics"},
+}
+
+
+def _imports(path: pathlib.Path) -> list[tuple[int, str]]:
+    """(line, absolute module) for every import in the file, relative ones resolved."""
+    package = path.relative_to(ROOT.parent).with_suffix("").parts
+    package = package[:-1]  # the package the module lives in
+    found = []
+    for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+        if isinstance(node, ast.Import):
+            found += [(node.lineno, a.name) for a in node.names]
+        elif isinstance(node, ast.ImportFrom):
+            if node.level:
+                base = list(package[: len(package) - node.level + 1])
+                module = ".".join(base + ([node.module] if node.module else []))
+            else:
+                module = node.module or ""
+            found.append((node.lineno, module))
+            found += [(node.lineno, f"{module}.{a.name}") for a in node.names]
+    return found
+
+
+def _layer(module: str) -> str | None:
+    parts = module.split(".")
+    if parts[0] != "lagrade" or len(parts) < 2:
+        return None
+    return parts[1] if parts[1] in ALLOWED else None
+
+
+def test_every_module_belongs_to_a_layer():
+    loose = [
+        p.relative_to(ROOT).as_posix()
+        for p in ROOT.glob("*.py")
+        if p.name not in ("__init__.py", "__main__.py", "errors.py")
+    ]
+    assert loose == [], "a module outside every layer: put it in the layer that owns it"
+
+
+def test_layers_only_look_down():
+    offenders = []
+    for path in sorted(ROOT.rglob("*.py")):
+        rel = path.relative_to(ROOT)
+        if len(rel.parts) < 2:
+            continue  # the front door and the error tree
+        own = rel.parts[0]
+        for line, module in _imports(path):
+            target = _layer(module)
+            if target is not None and target not in ALLOWED[own]:
+                offenders.append(f"{rel}:{line} imports {module} ({own} → {target})")
+    assert offenders == []
+
+
+def test_the_front_door_loads_nothing_heavy():
+    """`import lagrade` and the CLI's entry module must not pull in sympy (start-up time)."""
+    import subprocess
+    import sys
+
+    code = "import sys, lagrade, lagrade.cli.main; print('sympy' in sys.modules)"
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert out.stdout.strip() == "False"
