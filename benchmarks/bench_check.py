@@ -3,8 +3,8 @@
 1. Builds ≥ 1,000 labelled requests of every part from every scene of the bank (the corpus of
    tests/grading/corpus.py: rewrites and single-term mutations, labels verified at 50 digits
    independently of the grader; plus dof, cyclic, T, V, transformation requests).
-2. Runs them through `grader.check.run_batch` — the code behind `lagrade check --batch` — in one
-   worker process, and reports median and p99 time per request and requests per second.
+2. Runs them through `lagrade.judge.check.run_batch` — the code behind `lagrade check --batch` —
+   in one worker process, and reports median and p99 time per request and requests per second.
 3. Runs the expression-level pairs of the same corpus (L, T, V, momenta, expressions) through
    `sympy.simplify(a - b) == 0` and `Expr.equals`, each in a killable worker with a per-check time
    limit, on a stratified subset (simplify is slow), and reports each method's wrong verdicts

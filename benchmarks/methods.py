@@ -6,7 +6,7 @@ A method is an object with a `name` and `decide(answer, reference, domains) -> b
 (None: this method cannot decide the pair — outside its scope, or no usable sample point).
 `domains` maps each free symbol to the `Domain` its values are drawn from; a symbol without an
 entry is taken as real. Expressions may come from student text, so nothing here calls `lambdify`,
-`sympify` or `eval`: numbers come from the whitelist compiler of `grader.evaluate`.
+`sympify` or `eval`: numbers come from the whitelist compiler of `lagrade.judge.evaluate`.
 
 The families (`all_methods()` lists them, named as in docs/methods.csv):
 
@@ -17,8 +17,9 @@ The families (`all_methods()` lists them, named as in docs/methods.csv):
 - `mp{d}_{n}pt`: the same in mpmath at d digits, ε = 10^-(d − 8).
 - `exact_rational`: exact evaluation at random rational points of rational functions of the symbols
   and of sin, cos, tan of their integer combinations (Weierstrass substitution, see below).
-- `numeric_hybrid`: the project's previous default, `grader.equivalence.numeric_equivalent`
-  (wrapped, not reimplemented); `exact_then_adaptive` replaced it as the default.
+- `numeric_hybrid`: the project's previous default, `numeric_equivalent` below (on
+  `lagrade.judge.equivalence.expressions_equal`, wrapped, not reimplemented);
+  `exact_then_adaptive` replaced it as the default.
 - `webwork`, `numbas`: those systems' documented default rules, reimplemented for comparison.
 - `exact_then_scaled`: exact where it applies, otherwise a term-scaled float64 test with
   mpmath confirmation near the tolerance (the study's proposal; see its docstring).
@@ -44,13 +45,10 @@ from lagrade.judge.adaptive import (
     sample_ranges,
     sampled_pair,
 )
-from lagrade.judge.equivalence import (
-    Compiled,
-    Space,
-    expressions_equal,
-    finite_mask,
-)
+from lagrade.judge.compiled import Compiled, finite_mask
+from lagrade.judge.equivalence import expressions_equal
 from lagrade.judge.exact import Domains, ExactRational, sorted_symbols
+from lagrade.judge.sampling import Space
 from lagrade.mechanics.domains import Domain
 
 
@@ -224,10 +222,10 @@ def numeric_equivalent(
 
 @dataclass(frozen=True)
 class HybridDefault:
-    """The project's previous default, `grader.equivalence.numeric_equivalent` (numeric first,
-    float64 relative to the size of the top-level terms, 50-digit confirmation between 1e-10 and
-    1e-6), wrapped, not reimplemented: its Equivalence maps to True/False, and None when the
-    reference is undefined everywhere or holds something the evaluator does not know."""
+    """The project's previous default, `numeric_equivalent` above (numeric first, float64
+    relative to the size of the top-level terms, 50-digit confirmation between 1e-10 and 1e-6),
+    wrapped, not reimplemented: its Equivalence maps to True/False, and None when the reference
+    is undefined everywhere or holds something the evaluator does not know."""
 
     seed: int = 0
     name: str = "numeric_hybrid"
@@ -306,7 +304,7 @@ class Numbas:
 FLOAT_POINTS = (1, 2, 3, 5, 10, 20, 50)
 FLOAT_TOLERANCES = (1e-3, 1e-6, 1e-9)
 
-#: The name of the method the project grades with (grader.equivalence.expressions_equivalent);
+#: The name of the method the project grades with (lagrade.judge.adaptive.ExactThenAdaptive);
 #: the chart marks it.
 DEFAULT_NAME = "exact_then_adaptive"
 

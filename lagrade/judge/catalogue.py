@@ -21,15 +21,12 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 import sympy as sp
 
-from lagrade.judge.equivalence import (
-    Compiled,
-    Points,
-    equation_rows,
-    euler_lagrange_values,
-    in_span,
-    lagrangians_match,
-)
+from lagrade.judge.compiled import Compiled
+from lagrade.judge.derivatives import euler_lagrange_values
+from lagrade.judge.equivalence import lagrangians_match
 from lagrade.judge.evaluate import UnsupportedExpression
+from lagrade.judge.rows import equation_rows, in_span
+from lagrade.judge.sampling import Points
 from lagrade.mechanics.lagrange import Jet, LagrangianSystem
 
 if TYPE_CHECKING:

@@ -30,9 +30,8 @@ from collections.abc import Iterable, Iterator, Mapping
 from pathlib import Path
 from typing import Any
 
-from lagrade.errors import LagradeError, RequestError
+from lagrade.errors import LagradeError, ReferenceUndefined, RequestError
 from lagrade.judge.checks import CHECKERS, Verdict, run_checker
-from lagrade.judge.equivalence import ReferenceUndefined
 from lagrade.judge.problem import Problem, build_problem, problem_key
 
 __all__ = [

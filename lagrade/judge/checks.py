@@ -31,30 +31,27 @@ import sympy as sp
 from lagrade.errors import ParseError, RequestError
 from lagrade.judge.adaptive import ExactThenAdaptive
 from lagrade.judge.catalogue import Mutant, plain
+from lagrade.judge.compiled import Compiled, to_length
+from lagrade.judge.decision import Outcome, decide
+from lagrade.judge.derivatives import euler_lagrange_values, gradient, time_derivative_on_shell
 from lagrade.judge.equivalence import (
-    Compiled,
-    Outcome,
-    Points,
     affine_match,
-    coordinate_range,
-    decide,
     differ_by_constant,
-    equation_rows,
-    euler_lagrange_values,
     expressions_equal,
-    gradient,
-    in_span,
-    lagrangian_rows,
     lagrangians_match,
     reference_values,
-    row_rank,
-    solve_accelerations,
-    time_derivative_on_shell,
-    to_length,
     values_equal,
 )
 from lagrade.judge.evaluate import FLOAT, UnsupportedExpression
 from lagrade.judge.problem import Problem, parser
+from lagrade.judge.rows import (
+    equation_rows,
+    in_span,
+    lagrangian_rows,
+    row_rank,
+    solve_accelerations,
+)
+from lagrade.judge.sampling import Points, coordinate_range
 from lagrade.mechanics.domains import Domain
 
 STATUSES = ("correct", "incorrect", "invalid", "timeout", "error")  # error: a bug of ours

@@ -24,7 +24,8 @@ import sympy as sp
 
 from lagrade.bank.registry import get_scene
 from lagrade.errors import LagradeError, ParseError, RequestError
-from lagrade.judge.equivalence import Compiled, Points, Space, finite_mask, seed_for
+from lagrade.judge.compiled import Compiled, finite_mask
+from lagrade.judge.sampling import Points, Space, seed_for
 from lagrade.mechanics.domains import Domain
 from lagrade.mechanics.lagrange import Jet, LagrangianSystem, jet, t
 from lagrade.mechanics.scene import SceneVariant

@@ -4,8 +4,9 @@ accelerations, row-combined, moved across '=') and single-term mutations (sign, 
 term, sin/cos swap, wrong coordinate).
 
 Every label is decided here independently of the grader: symbolic derivatives from sympy and
-values at 50 digits from `evalf`, at points drawn with Python's own `random` — no part of
-grader.evaluate or grader.equivalence is used. Shared by the tests and by benchmarks/bench_check.py.
+values at 50 digits from `evalf`, at points drawn with Python's own `random` — nothing of
+lagrade.judge.evaluate or of the equivalence modules (lagrade.judge.equivalence and the modules
+it builds on) is used. Shared by the tests and by benchmarks/bench_check.py.
 """
 
 from __future__ import annotations

@@ -8,9 +8,11 @@ import pytest
 import sympy as sp
 
 from lagrade.judge.catalogue import Mutant, plain, swap_sin_cos
-from lagrade.judge.equivalence import Compiled, _in_span_float, equation_rows, euler_lagrange_values
+from lagrade.judge.compiled import Compiled
+from lagrade.judge.derivatives import euler_lagrange_values
 from lagrade.judge.evaluate import UnsupportedExpression
 from lagrade.judge.problem import build_problem
+from lagrade.judge.rows import _in_span_float, equation_rows
 
 from .conftest import HOOP, WEDGE, judge
 

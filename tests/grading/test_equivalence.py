@@ -9,23 +9,13 @@ import pytest
 import sympy as sp
 
 from lagrade.bank import get_scene
-from lagrade.judge.equivalence import (
-    Compiled,
-    Space,
-    affine_match,
-    decide,
-    equation_rows,
-    euler_lagrange_values,
-    expressions_equal,
-    finite_mask,
-    in_span,
-    lagrangians_match,
-    row_rank,
-    seed_for,
-    solve_accelerations,
-    time_derivative_on_shell,
-)
+from lagrade.judge.compiled import Compiled, finite_mask
+from lagrade.judge.decision import decide
+from lagrade.judge.derivatives import euler_lagrange_values, time_derivative_on_shell
+from lagrade.judge.equivalence import affine_match, expressions_equal, lagrangians_match
 from lagrade.judge.evaluate import MP, UnsupportedExpression, compile_program, run
+from lagrade.judge.rows import equation_rows, in_span, row_rank, solve_accelerations
+from lagrade.judge.sampling import Space, seed_for
 from lagrade.mechanics import Domain
 from lagrade.mechanics.lagrange import jet, t
 

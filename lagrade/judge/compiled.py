@@ -1,0 +1,66 @@
+"""Expressions compiled once by top-level terms for evaluation at the sample points, so that every
+value comes with the size of the terms it is made of (the scale a residual is measured against)."""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterable, Mapping, Sequence
+from dataclasses import dataclass
+
+import numpy as np
+import sympy as sp
+
+from lagrade.judge.evaluate import FLOAT, Program, compile_program, run, run_hyperdual, top_terms
+
+
+@dataclass(frozen=True)
+class Compiled:
+    """An expression compiled by top-level terms: its value is their sum, its size the sum of
+    their absolute values."""
+
+    expr: sp.Expr
+    program: Program
+
+    @classmethod
+    def of(cls, expr: sp.Expr) -> Compiled:
+        return cls(expr, compile_program(top_terms(sp.S(expr))))
+
+    @property
+    def symbols(self) -> frozenset[sp.Symbol]:
+        return self.program.symbols
+
+    def values(self, env: Mapping, backend=FLOAT) -> tuple[np.ndarray, np.ndarray]:
+        """(value, size) at the points of env."""
+        terms = run(self.program, env, backend)
+        return total(terms), total(abs(x) for x in terms)
+
+    def hyperdual(self, env: Mapping, backend=FLOAT) -> list:
+        return run_hyperdual(self.program, env, backend)
+
+
+def total(items: Iterable):
+    total = 0
+    for x in items:
+        total = total + x
+    return total
+
+
+def to_length(x, n: int, backend=FLOAT):
+    """x as an array of length n (constants come out of the evaluator as scalars)."""
+    if np.ndim(x) == 0:
+        return np.full(n, x, dtype=float if backend is FLOAT else object)
+    return x
+
+
+def finite_mask(compiled: Sequence[Compiled]) -> Callable[[dict], np.ndarray]:
+    """A validity test for sampling: every compiled reference is finite at the point."""
+
+    def valid(env: dict) -> np.ndarray:
+        n = len(next(iter(env.values())))
+        ok = np.ones(n, dtype=bool)
+        with np.errstate(all="ignore"):
+            for c in compiled:
+                value, size = c.values(env)
+                ok &= np.isfinite(to_length(value, n)) & np.isfinite(to_length(size, n))
+        return ok
+
+    return valid

@@ -1,0 +1,169 @@
+"""The sample space of a question and the points drawn from it: q, q̇, q̈ and t as independent
+variables, parameters inside their declared domains in groups of points that share parameter
+values; and a memo for inputs derived from the points alone."""
+
+from __future__ import annotations
+
+import re
+import zlib
+from collections.abc import Callable, Iterable, Mapping, Sequence
+from dataclasses import dataclass, field
+from functools import cached_property
+
+import numpy as np
+import sympy as sp
+
+from lagrade.errors import ReferenceUndefined
+from lagrade.judge.evaluate import FLOAT, MP
+from lagrade.mechanics.domains import Domain
+from lagrade.mechanics.lagrange import Jet, t
+
+#: Parameter draws per set of sample points, and points (q, q̇, q̈, t) per parameter draw.
+GROUPS = 4
+PER_GROUP = 6
+
+_RADIAL = re.compile(r"^(r|rho|ρ|ell|l)(_?\w*)?$")
+
+
+def seed_for(*parts: object) -> int:
+    """A stable seed from a request's identity (same points for every student of a problem)."""
+    return zlib.crc32("|".join(map(str, parts)).encode())
+
+
+def coordinate_range(name: str) -> tuple[float, float]:
+    """Where a coordinate is drawn when the problem says nothing: a radius-like name in
+    (0.3, 2.5), any other coordinate in ±(0.2, 2.5) — both signs of sin and cos of an angle,
+    away from 0 where many expressions are special."""
+    return (0.3, 2.5) if _RADIAL.match(name) else (-2.5, 2.5)
+
+
+@dataclass(frozen=True)
+class Space:
+    """The independent variables of a problem: coordinates with their jets, t, and parameters
+    with domains (and, for a numeric variant, the values on its handout)."""
+
+    jets: tuple[Jet, ...]
+    parameters: Mapping[sp.Symbol, Domain]
+    values: Mapping[sp.Symbol, float] = field(default_factory=dict)
+    coordinate_domains: Mapping[str, tuple[float, float]] = field(default_factory=dict)
+
+    @cached_property
+    def jet_symbols(self) -> frozenset[sp.Symbol]:
+        return frozenset(s for j in self.jets for s in (j.q, j.dot, j.ddot))
+
+    def draw(
+        self,
+        seed: int,
+        free: Iterable[sp.Symbol] | None = None,
+        valid: Callable[[dict], np.ndarray] | None = None,
+        groups: int = GROUPS,
+        per_group: int = PER_GROUP,
+    ) -> Points:
+        """Sample points: `groups` parameter draws, each with `per_group` draws of (q, q̇, q̈, t).
+
+        Parameters in `free` (default: all) are drawn from their domains; the others keep the
+        variant's values when it has them. Points where `valid` (the reference is finite) says
+        no are redrawn; a group whose parameters leave the reference undefined is redrawn whole.
+        """
+        rng = np.random.default_rng(seed)
+        free_set = set(self.parameters) if free is None else set(free)
+        chosen: list[dict[sp.Symbol, np.ndarray]] = []
+        for _ in range(groups):
+            for _attempt in range(6):
+                block = self._group(rng, free_set, per_group)
+                if valid is None:
+                    chosen.append(block)
+                    break
+                ok = valid(block)
+                for _redraw in range(4):
+                    if ok.all():
+                        break
+                    fresh = self._group(rng, free_set, per_group, params_from=block)
+                    ok_fresh = valid(fresh)
+                    for s in block:
+                        block[s] = np.where(ok, block[s], fresh[s])
+                    ok = ok | ok_fresh
+                if ok.all():
+                    chosen.append(block)
+                    break
+        if len(chosen) < max(1, groups // 2):
+            raise ReferenceUndefined(
+                "the reference answer is undefined at every point drawn from the declared domains"
+            )
+        env = {s: np.concatenate([b[s] for b in chosen]) for s in chosen[0]}
+        group = np.repeat(np.arange(len(chosen)), per_group)
+        return Points(env, group)
+
+    def _group(self, rng, free: set, k: int, params_from: dict | None = None) -> dict:
+        block: dict[sp.Symbol, np.ndarray] = {}
+        for s, dom in self.parameters.items():
+            if params_from is not None:
+                block[s] = params_from[s]
+            elif s not in free and s in self.values:
+                block[s] = np.full(k, float(self.values[s]))
+            else:
+                block[s] = np.full(k, rng.uniform(*dom.sample_range()))
+        for j in self.jets:
+            lo, hi = self.coordinate_domains.get(j.name) or coordinate_range(j.name)
+            block[j.q] = _away_from_zero(rng, lo, hi, k)
+            block[j.dot] = _away_from_zero(rng, -2.0, 2.0, k)
+            block[j.ddot] = _away_from_zero(rng, -2.0, 2.0, k)
+        block[t] = rng.uniform(0.1, 3.0, k)
+        return block
+
+
+def _away_from_zero(rng, lo: float, hi: float, k: int) -> np.ndarray:
+    """Uniform in (lo, hi) but with |x| ≥ 0.2 when the range straddles 0."""
+    x = rng.uniform(lo, hi, k)
+    if lo < 0 < hi:
+        near = np.abs(x) < 0.2
+        x = np.where(near, np.sign(x + 1e-300) * (0.2 + rng.uniform(0, 0.3, k)), x)
+    return x
+
+
+@dataclass
+class Points:
+    """Sample points as arrays, one entry per point, and the parameter group of each point."""
+
+    env: dict[sp.Symbol, np.ndarray]
+    group: np.ndarray
+    _mp_env: dict | None = None
+
+    @property
+    def n(self) -> int:
+        return len(self.group)
+
+    def arrays(self, backend=FLOAT) -> dict:
+        if backend is FLOAT:
+            return self.env
+        if self._mp_env is None:
+            self._mp_env = {s: MP.array(v) for s, v in self.env.items()}
+        return self._mp_env
+
+    def point(self, i: int, symbols: Iterable[sp.Symbol] | None = None) -> dict[str, float]:
+        """Point i as {name: value} (the witness of a difference), for the named symbols."""
+        keep = self.env if symbols is None else [s for s in symbols if s in self.env]
+        names = {s: s.name for s in keep}  # not str(s): sympy's printer is slow
+        return {
+            names[s]: float(f"{float(self.env[s][i]):.6g}") for s in sorted(keep, key=names.get)
+        }
+
+
+_MEMO: dict = {}
+_MEMO_SIZE = 256
+
+
+def memo_inputs(kind: str, env: Mapping, jets: Sequence[Jet], make: Callable[[], dict]) -> dict:
+    """Inputs derived from the sample points alone (tiled copies, hyper-dual seeds), built once
+    per points instead of once per answer. float64 only; the entry holds `env` itself, so an
+    id is never mistaken for another's. Sample points never change once drawn; an env that
+    did would be served stale inputs. Callers must not modify what they get."""
+    key = (kind, id(env), tuple(jets))
+    hit = _MEMO.get(key)
+    if hit is not None and hit[0] is env:
+        return hit[1]
+    value = make()
+    if len(_MEMO) >= _MEMO_SIZE:
+        _MEMO.clear()
+    _MEMO[key] = (env, value)
+    return value
