@@ -30,7 +30,6 @@ import sympy as sp
 
 from lagrade.errors import ParseError, RequestError
 from lagrade.judge.adaptive import ExactThenAdaptive
-from lagrade.judge.catalogue import Mutant, plain
 from lagrade.judge.compiled import Compiled, to_length
 from lagrade.judge.decision import Outcome, decide
 from lagrade.judge.derivatives import euler_lagrange_values, gradient, time_derivative_on_shell
@@ -43,6 +42,7 @@ from lagrade.judge.equivalence import (
     values_equal,
 )
 from lagrade.judge.evaluate import FLOAT, UnsupportedExpression
+from lagrade.judge.mutations import Mutant, plain
 from lagrade.judge.problem import Problem, parser
 from lagrade.judge.rows import (
     equation_rows,

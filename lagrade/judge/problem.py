@@ -24,6 +24,7 @@ import sympy as sp
 
 from lagrade.bank.registry import get_scene
 from lagrade.errors import LagradeError, ParseError, RequestError
+from lagrade.judge.catalogue import Catalogue
 from lagrade.judge.compiled import Compiled, finite_mask
 from lagrade.judge.sampling import Points, Space, seed_for
 from lagrade.mechanics.domains import Domain
@@ -157,10 +158,8 @@ class Problem:
         return self.variant.dof if self.variant is not None else len(self.jets)
 
     @cached_property
-    def catalogue(self):
-        """The mistakes this question invites, derived from its reference (grader.diagnose)."""
-        from lagrade.judge.catalogue import Catalogue
-
+    def catalogue(self) -> Catalogue:
+        """The mistakes this question invites, derived from its reference."""
         return Catalogue(self)
 
     # --- sample points, cached per part and per set of parameters left free --------------------

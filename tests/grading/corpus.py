@@ -20,7 +20,7 @@ import mpmath
 import sympy as sp
 
 from lagrade.bank.registry import get_scene, scene_ids
-from lagrade.judge.catalogue import plain
+from lagrade.judge.mutations import plain
 from lagrade.mechanics import lagrange as mech
 
 DIGITS = 50

@@ -7,10 +7,10 @@ import numpy as np
 import pytest
 import sympy as sp
 
-from lagrade.judge.catalogue import Mutant, plain, swap_sin_cos
 from lagrade.judge.compiled import Compiled
 from lagrade.judge.derivatives import euler_lagrange_values
 from lagrade.judge.evaluate import UnsupportedExpression
+from lagrade.judge.mutations import Mutant, plain, swap_sin_cos
 from lagrade.judge.problem import build_problem
 from lagrade.judge.rows import _in_span_float, equation_rows
 

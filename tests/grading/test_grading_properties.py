@@ -10,7 +10,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from lagrade.bank.registry import get_scene
-from lagrade.judge.catalogue import plain
+from lagrade.judge.mutations import plain
 from lagrade.mechanics import lagrange as mech
 
 from .conftest import judge

@@ -1,0 +1,164 @@
+"""Matching one wrong answer against many mutants at once: the mutants' values at a set of points
+are stacked into arrays once, and a few array operations per answer find the first mutant that
+the answer matches, by the same tests as judging one mutant at a time."""
+
+from __future__ import annotations
+
+import operator
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from lagrade.judge.evaluate import UnsupportedExpression
+from lagrade.judge.rows import Rows
+from lagrade.judge.sampling import Points
+
+# What a mutant may raise when it is compiled or evaluated: such a mutant is never matched.
+SKIPPED = (UnsupportedExpression, ValueError, ZeroDivisionError, np.linalg.LinAlgError)
+
+
+@dataclass(frozen=True)
+class Stack:
+    """Arrays of the candidates that evaluate at one set of points, one leading row each
+    (`index`: the row's position among the candidates), to test all candidates at once."""
+
+    candidates: tuple  # held, so that the id in the cache key stays theirs
+    index: np.ndarray
+    arrays: tuple
+
+    def of(self, candidates: Sequence) -> bool:
+        return len(candidates) == len(self.candidates) and all(
+            map(operator.is_, candidates, self.candidates)
+        )
+
+    def first(self, ok: np.ndarray):
+        """The first candidate whose row passed, in the candidates' order."""
+        hits = np.flatnonzero(ok)
+        return self.candidates[self.index[hits[0]]] if hits.size else None
+
+
+def stacked(
+    cached: Callable,
+    name: str,
+    candidates: Sequence,
+    points: Points,
+    evaluate: Callable[[Any], tuple[np.ndarray, ...]],
+    finish: Callable[..., tuple],
+) -> Stack | None:
+    """`finish(evaluate(c) for each candidate c, stacked)`, built once per candidates and
+    points and kept by `cached` (the question's `Problem.cached`); None when no candidate
+    evaluates. Candidates that fail to compile or evaluate are left out, as the one-at-a-time
+    loop skipped them."""
+
+    def build() -> Stack:
+        index, rows = [], []
+        with np.errstate(all="ignore"):
+            for k, c in enumerate(candidates):
+                try:
+                    rows.append(evaluate(c))
+                except SKIPPED:
+                    continue
+                index.append(k)
+            arrays = finish(*(np.stack(a) for a in zip(*rows, strict=True))) if rows else ()
+        return Stack(tuple(candidates), np.array(index, dtype=int), arrays)
+
+    stack = cached(f"{name}:{id(candidates)}", points, build)
+    if not stack.of(candidates):
+        stack = build()  # the sequence changed in place since the stack was built
+    return stack if len(stack.index) else None
+
+
+# --- Lagrangians: E(answer) = c E(mutant), c ≠ 0 per parameter group ------------------------------
+
+
+def lagrangian_arrays(Eb: np.ndarray, Sb: np.ndarray, group: np.ndarray) -> tuple:
+    """The mutants' E and its size (mutants, points, coordinates), Σ E² per parameter group
+    (the denominator of c), and the point-to-group map."""
+    groups, group_of = np.unique(group, return_inverse=True)
+    in_group = (group_of[:, None] == np.arange(len(groups))).astype(float)
+    return Eb, Sb, np.sum(Eb**2, axis=2) @ in_group, in_group, group_of
+
+
+def first_lagrangian(stack: Stack, answer_el: tuple[np.ndarray, np.ndarray]):
+    """The first mutant with E(answer) = c E(mutant), c ≠ 0 per parameter group, given E(answer)
+    and its size at the points."""
+    Ea, Sa = answer_el
+    Eb, Sb, den, in_group, group_of = stack.arrays
+    with np.errstate(all="ignore"):
+        # least-squares c per mutant and group; a non-finite value leaves c or r non-finite
+        # for that mutant only (rows are independent), so it does not match, as before
+        c = np.einsum("mpk,pk->mp", Eb, Ea) @ in_group / den  # (mutants, groups)
+        ok = np.all((den != 0) & (np.abs(c) >= 1e-9), axis=1)
+        c = c[:, group_of, None]  # per point: (mutants, points, 1)
+        ok &= vanish_rows(Ea - c * Eb, Sa + np.abs(c) * Sb)
+    return stack.first(ok)
+
+
+# --- values: equal, or equal up to a constant per parameter group ---------------------------------
+
+
+def first_plain(stack: Stack, answer: tuple[np.ndarray, np.ndarray]):
+    """The first mutant with the answer's values at the points, given the answer's (value,
+    size) and a stack of the mutants' (value, size)."""
+    a, sa = answer
+    b, sb = stack.arrays
+    with np.errstate(all="ignore"):
+        return stack.first(vanish_rows(a - b, sa + sb))
+
+
+def first_offset(stack: Stack, answer: tuple[np.ndarray, np.ndarray], points: Points):
+    """The first mutant the answer equals up to a constant per parameter group."""
+    a, sa = answer
+    b, sb = stack.arrays
+    starts = np.searchsorted(points.group, points.group)
+    with np.errstate(all="ignore"):
+        d = a - b
+        return stack.first(vanish_rows(d - d[:, starts], sa + sb + np.abs(d[:, starts])))
+
+
+# --- equations: the student's row in the span of a mutated system's rows --------------------------
+
+
+def span_arrays(R: np.ndarray, Rs: np.ndarray) -> tuple:
+    """What the span test of `rows.in_span` needs of mutated systems of rows R (mutants,
+    points, rows, n + 1) with sizes Rs that does not depend on the answer: an orthonormal basis
+    Q (mutants, points, n + 1, rows) of the rows (the QR is the costly part) and the relative
+    size of their terms (mutants, points)."""
+    Q, _ = np.linalg.qr(np.swapaxes(R, -1, -2))
+    norm = np.linalg.norm(R, axis=-1)
+    rel_ref = np.max(np.where(norm > 0, Rs / np.where(norm > 0, norm, 1), 0), axis=-1)
+    return Q, rel_ref
+
+
+def first_row(stack: Stack, student: Rows):
+    """The first mutated system whose rows span the student's equation (row 0 of `student`)."""
+    Q, rel_ref = stack.arrays
+    x, xs = student.coef[:, 0, :].astype(float), student.size[:, 0].astype(float)
+    with np.errstate(all="ignore"):
+        # in_span's test, its answer-independent part precomputed per mutant:
+        # x minus its projection on the mutated system's rows
+        res = x - np.einsum("mpij,mpj->mpi", Q, np.einsum("mpji,pj->mpi", Q, x))
+        r = np.linalg.norm(res, axis=2)
+        size = xs + np.linalg.norm(x, axis=1) * rel_ref
+        return stack.first(vanish_rows(r, size))
+
+
+# --- helpers --------------------------------------------------------------------------------------
+
+
+def full(pair, n: int) -> tuple[np.ndarray, np.ndarray]:
+    """(value, size) as float arrays of length n (constants come out of the evaluator as
+    scalars)."""
+    value, size = pair
+    return (
+        np.broadcast_to(np.asarray(value, float), (n,)),
+        np.broadcast_to(np.asarray(size, float), (n,)),
+    )
+
+
+def vanish_rows(r: np.ndarray, size: np.ndarray) -> np.ndarray:
+    """Per leading row (one per mutant): finite and within rounding of its terms everywhere."""
+    r, size = r.reshape(len(r), -1), size.reshape(len(size), -1)
+    return np.all(np.isfinite(r) & (np.abs(r) <= 1e-9 * size), axis=1)

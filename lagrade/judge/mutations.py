@@ -1,0 +1,298 @@
+"""Mutations of a reference, in sympy alone: each function takes a reference (L, T, V, a momentum,
+the Euler–Lagrange equations, a closed form) and returns the wrong answers of known kinds that
+students write for it, each with the sentence that names the mistake in the student's terms."""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Sequence
+from dataclasses import dataclass
+
+import sympy as sp
+
+from lagrade.mechanics.lagrange import Jet, LagrangianSystem
+from lagrade.mechanics.scene import SceneVariant
+
+
+@dataclass(frozen=True)
+class Mutant:
+    """A wrong answer of a known kind: `kind` for tests and statistics, `message` for the
+    student, `expr` the mutated reference."""
+
+    kind: str
+    message: str
+    expr: sp.Expr
+
+
+def plain(expr: sp.Expr) -> str:
+    """An expression as a student would type it (x^2, not x**2)."""
+    return sp.sstr(expr).replace("**", "^")
+
+
+def swap_sin_cos(expr: sp.Expr) -> sp.Expr:
+    """expr with every sin(u) written as cos(u) and every cos(u) as sin(u)."""
+    if isinstance(expr, sp.sin):
+        return sp.cos(swap_sin_cos(expr.args[0]))
+    if isinstance(expr, sp.cos):
+        return sp.sin(swap_sin_cos(expr.args[0]))
+    if not expr.args:
+        return expr
+    return expr.func(*(swap_sin_cos(a) for a in expr.args))
+
+
+def expanded_terms(expr: sp.Expr) -> tuple[sp.Expr, ...]:
+    """The terms of expr, expanded."""
+    return sp.Add.make_args(sp.expand(expr))
+
+
+def velocities_in(term: sp.Expr, jets: Sequence[Jet]) -> list[sp.Symbol]:
+    """The velocities q̇ that occur in term."""
+    return [j.dot for j in jets if term.has(j.dot)]
+
+
+def _factors(term: sp.Expr, parameters: Iterable[sp.Symbol]) -> list[sp.Symbol]:
+    """Parameters that multiply the term (not those inside a function's argument)."""
+    factors = sp.Mul.make_args(term)
+    bases = {f.base if isinstance(f, sp.Pow) else f for f in factors}
+    return [p for p in parameters if p in bases]
+
+
+def term_mutants(expr: sp.Expr, what: str, parameters: Sequence[sp.Symbol]) -> list[Mutant]:
+    """Single-term mutations of expr: a term with the wrong sign, left out, with sin and cos
+    swapped, twice or half its size, without one of its parameter factors."""
+    terms = expanded_terms(expr)
+    out: list[Mutant] = []
+    for k, term in enumerate(terms):
+        rest = sp.Add(*(terms[:k] + terms[k + 1 :]))
+        shown = plain(term)
+        out.append(
+            Mutant("wrong_sign", f"the term {shown} in {what} has the wrong sign", rest - term)
+        )
+        if term.has(sp.sin) or term.has(sp.cos):
+            swapped = swap_sin_cos(term)
+            if swapped != term:
+                out.append(
+                    Mutant(
+                        "sin_cos_swapped",
+                        f"sin and cos are swapped in the term {shown} of {what}",
+                        rest + swapped,
+                    )
+                )
+        for p in _factors(term, parameters):
+            out.append(
+                Mutant(
+                    "missing_factor",
+                    f"the term {shown} in {what} lacks the factor {p}",
+                    rest + term / p,
+                )
+            )
+        out.append(Mutant("missing_term", f"{what} lacks the term {shown}", rest))
+        out.append(
+            Mutant("factor_two", f"the term {shown} in {what} is twice too large", rest + 2 * term)
+        )
+        out.append(
+            Mutant(
+                "factor_half",
+                f"the term {shown} in {what} is half what it should be",
+                rest + term / 2,
+            )
+        )
+    return out
+
+
+def kinetic_mutants(T: sp.Expr, jets: Sequence[Jet], what: str) -> list[Mutant]:
+    """Mistakes in T itself: the ½ dropped on one term or on all of T, a missing cross term, a
+    missing term of the prescribed motion (centripetal, ω²)."""
+    out: list[Mutant] = []
+    terms = expanded_terms(T)
+    for k, term in enumerate(terms):
+        rest = sp.Add(*(terms[:k] + terms[k + 1 :]))
+        vel = velocities_in(term, jets)
+        coeff = term.as_coeff_Mul()[0]
+        if vel and isinstance(coeff, sp.Rational) and coeff.q % 2 == 0:
+            out.append(
+                Mutant(
+                    "dropped_half",
+                    f"the ½ is missing in the kinetic term {plain(term)} of {what}",
+                    rest + 2 * term,
+                )
+            )
+        if len(vel) >= 2:
+            cross = plain(sp.Mul(*vel))
+            out.append(
+                Mutant("missing_cross_term", f"{what} lacks the cross term in {cross}", rest)
+            )
+        if not vel:
+            out.append(
+                Mutant(
+                    "missing_driven_term",
+                    f"{what} lacks the term {plain(term)} from the prescribed motion "
+                    "(the centripetal "
+                    "or ω² term of the kinetic energy)",
+                    rest,
+                )
+            )
+    return out
+
+
+def body_mutants(variant: SceneVariant | None, T: sp.Expr, what: str) -> list[Mutant]:
+    """Per body of a scene with two or more: its kinetic energy without the ½, or left out."""
+    if variant is None or len(variant.bodies) < 2:
+        return []
+    out = []
+    for body in variant.bodies:
+        Tb = sp.expand(body.kinetic_energy(variant.jets))
+        if Tb == 0:
+            continue
+        out.append(
+            Mutant(
+                "dropped_half",
+                f"the ½ is missing in the kinetic energy of the {body.name} in {what}",
+                T + Tb,
+            )
+        )
+        out.append(
+            Mutant("missing_body", f"{what} lacks the kinetic energy of the {body.name}", T - Tb)
+        )
+    return out
+
+
+def momentum_mutants(
+    system: LagrangianSystem,
+    jets: Sequence[Jet],
+    k: int,
+    lagrangian_mutants: Iterable[Mutant],
+    parameters: Sequence[sp.Symbol],
+) -> list[Mutant]:
+    """Mistakes in p_k = ∂L/∂q̇_k: the momentum of another coordinate, ∂L/∂q_k instead, the
+    momentum of a Lagrangian with a kinetic mistake (from `lagrangian_mutants`), single terms."""
+    name = jets[k].name
+    what = f"your p_{name}"
+    momenta = system.generalized_momenta
+    out: list[Mutant] = []
+    for i, j in enumerate(jets):
+        if i != k:
+            out.append(
+                Mutant(
+                    "wrong_coordinate",
+                    f"{what} is the momentum of {j.name} (∂L/∂{j.name}_dot), not of {name}",
+                    momenta[i],
+                )
+            )
+    out.append(
+        Mutant(
+            "force_not_momentum",
+            f"{what} is ∂L/∂{name}; the momentum is ∂L/∂{name}_dot",
+            sp.diff(system.L, jets[k].q),
+        )
+    )
+    for m in lagrangian_mutants:
+        if m.kind in (
+            "dropped_half",
+            "missing_cross_term",
+            "missing_driven_term",
+            "dropped_half_all",
+        ):
+            pk = sp.expand(sp.diff(m.expr, jets[k].dot))
+            out.append(Mutant(m.kind, _momentum_message(m, what, momenta[k], pk), pk))
+    out += term_mutants(momenta[k], what, parameters)
+    return out
+
+
+def _momentum_message(m: Mutant, what: str, right: sp.Expr, wrong: sp.Expr) -> str:
+    missing = sp.expand(right - wrong)
+    if m.kind in ("missing_cross_term", "missing_driven_term") and missing != 0:
+        return f"{what} lacks the term {plain(missing)}"
+    return m.message.replace("your L", what)
+
+
+def equation_mutants(
+    system: LagrangianSystem,
+    jets: Sequence[Jet],
+    lagrangian_mutants: Iterable[Mutant],
+    parameters: Sequence[sp.Symbol],
+) -> list[tuple[int, Mutant]]:
+    """(row, mutant) pairs, row `row` of the Euler–Lagrange equations replaced by the mutant:
+    the sign of Lagrange's equation flipped, the equations of a Lagrangian with a mistake (from
+    `lagrangian_mutants`), single terms of a row."""
+    E = system.euler_lagrange
+    out: list[tuple[int, Mutant]] = []
+    for i, j in enumerate(jets):
+        what = f"the equation for {j.name}"
+        flipped = sp.expand(E[i] + 2 * sp.diff(system.L, j.q))  # D_t p + ∂L/∂q
+        out.append(
+            (
+                i,
+                Mutant(
+                    "el_sign",
+                    f"{what} has d/dt(∂L/∂{j.name}_dot) + ∂L/∂{j.name}; Lagrange's "
+                    "equation has a minus sign",
+                    flipped,
+                ),
+            )
+        )
+    for m in lagrangian_mutants:
+        if m.kind in (
+            "sign_of_V",
+            "dropped_half",
+            "missing_cross_term",
+            "missing_driven_term",
+            "dropped_half_all",
+        ):
+            try:
+                rows = LagrangianSystem(m.expr, jets).euler_lagrange
+            except Exception:  # noqa: BLE001 - a mutant we cannot differentiate is skipped
+                continue
+            for i, row in enumerate(rows):
+                if sp.expand(row - E[i]) != 0:
+                    msg = m.message.replace(
+                        "your L", f"the L behind your equation for {jets[i].name}"
+                    )
+                    out.append((i, Mutant(m.kind, msg, row)))
+    for i, j in enumerate(jets):
+        for m in term_mutants(E[i], f"your equation for {j.name}", parameters):
+            out.append((i, m))
+    return out
+
+
+def conserved_mutants(
+    system: LagrangianSystem, jets: Sequence[Jet], T: sp.Expr, V: sp.Expr
+) -> list[Mutant]:
+    """Quantities wrongly called conserved: T + V when the constraint moves (h is), the momentum
+    of a coordinate that is not cyclic, L itself."""
+    out: list[Mutant] = []
+    h = system.energy_function
+    if sp.expand(T + V - h) != 0:
+        out.append(
+            Mutant(
+                "energy_not_conserved",
+                "T + V is not conserved here: the constraint moves, so energy flows in "
+                "and out; "
+                "the Jacobi integral h = Σ q̇ ∂L/∂q̇ − L is",
+                T + V,
+            )
+        )
+    cyclic = set(system.cyclic_coordinates)
+    for j, pj in zip(jets, system.generalized_momenta, strict=True):
+        if j.name not in cyclic:
+            out.append(
+                Mutant(
+                    "momentum_not_conserved",
+                    f"p_{j.name} is not conserved: {j.name} is not cyclic (L depends on {j.name})",
+                    pj,
+                )
+            )
+    out.append(Mutant("lagrangian_not_conserved", "L itself is not a conserved quantity", system.L))
+    return out
+
+
+def expression_mutants(ref: sp.Expr) -> list[Mutant]:
+    """The usual slips with a closed-form result: sin for cos, the sign, upside down."""
+    return [
+        Mutant("sin_cos_swapped", "sin and cos are swapped", swap_sin_cos(ref)),
+        Mutant("wrong_sign", "the sign is wrong", -ref),
+        Mutant(
+            "reciprocal",
+            "your answer is upside down (the reciprocal of the right one)",
+            1 / ref,
+        ),
+    ]
