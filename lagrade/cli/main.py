@@ -87,7 +87,7 @@ def _generate(args: argparse.Namespace) -> int:
 
 
 def _check(args: argparse.Namespace) -> int:
-    from lagrade.judge.check import run_check_command
+    from lagrade.cli.check import run_check_command
 
     status, text = run_check_command(args)
     if text:
@@ -197,7 +197,7 @@ def build_parser() -> argparse.ArgumentParser:
     )
     generate.set_defaults(run=_generate)
 
-    from lagrade.judge.check import add_check_arguments
+    from lagrade.cli.check import add_check_arguments
 
     check = commands.add_parser(
         "check",

@@ -6,8 +6,8 @@ from __future__ import annotations
 
 from collections.abc import Iterable
 
-from lagrade.judge.checks import run_checker
 from lagrade.judge.key import key_answer, plain
+from lagrade.judge.parts import run_checker
 from lagrade.judge.problem import Problem, build_problem
 from lagrade.mechanics.scene import SceneVariant
 
