@@ -36,8 +36,9 @@ _FORK = mp.get_context("fork")
 GRACE = 2.0
 
 
-class PartTimeout(Exception):
-    """A part's time limit ran out (raised by the alarm inside the process doing the work)."""
+class PartTimeout(BaseException):
+    """A part's time limit ran out (raised by the alarm inside the process doing the work). A
+    BaseException, like KeyboardInterrupt, so that no `except Exception` on the way swallows it."""
 
 
 @contextmanager
