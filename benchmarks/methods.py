@@ -6,7 +6,7 @@ A method is an object with a `name` and `decide(answer, reference, domains) -> b
 (None: this method cannot decide the pair — outside its scope, or no usable sample point).
 `domains` maps each free symbol to the `Domain` its values are drawn from; a symbol without an
 entry is taken as real. Expressions may come from student text, so nothing here calls `lambdify`,
-`sympify` or `eval`: numbers come from the whitelist compiler of `grader.evaluate`.
+`sympify` or `eval`: numbers come from the whitelist compiler of `lagrade.judge.evaluate`.
 
 The families (`all_methods()` lists them, named as in docs/methods.csv):
 
@@ -17,7 +17,7 @@ The families (`all_methods()` lists them, named as in docs/methods.csv):
 - `mp{d}_{n}pt`: the same in mpmath at d digits, ε = 10^-(d − 8).
 - `exact_rational`: exact evaluation at random rational points of rational functions of the symbols
   and of sin, cos, tan of their integer combinations (Weierstrass substitution, see below).
-- `numeric_hybrid`: the project's previous default, `grader.equivalence.numeric_equivalent`
+- `numeric_hybrid`: the project's previous default, `numeric_equivalent` (below)
   (wrapped, not reimplemented); `exact_then_adaptive` replaced it as the default.
 - `webwork`, `numbas`: those systems' documented default rules, reimplemented for comparison.
 - `exact_then_scaled`: exact where it applies, otherwise a term-scaled float64 test with
@@ -224,7 +224,7 @@ def numeric_equivalent(
 
 @dataclass(frozen=True)
 class HybridDefault:
-    """The project's previous default, `grader.equivalence.numeric_equivalent` (numeric first,
+    """The project's previous default, `numeric_equivalent` (below) (numeric first,
     float64 relative to the size of the top-level terms, 50-digit confirmation between 1e-10 and
     1e-6), wrapped, not reimplemented: its Equivalence maps to True/False, and None when the
     reference is undefined everywhere or holds something the evaluator does not know."""
@@ -306,7 +306,7 @@ class Numbas:
 FLOAT_POINTS = (1, 2, 3, 5, 10, 20, 50)
 FLOAT_TOLERANCES = (1e-3, 1e-6, 1e-9)
 
-#: The name of the method the project grades with (grader.equivalence.expressions_equivalent);
+#: The name of the method the project grades with (lagrade.judge.adaptive.ExactThenAdaptive);
 #: the chart marks it.
 DEFAULT_NAME = "exact_then_adaptive"
 

@@ -158,7 +158,7 @@ class Problem:
 
     @cached_property
     def catalogue(self):
-        """The mistakes this question invites, derived from its reference (grader.diagnose)."""
+        """The mistakes this question invites, derived from its reference."""
         from lagrade.judge.catalogue import Catalogue
 
         return Catalogue(self)

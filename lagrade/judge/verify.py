@@ -1,6 +1,7 @@
 """Check a variant before its handout is written: the grader must accept the key's answers and
-reject the common mistakes of the catalogue. `problem_bank.assign.generate` calls this through
-its `verify` hook (the bank never imports the grader)."""
+reject the common mistakes of the catalogue. `lagrade.assign.generate.generate` calls this
+through its `verify` hook: assign, in the same layer as judge, never imports it; the command
+line passes this function in."""
 
 from __future__ import annotations
 

@@ -5,7 +5,8 @@ term, sin/cos swap, wrong coordinate).
 
 Every label is decided here independently of the grader: symbolic derivatives from sympy and
 values at 50 digits from `evalf`, at points drawn with Python's own `random` — no part of
-grader.evaluate or grader.equivalence is used. Shared by the tests and by benchmarks/bench_check.py.
+lagrade.judge.evaluate or lagrade.judge.equivalence is used. Shared by the tests and by
+benchmarks/bench_check.py.
 """
 
 from __future__ import annotations
