@@ -32,8 +32,8 @@ sys.path.insert(0, str(ROOT))
 import sympy as sp  # noqa: E402
 
 from lagrade.bank.registry import get_scene, scene_ids  # noqa: E402
-from lagrade.judge.catalogue import plain  # noqa: E402
 from lagrade.judge.check import check_pool, run_batch  # noqa: E402
+from lagrade.notation.printer import plain  # noqa: E402
 from tests.grading.corpus import Item, corpus, expected_status  # noqa: E402
 
 

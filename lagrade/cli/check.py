@@ -175,3 +175,27 @@ def run_check_command(args: argparse.Namespace) -> tuple[int, str]:
         else format_verdict(verdict)
     )
     return (0 if verdict.status == "correct" else 1), text
+
+
+def run(args: argparse.Namespace) -> int:
+    status, text = run_check_command(args)
+    if text:
+        print(text)
+    return status
+
+
+def add_parser(commands: argparse._SubParsersAction) -> None:
+    """Register this command with the `lagrade` parser."""
+    check = commands.add_parser(
+        "check",
+        help="judge one answer, or a JSON-lines file of requests",
+        description="Judge an answer against a bank scene (--scene), an ad-hoc Lagrangian "
+        "(--lagrangian with --coordinates and --parameters) or a reference expression "
+        "(--expression). Exit 0 when correct (or when a --batch ran to its end), 1 otherwise.",
+        epilog="examples:\n  lagrade check --scene wedge --part cyclic --answer x_M\n"
+        '  lagrade check --scene hoop --part eom --answer "theta_ddot = omega^2 sin(theta) '
+        'cos(theta) - g/R sin(theta)"\n  lagrade check --batch requests.jsonl --out results.jsonl',
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+    )
+    add_check_arguments(check)
+    check.set_defaults(run=run)

@@ -7,10 +7,11 @@ from __future__ import annotations
 
 from collections.abc import Iterable
 
-from lagrade.judge.key import key_answer, plain
+from lagrade.judge.key import key_answer
 from lagrade.judge.parts import run_checker
 from lagrade.judge.problem import Problem, build_problem
 from lagrade.mechanics.scene import SceneVariant
+from lagrade.notation.printer import as_typed
 
 
 def _spec(variant: SceneVariant, quantity: str | None = None) -> dict:
@@ -44,7 +45,7 @@ def verify_variant(variant: SceneVariant, parts: Iterable) -> list[str]:
             )
         if name == "lagrangian":
             for mutant in problem.catalogue.lagrangian_mutants:
-                wrong = run_checker(problem, "lagrangian", plain(mutant.expr))
+                wrong = run_checker(problem, "lagrangian", as_typed(mutant.expr))
                 if wrong.status == "correct" and wrong.score >= 1:
                     problems.append(
                         f"{where}: the grader accepts a known mistake ({mutant.kind}) as correct"

@@ -10,7 +10,6 @@ import numpy as np
 import sympy as sp
 
 from lagrade.errors import ParseError, RequestError
-from lagrade.judge.catalogue import plain
 from lagrade.judge.equivalence import (
     Compiled,
     Points,
@@ -28,6 +27,7 @@ from lagrade.judge.parts.common import (
 from lagrade.judge.parts.reading import items_of, read
 from lagrade.judge.problem import Problem
 from lagrade.judge.verdict import Verdict, invalid
+from lagrade.notation.printer import as_typed
 
 
 def check_transformation(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
@@ -106,7 +106,9 @@ def check_transformation(problem: Problem, answer: Any, given: Mapping | None) -
         out = decide(residual)
         outcomes.append(out)
         if not out.equal:
-            shown = "z = 0 (motion in the x-y plane)" if label != "declared" else f"{plain(f)} = 0"
+            shown = (
+                "z = 0 (motion in the x-y plane)" if label != "declared" else f"{as_typed(f)} = 0"
+            )
             failures.append((shown, witness_point(points, out, *given_pos.values())))
     rank = _transformation_rank(problem, list(given_pos.values()), points)
     n = len(problem.jets)
