@@ -34,8 +34,8 @@ import mpmath
 import numpy as np
 import sympy as sp
 
+import lagrade.judge.evaluate as ev
 from lagrade.errors import ReferenceUndefined
-from lagrade.judge import evaluate as ev
 from lagrade.judge.adaptive import (
     ExactThenAdaptive,
     compile_pair,

@@ -26,7 +26,7 @@ import jinja2
 import sympy as sp
 from markupsafe import Markup, escape
 
-from lagrade.assign import figures
+import lagrade.assign.figures as figures
 from lagrade.assign.assignment import EXPRESSION, Assignment, Part, Problem, load_assignment
 from lagrade.assign.roster import Student, load_roster
 from lagrade.assign.variants import VariantChoice, student_variants

@@ -19,10 +19,11 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+import lagrade.grading.atomic as atomic
+import lagrade.grading.report as report
 from lagrade.assign.generate import project_version
 from lagrade.bank.registry import get_scene
 from lagrade.errors import AssignmentError, LagradeError
-from lagrade.grading import atomic, report
 from lagrade.grading.rubric import Rubric, load_rubric
 from lagrade.grading.submission import UnreadableAnswer, find_submission, read_sheet
 from lagrade.judge.check import cached_problem, prepare, timeout_verdict

@@ -16,7 +16,7 @@ import mpmath
 import numpy as np
 import sympy as sp
 
-from lagrade.judge import evaluate as ev
+import lagrade.judge.evaluate as ev
 from lagrade.judge.exact import Domains, ExactRational, sorted_symbols
 from lagrade.mechanics.domains import REAL
 

@@ -16,7 +16,7 @@ import operator
 from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass
 from functools import cached_property
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 import numpy as np
 import sympy as sp
@@ -32,9 +32,6 @@ from lagrade.judge.equivalence import (
 from lagrade.judge.evaluate import UnsupportedExpression
 from lagrade.mechanics.lagrange import Jet, LagrangianSystem
 from lagrade.notation.printer import as_typed
-
-if TYPE_CHECKING:
-    from lagrade.judge.problem import Problem
 
 
 @dataclass(frozen=True)
@@ -187,7 +184,7 @@ class Catalogue:
     """The mutations of one question, built on first use per part, and the matching of an
     answer against them."""
 
-    def __init__(self, problem: Problem):
+    def __init__(self, problem: Any):  # a lagrade.judge.problem.Problem (which imports this)
         self.problem = problem
 
     # --- the reference's parts -----------------------------------------------------------------

@@ -24,6 +24,7 @@ import sympy as sp
 
 from lagrade.bank.registry import get_scene
 from lagrade.errors import LagradeError, ParseError, RequestError
+from lagrade.judge.catalogue import Catalogue
 from lagrade.judge.equivalence import Compiled, Points, Space, finite_mask, seed_for
 from lagrade.mechanics.domains import Domain
 from lagrade.mechanics.lagrange import Jet, LagrangianSystem, jet, t
@@ -159,8 +160,6 @@ class Problem:
     @cached_property
     def catalogue(self):
         """The mistakes this question invites, derived from its reference."""
-        from lagrade.judge.catalogue import Catalogue
-
         return Catalogue(self)
 
     # --- sample points, cached per part and per set of parameters left free --------------------
