@@ -20,7 +20,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from lagrade.assign.generate import project_version
+from lagrade.assign.manifest import project_version
 from lagrade.bank.registry import get_scene
 from lagrade.errors import AssignmentError, LagradeError
 from lagrade.grading import atomic, report

@@ -14,7 +14,7 @@ from collections.abc import Mapping, Sequence
 from pathlib import Path
 from typing import Any
 
-from lagrade.assign.generate import environment
+from lagrade.assign.templating import environment
 from lagrade.grading import atomic
 
 STUDENTS = "students"
