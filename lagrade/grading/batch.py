@@ -21,7 +21,7 @@ from typing import Any
 
 import lagrade.grading.atomic as atomic
 import lagrade.grading.report as report
-from lagrade.assign.generate import project_version
+from lagrade.assign.manifest import project_version
 from lagrade.bank.registry import get_scene
 from lagrade.errors import AssignmentError, LagradeError
 from lagrade.grading.rubric import Rubric, load_rubric

@@ -15,7 +15,7 @@ from pathlib import Path
 from typing import Any
 
 import lagrade.grading.atomic as atomic
-from lagrade.assign.generate import environment
+from lagrade.assign.templating import environment
 
 STUDENTS = "students"
 
