@@ -3,8 +3,8 @@
 1. Builds ≥ 1,000 labelled requests of every part from every scene of the bank (the corpus of
    tests/grading/corpus.py: rewrites and single-term mutations, labels verified at 50 digits
    independently of the grader; plus dof, cyclic, T, V, transformation requests).
-2. Runs them through `lagrade.judge.check.run_batch` — the code behind `lagrade check --batch` —
-   in one worker process, and reports median and p99 time per request and requests per second.
+2. Runs them through `lagrade.judge.check.run_batch` — the code behind `lagrade check --batch` — in
+   one worker process, and reports median and p99 time per request and requests per second.
 3. Runs the expression-level pairs of the same corpus (L, T, V, momenta, expressions) through
    `sympy.simplify(a - b) == 0` and `Expr.equals`, each in a killable worker with a per-check time
    limit, on a stratified subset (simplify is slow), and reports each method's wrong verdicts
@@ -32,8 +32,8 @@ sys.path.insert(0, str(ROOT))
 import sympy as sp  # noqa: E402
 
 from lagrade.bank.registry import get_scene, scene_ids  # noqa: E402
-from lagrade.judge.check import Worker, run_batch  # noqa: E402
-from lagrade.judge.mutations import plain  # noqa: E402
+from lagrade.judge.check import check_pool, run_batch  # noqa: E402
+from lagrade.notation.printer import plain  # noqa: E402
 from tests.grading.corpus import Item, corpus, expected_status  # noqa: E402
 
 
@@ -75,10 +75,10 @@ def run_ours(items: list[Item]) -> tuple[list[float], list[dict], float]:
             json.dumps({"id": i, "problem": it.problem, "part": it.part, "answer": it.answer})
         )
     times, results = [], []
-    with Worker() as worker:
+    with check_pool() as pool:
         start = time.perf_counter()
         last = start
-        for result in run_batch(lines, worker=worker):
+        for result in run_batch(lines, pool=pool):
             now = time.perf_counter()
             times.append((now - last) * 1e3)
             last = now

@@ -19,7 +19,7 @@ import sys
 CHILD = r"""
 import json, time
 t0 = time.perf_counter()
-from problem_bank import get_scene, scene_ids
+from lagrade.bank import get_scene, scene_ids
 import_s = time.perf_counter() - t0
 per_scene, accel = {}, {}
 start = time.perf_counter()
@@ -65,7 +65,7 @@ def main() -> None:
         f"(min {min(totals):.3f}, max {max(totals):.3f}); target < 2 s"
     )
     print(
-        "import of problem_bank: "
+        "import of lagrade.bank: "
         f"{statistics.median(r['import'] for r in runs):.3f} s (not included)"
     )
 

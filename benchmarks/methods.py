@@ -17,9 +17,8 @@ The families (`all_methods()` lists them, named as in docs/methods.csv):
 - `mp{d}_{n}pt`: the same in mpmath at d digits, ε = 10^-(d − 8).
 - `exact_rational`: exact evaluation at random rational points of rational functions of the symbols
   and of sin, cos, tan of their integer combinations (Weierstrass substitution, see below).
-- `numeric_hybrid`: the project's previous default, `numeric_equivalent` below (on
-  `lagrade.judge.equivalence.expressions_equal`, wrapped, not reimplemented);
-  `exact_then_adaptive` replaced it as the default.
+- `numeric_hybrid`: the project's previous default, `numeric_equivalent` (below)
+  (wrapped, not reimplemented); `exact_then_adaptive` replaced it as the default.
 - `webwork`, `numbas`: those systems' documented default rules, reimplemented for comparison.
 - `exact_then_scaled`: exact where it applies, otherwise a term-scaled float64 test with
   mpmath confirmation near the tolerance (the study's proposal; see its docstring).
@@ -35,8 +34,8 @@ import mpmath
 import numpy as np
 import sympy as sp
 
+import lagrade.judge.evaluate as ev
 from lagrade.errors import ReferenceUndefined
-from lagrade.judge import evaluate as ev
 from lagrade.judge.adaptive import (
     ExactThenAdaptive,
     compile_pair,
@@ -222,10 +221,10 @@ def numeric_equivalent(
 
 @dataclass(frozen=True)
 class HybridDefault:
-    """The project's previous default, `numeric_equivalent` above (numeric first, float64
-    relative to the size of the top-level terms, 50-digit confirmation between 1e-10 and 1e-6),
-    wrapped, not reimplemented: its Equivalence maps to True/False, and None when the reference
-    is undefined everywhere or holds something the evaluator does not know."""
+    """The project's previous default, `numeric_equivalent` (above) (numeric first,
+    float64 relative to the size of the top-level terms, 50-digit confirmation between 1e-10 and
+    1e-6), wrapped, not reimplemented: its Equivalence maps to True/False, and None when the
+    reference is undefined everywhere or holds something the evaluator does not know."""
 
     seed: int = 0
     name: str = "numeric_hybrid"

@@ -11,7 +11,7 @@ Two sources:
   plain expression equivalence, whatever it means for a Lagrangian);
 - hand-written hard cases, each in a category where some method fails (see HARD below).
 
-Expressions are written in the plain notation students type and read back with grader.parse;
+Expressions are written in the plain notation students type and read back with lagrade.notation;
 a pair whose text does not read back to the expression it was written from stops the build.
 Labels are the generator's intent; benchmarks/corpus/verify_labels.py checks every one
 independently.

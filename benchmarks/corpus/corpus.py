@@ -1,5 +1,5 @@
 """The labelled corpus of expression pairs: its record type, and reading it back through the
-project's parser (`grader.parse`), never through sympify, exactly as a student's answer is read.
+project's parser (`lagrade.notation`), never through sympify, exactly as a student's answer is read.
 
 Each line of pairs.jsonl is one pair: `answer` and `reference` in the plain notation students
 type, the question's `coordinates` and `parameters` (name → domain) as a Vocabulary takes them,

@@ -5,7 +5,8 @@ Run: python benchmarks/corpus/verify_labels.py [--fast] [--points N] [--no-proof
 Numbers: each pair is evaluated at N (default 60) random points in its declared domains by a
 small evaluator of its own (a recursive walk of the sympy tree in mpmath, real-valued
 semantics: the log or square root of a negative number, asin outside [−1, 1], a division by zero
-are undefined) — deliberately not grader.evaluate, which some methods use. 60 digits first; where
+are undefined) — deliberately not lagrade.judge.evaluate, which some methods use. 60 digits
+first; where
 the two sides differ by more than 1e-40 relative, 150 digits decide whether that was cancellation
 (the difference vanishes) or a real difference. Points where the reference is undefined are
 skipped; an answer undefined where the reference is defined differs.

@@ -9,6 +9,7 @@ added constants, solved equations, any true conserved quantity, named mistakes) 
 
 from __future__ import annotations
 
+import argparse
 import json
 import random
 import re
@@ -18,13 +19,14 @@ from typing import Any
 
 import sympy as sp
 
+import lagrade.grading.atomic as atomic
 from lagrade.assign.generate import generate
 from lagrade.assign.solution import latex_symbol_names
-from lagrade.grading import atomic
 from lagrade.grading.batch import BatchSummary, grade, question, student_variant
-from lagrade.judge.key import key_answer, plain
+from lagrade.judge.key import key_answer
 from lagrade.judge.verify import verify_variant
 from lagrade.mechanics.scene import SceneVariant
+from lagrade.notation.printer import as_typed
 
 ASSIGNMENT = """\
 # The demo assignment: `lagrade demo` writes it, generates handouts from it and grades against it.
@@ -157,10 +159,10 @@ def _latex(variant: SceneVariant, expr: sp.Expr) -> str:
 
 
 NOTATIONS: dict[str, Callable[[SceneVariant, sp.Expr], str]] = {
-    "plain": lambda v, e: plain(e),
+    "plain": lambda v, e: as_typed(e),
     "python": lambda v, e: sp.sstr(e),
-    "implicit": lambda v, e: _implicit(plain(e)),
-    "undotted": lambda v, e: _undotted(plain(e)),
+    "implicit": lambda v, e: _implicit(as_typed(e)),
+    "undotted": lambda v, e: _undotted(as_typed(e)),
     "latex": _latex,
 }
 
@@ -341,3 +343,38 @@ def summary_table(summary: BatchSummary) -> str:
     counts = ", ".join(f"{k} {v}" for k, v in summary.counts.items() if v)
     lines.append(f"\n{len(summary.results)} students: {counts}")
     return "\n".join(lines)
+
+
+def run(args: argparse.Namespace) -> int:
+    from lagrade.cli.progress import ProgressBar
+
+    with ProgressBar() as bar:
+        summary, where = run_demo(args.folder, jobs=args.jobs, progress=bar)
+    print(summary_table(summary))
+    print()
+    for label, path in where.items():
+        print(f"{label + ':':13} {path}")
+    # The demo plants a missing and a malformed submission on purpose: success is that every
+    # student has a row and nothing else went wrong.
+    return 0 if summary.counts["timeout"] + summary.counts["error"] == 0 else 1
+
+
+def add_parser(commands: argparse._SubParsersAction) -> None:
+    """Register this command with the `lagrade` parser."""
+    demo = commands.add_parser(
+        "demo",
+        help="generate, submit and grade a synthetic class of 30 end to end",
+        description="In FOLDER: write a demo assignment and a roster of 30, generate handouts "
+        "and keys, write synthetic submissions (varied notation, common mistakes, blank parts, "
+        "one malformed file, one missing), grade them and print the results.",
+    )
+    demo.add_argument(
+        "folder",
+        type=Path,
+        nargs="?",
+        default=Path("lagrade-demo"),
+        metavar="DIR",
+        help="where to work (default ./lagrade-demo)",
+    )
+    demo.add_argument("--jobs", type=int, default=2, help="submissions graded in parallel")
+    demo.set_defaults(run=run)

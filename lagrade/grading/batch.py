@@ -1,10 +1,11 @@
 """Grade a folder of answer sheets against a generated assignment's manifest.
 
 Every student on the roster gets exactly one result: graded, or `missing`, `invalid`, `timeout`
-or `error` with its reason. Each submission is graded in its own forked process with CPU,
-memory and wall-clock limits (a hostile file costs only its author); each part has its own time
-limit inside it. Results are written atomically as they arrive, and a rerun reuses every result
-whose submission, variant, rubric and grader version are unchanged.
+or `error` with its reason. Submissions are graded in killable worker processes with memory and
+wall-clock limits (`lagrade.judge.worker`: a hostile file costs only its author), each part under
+the same time-limit rule as `lagrade check`, by the same checker. Results are written atomically
+as they arrive, and a rerun reuses every result whose submission, variant, rubric and grader
+version are unchanged.
 """
 
 from __future__ import annotations
@@ -13,25 +14,24 @@ import functools
 import gc
 import hashlib
 import json
-import signal
 from collections.abc import Callable, Mapping
-from contextlib import contextmanager
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from lagrade.assign.generate import project_version
+import lagrade.grading.atomic as atomic
+import lagrade.grading.report as report
+from lagrade.assign.manifest import project_version
 from lagrade.bank.registry import get_scene
 from lagrade.errors import AssignmentError, LagradeError
-from lagrade.grading import atomic, report
 from lagrade.grading.rubric import Rubric, load_rubric
 from lagrade.grading.submission import UnreadableAnswer, find_submission, read_sheet
-from lagrade.judge.check import prepare
-from lagrade.judge.checks import Verdict, run_checker
-from lagrade.judge.followup import check_numeric_followup
-from lagrade.judge.isolation import Limits, run_isolated
+from lagrade.judge.check import cached_problem, prepare, timeout_verdict
 from lagrade.judge.key import key_answer
-from lagrade.judge.problem import Problem, build_problem
+from lagrade.judge.parts import run_checker
+from lagrade.judge.problem import Problem
+from lagrade.judge.verdict import Verdict
+from lagrade.judge.worker import GRACE, Limits, Outcome, PartTimeout, Pool, deadline, time_limit
 from lagrade.mechanics.scene import SceneVariant
 
 #: Parts whose answer sheet field holds one item per line.
@@ -53,26 +53,6 @@ class BatchSummary:
     @property
     def all_graded(self) -> bool:
         return self.counts.get("graded", 0) == sum(self.counts.values())
-
-
-class PartTimeout(Exception):
-    """A part's own time limit ran out (raised by SIGALRM inside the grading child)."""
-
-
-@contextmanager
-def _alarm(seconds: float):
-    """Interrupt Python-level work after `seconds` (the child's CPU limit backs up C loops)."""
-
-    def ring(signum, frame):
-        raise PartTimeout
-
-    previous = signal.signal(signal.SIGALRM, ring)
-    signal.setitimer(signal.ITIMER_REAL, seconds)
-    try:
-        yield
-    finally:
-        signal.setitimer(signal.ITIMER_REAL, 0)
-        signal.signal(signal.SIGALRM, previous)
 
 
 # --- the manifest -------------------------------------------------------------------------------
@@ -122,8 +102,6 @@ def _rubric(manifest_path: Path, manifest: dict) -> Rubric:
 
 # --- grading one student -------------------------------------------------------------------------
 
-_problems: dict[str, Problem] = {}
-
 
 @functools.lru_cache(maxsize=4096)
 def student_variant(scene_id: str, seed: int) -> SceneVariant:
@@ -144,10 +122,7 @@ def _question_key(spec: Mapping[str, Any]) -> str:
 
 def question(spec: Mapping[str, Any]) -> Problem:
     """The Problem of a manifest entry, shared by every student who was asked the same thing."""
-    key = _question_key(spec)
-    if key not in _problems:
-        _problems[key] = build_problem(dict(spec))
-    return _problems[key]
+    return cached_problem(dict(spec), _question_key(spec))
 
 
 def _spec(entry: Mapping[str, Any], part: Mapping[str, Any]) -> dict[str, Any]:
@@ -168,8 +143,6 @@ def warm_up(manifest: dict) -> None:
     for student in manifest["students"]:
         for entry, problem in zip(student["problems"], manifest["problems"], strict=True):
             for part in problem["parts"]:
-                if part["part"] == "coordinates":
-                    continue
                 spec = _spec(entry, part)
                 key = (_question_key(spec), part["part"])
                 if key in seen:
@@ -188,7 +161,7 @@ def _warm_with_key(question: Problem, part: Mapping[str, Any]) -> None:
     variant = question.variant
     given = {"lagrangian": key_answer(variant, "lagrangian")} if name in FOLLOW_L else None
     try:
-        with _alarm(10.0):
+        with time_limit(10.0):
             run_checker(question, name, key_answer(variant, name, part.get("quantity")), given)
     except (PartTimeout, LagradeError, ArithmeticError, ValueError):
         pass
@@ -206,23 +179,13 @@ def _blank(answer: Any) -> bool:
     return not str(answer).strip()
 
 
-def _check_coordinates(entry: Mapping[str, Any], answer: str) -> Verdict:
-    """Generalized coordinates: exactly the problem's coordinates (any order, commas or spaces)."""
-    given = [n for n in answer.replace(";", ",").replace(",", " ").split() if n]
-    wanted = list(entry["coordinates"])
-    if sorted(given) == sorted(wanted):
-        return Verdict("coordinates", "correct", 1.0, (), ", ".join(given), "exact")
-    feedback = f"This problem uses {len(wanted)} generalized coordinates ({', '.join(wanted)})."
-    return Verdict("coordinates", "incorrect", 0.0, (feedback,), ", ".join(given), "exact")
-
-
 def grade_part(
     entry: Mapping[str, Any],
     part: Mapping[str, Any],
     answer: Any,
     given: dict[str, Any],
     rubric: Rubric,
-    time_limit: float,
+    limit: float,
 ) -> dict[str, Any]:
     """One part's result: the verdict, the points it earns and the feedback."""
     name = part["part"]
@@ -240,21 +203,12 @@ def grade_part(
             "parse",
         )
     else:
+        deadline(limit + GRACE)
         try:
-            with _alarm(time_limit):
+            with time_limit(limit):
                 verdict = _judge(entry, part, answer, given, rubric)
         except PartTimeout:
-            verdict = Verdict(
-                name,
-                "timeout",
-                0.0,
-                (
-                    f"Checking this answer took longer than {time_limit:g} s; it was "
-                    "stopped and needs a look by the instructor.",
-                ),
-                "",
-                "timeout",
-            )
+            verdict = timeout_verdict(name, limit)
     share = rubric.fraction(
         verdict.status, verdict.score, verdict.mistakes, verdict.follows_from_own_answer
     )
@@ -274,14 +228,12 @@ def grade_part(
 
 def _judge(entry, part, answer, given, rubric: Rubric) -> Verdict:
     name = part["part"]
-    if name == "coordinates":
-        return _check_coordinates(entry, answer if isinstance(answer, str) else " ".join(answer))
     problem = question(_spec(entry, part))
-    if name == "expression":
+    if name in ("coordinates", "expression"):
         text = answer if isinstance(answer, str) else " ".join(answer)
         own = student_variant(entry["scene"], entry["seed"])  # this student's numbers
-        tolerance = rubric.numeric_tolerance
-        return check_numeric_followup(own, problem, part["quantity"], text, tolerance)
+        handout = {"values": own.values, "tolerance": rubric.numeric_tolerance}
+        return run_checker(problem, name, text, handout if name == "expression" else None)
     value: Any = (
         _as_lines(answer)
         if name in MULTILINE
@@ -295,9 +247,10 @@ def _judge(entry, part, answer, given, rubric: Rubric) -> Verdict:
     return run_checker(problem, name, value, given if name in FOLLOW_L else None)
 
 
-def grade_student(task: Mapping[str, Any]) -> dict[str, Any]:
-    """Grade one student's sheet (runs inside the isolated child)."""
-    student, manifest, rubric = task["student"], task["manifest"], task["rubric"]
+def grade_student(manifest: Mapping, rubric: Rubric, task: Mapping[str, Any]) -> dict[str, Any]:
+    """Grade one student's sheet (runs inside a worker; the manifest and rubric are inherited
+    when the worker is forked, only the small task crosses the pipe)."""
+    student = task["student"]
     problems = manifest["problems"]
     sheet = read_sheet(Path(task["path"]), student["id"], len(problems))
     base = {"warnings": list(sheet.warnings) + ([task["note"]] if task.get("note") else [])}
@@ -405,10 +358,8 @@ def grade(
     atomic.remove_stale_temporaries(out)
     version = project_version()
     students = manifest["students"]
-    limits = limits or Limits(
-        cpu_seconds=int(30 + 4 * part_time_limit * _part_count(manifest)),
-        wall_seconds=20 + 3 * part_time_limit * _part_count(manifest),
-    )
+    # Reading a sheet has this long; each part then moves the deadline to its own time limit.
+    limits = limits or Limits(seconds=20 + 3 * part_time_limit * _part_count(manifest))
 
     results: dict[str, dict[str, Any]] = {}
     tasks = []
@@ -436,8 +387,6 @@ def grade(
                 student["id"],
                 {
                     "student": student,
-                    "manifest": manifest,
-                    "rubric": rubric,
                     "path": str(path),
                     "note": note,
                     "part_time_limit": part_time_limit,
@@ -453,33 +402,41 @@ def grade(
         gc.collect()
         gc.freeze()
     by_id = {s["id"]: s for s in students}
+    fingerprints = {key: task["fingerprint"] for key, task in tasks}
     done = len(results)
-    for outcome in run_isolated(grade_student, tasks, jobs=jobs, limits=limits):
-        student = by_id[outcome.key]
-        fingerprint = dict(tasks)[outcome.key]["fingerprint"]
-        if outcome.status == "ok":
-            value = outcome.value
-        elif outcome.status == "timeout":
-            value = {"status": "timeout", "reason": f"grading {outcome.reason}", "problems": []}
-        else:
-            report.log_error(out, student["id"], outcome.reason)
-            value = {
-                "status": "error",
-                "reason": "the grader failed on this submission "
-                "(logged in errors.log); the instructor should look at it",
-                "problems": [],
-            }
-        results[student["id"]] = _store(
-            out, manifest, _finish(student, manifest, value, fingerprint, version)
-        )
-        done += 1
-        if progress:
-            progress(done, len(students), student["id"])
+    work = functools.partial(grade_student, manifest, rubric)
+    with Pool(work, jobs=jobs, limits=limits) as pool:
+        for outcome in pool.run(tasks):
+            student = by_id[outcome.key]
+            value = _outcome_result(outcome, out, student["id"])
+            results[student["id"]] = _store(
+                out,
+                manifest,
+                _finish(student, manifest, value, fingerprints[outcome.key], version),
+            )
+            done += 1
+            if progress:
+                progress(done, len(students), student["id"])
 
     ordered = [results[s["id"]] for s in students]
     report.write_class_reports(out, manifest, ordered)
     counts = {s: sum(1 for r in ordered if r["status"] == s) for s in STATUSES}
     return BatchSummary(out, counts, reused, ordered)
+
+
+def _outcome_result(outcome: Outcome, out: Path, student_id: str) -> dict[str, Any]:
+    """A worker's Outcome as a student's result: graded, or why not (a bug of ours is logged)."""
+    if outcome.status == "ok":
+        return outcome.value
+    if outcome.status == "timeout":
+        return {"status": "timeout", "reason": f"grading {outcome.reason}", "problems": []}
+    report.log_error(out, student_id, outcome.reason)
+    return {
+        "status": "error",
+        "reason": "the grader failed on this submission "
+        "(logged in errors.log); the instructor should look at it",
+        "problems": [],
+    }
 
 
 def _part_count(manifest: Mapping) -> int:

@@ -14,8 +14,8 @@ from collections.abc import Mapping, Sequence
 from pathlib import Path
 from typing import Any
 
-from lagrade.assign.generate import environment
-from lagrade.grading import atomic
+import lagrade.grading.atomic as atomic
+from lagrade.assign.templating import environment
 
 STUDENTS = "students"
 

@@ -19,6 +19,7 @@ from pathlib import Path
 from typing import Any
 
 from lagrade.errors import RequestError
+from lagrade.judge.parts.expression import NUMERIC_TOLERANCE
 
 _FIELDS = {"partial_credit", "follow_through", "convention", "numeric_tolerance"}
 
@@ -28,7 +29,7 @@ class Rubric:
     partial_credit: bool = True
     follow_through: float = 0.5
     convention: float = 0.5
-    numeric_tolerance: float = 0.01
+    numeric_tolerance: float = NUMERIC_TOLERANCE
 
     def fraction(
         self, status: str, score: float, mistakes: tuple[str, ...], follows: bool

@@ -56,6 +56,7 @@ class Problem:
     expression: sp.Expr | None = None
     variant: SceneVariant | None = None
     coordinate_domains: dict[str, tuple[float, float]] | None = None
+    unit: str = ""  # the unit of a scene quantity (a numeric answer may carry it)
 
     # --- names -------------------------------------------------------------------------------
     @property
@@ -158,7 +159,7 @@ class Problem:
         return self.variant.dof if self.variant is not None else len(self.jets)
 
     @cached_property
-    def catalogue(self) -> Catalogue:
+    def catalogue(self):
         """The mistakes this question invites, derived from its reference."""
         return Catalogue(self)
 
@@ -251,7 +252,7 @@ def _scene_problem(spec: Mapping[str, Any], key: str) -> Problem:
         raise RequestError(str(error)) from None
     domains = {params[n]: d for n, d in variant.domains.items()}
     values = {params[n]: float(v) for n, v in variant.values.items()}
-    expression = None
+    expression, unit = None, ""
     if "quantity" in spec:
         quantities = variant.quantities
         if spec["quantity"] not in quantities:
@@ -260,6 +261,7 @@ def _scene_problem(spec: Mapping[str, Any], key: str) -> Problem:
                 + (", ".join(quantities) or "none")
             )
         expression = quantities[spec["quantity"]]
+        unit = next(q.unit for q in scene.quantities if q.name == spec["quantity"])
     return Problem(
         key,
         "scene",
@@ -270,6 +272,7 @@ def _scene_problem(spec: Mapping[str, Any], key: str) -> Problem:
         lagrangian=variant.lagrangian,
         expression=expression,
         variant=variant,
+        unit=unit,
     )
 
 

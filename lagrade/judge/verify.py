@@ -1,15 +1,17 @@
 """Check a variant before its handout is written: the grader must accept the key's answers and
-reject the common mistakes of the catalogue. `problem_bank.assign.generate` calls this through
-its `verify` hook (the bank never imports the grader)."""
+reject the common mistakes of the catalogue. `lagrade.assign.generate.generate` calls this
+through its `verify` hook: assign, in the same layer as judge, never imports it; the command
+line passes this function in."""
 
 from __future__ import annotations
 
 from collections.abc import Iterable
 
-from lagrade.judge.checks import run_checker
-from lagrade.judge.key import key_answer, plain
+from lagrade.judge.key import key_answer
+from lagrade.judge.parts import run_checker
 from lagrade.judge.problem import Problem, build_problem
 from lagrade.mechanics.scene import SceneVariant
+from lagrade.notation.printer import as_typed
 
 
 def _spec(variant: SceneVariant, quantity: str | None = None) -> dict:
@@ -43,7 +45,7 @@ def verify_variant(variant: SceneVariant, parts: Iterable) -> list[str]:
             )
         if name == "lagrangian":
             for mutant in problem.catalogue.lagrangian_mutants:
-                wrong = run_checker(problem, "lagrangian", plain(mutant.expr))
+                wrong = run_checker(problem, "lagrangian", as_typed(mutant.expr))
                 if wrong.status == "correct" and wrong.score >= 1:
                     problems.append(
                         f"{where}: the grader accepts a known mistake ({mutant.kind}) as correct"

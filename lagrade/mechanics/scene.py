@@ -3,7 +3,7 @@ statement), and the SceneVariant that derives everything else from it on demand.
 
 A scene is a few declarative lines; the five-step solution (constraints and DOF, transformation
 equations, T and V, L, Euler–Lagrange equations, momenta, cyclic coordinates, conserved
-quantities) is derived by `problem_bank.mechanics`, lazily and cached, so asking for L never
+quantities) is derived by `lagrade.mechanics.lagrange`, lazily and cached, so asking for L never
 solves for the accelerations.
 """
 

@@ -32,6 +32,7 @@ from lagrade.mechanics.domains import Domain
 from lagrade.notation.echo import echo as _echo
 from lagrade.notation.latex import translate
 from lagrade.notation.lexer import Source, Token, normalise, read_number, tokenize
+from lagrade.notation.printer import as_typed, render_latex
 
 __all__ = [
     "Parsed",
@@ -264,16 +265,12 @@ class Parsed:
         'm*R^2*theta_ddot - m*g*R*sin(theta) = 0'."""
         if self.echo:
             return self.echo
-        from lagrade.notation.preview import render_plain
-
         if self.rhs is None:
-            return render_plain(self.lhs)
-        return f"{render_plain(self.lhs)} = {render_plain(self.rhs)}"
+            return as_typed(self.lhs)
+        return f"{as_typed(self.lhs)} = {as_typed(self.rhs)}"
 
     def latex(self) -> str:
         """LaTeX with dots over derivatives (\\dot{\\theta}, \\ddot{x}_{M}) and \\cdot products."""
-        from lagrade.notation.preview import render_latex
-
         if self.rhs is None:
             return render_latex(self.lhs)
         return f"{render_latex(self.lhs)} = {render_latex(self.rhs)}"

@@ -15,6 +15,7 @@ from markupsafe import Markup
 from sympy.printing.mathml import MathMLPresentationPrinter
 
 from lagrade.mechanics import lagrange as mech
+from lagrade.mechanics.lagrange import DDOT, DOT
 
 _MATHML_NS = "http://www.w3.org/1998/Math/MathML"
 _DOTS = {mech.DOT: ("dot", "\u02d9"), mech.DDOT: ("ddot", "\u00a8")}
@@ -122,3 +123,35 @@ def render(expr: sp.Basic, coordinates: Iterable[str] = ()) -> Math:
 def equation(lhs: sp.Basic, rhs: sp.Basic, coordinates: Iterable[str] = ()) -> Math:
     """`lhs = rhs` in every notation (unevaluated, so `E = 0` stays an equation)."""
     return render(sp.Eq(lhs, rhs, evaluate=False), coordinates)
+
+
+# --- answers as the preview shows them -----------------------------------------------------------
+
+
+def as_typed(expr: sp.Expr) -> str:
+    """An expression as a student would type it, in sympy's default term order (what feedback,
+    key answers and the parser's plain reading print; `plain` orders terms for handouts), with
+    ^ for powers and explicit *: 'R^2*m*theta_ddot - R*g*m*sin(theta)'."""
+    return sp.sstr(expr).replace("**", "^")
+
+
+def _latex_name(name: str) -> str:
+    """theta_dot → \\dot{\\theta}; x_M_ddot → \\ddot{x}_{M}; x_M → x_{M}."""
+    accent = None
+    for suffix, command in ((DDOT, "ddot"), (DOT, "dot")):
+        if name.endswith(suffix) and len(name) > len(suffix):
+            name, accent = name[: -len(suffix)], command
+            break
+    head, _, subscript = name.partition("_")
+    body = sp.latex(sp.Symbol(head))
+    if accent:
+        body = f"\\{accent}{{{body}}}"
+    if subscript:
+        body += "_{" + sp.latex(sp.Symbol(subscript)) + "}"
+    return body
+
+
+def render_latex(expr: sp.Expr) -> str:
+    """LaTeX with \\dot/\\ddot over velocities and accelerations and \\cdot for products."""
+    names = {s: _latex_name(s.name) for s in expr.free_symbols if isinstance(s, sp.Symbol)}
+    return sp.latex(expr, symbol_names=names, mul_symbol="dot")

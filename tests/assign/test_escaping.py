@@ -5,7 +5,7 @@ from __future__ import annotations
 import tomllib
 from pathlib import Path
 
-from lagrade.assign.generate import md_escape, tex_escape, toml_string
+from lagrade.assign.templating import md_escape, tex_escape, toml_string
 
 from .conftest import write_roster
 

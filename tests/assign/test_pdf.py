@@ -7,7 +7,8 @@ from pathlib import Path
 
 import pytest
 
-from lagrade.assign.generate import PDFLATEX_HINT, generate
+from lagrade.assign.generate import generate
+from lagrade.assign.pdf import PDFLATEX_HINT
 
 from .conftest import write_roster
 

@@ -10,9 +10,10 @@ import sympy as sp
 from lagrade.judge.compiled import Compiled
 from lagrade.judge.derivatives import euler_lagrange_values
 from lagrade.judge.evaluate import UnsupportedExpression
-from lagrade.judge.mutations import Mutant, plain, swap_sin_cos
+from lagrade.judge.mutations import Mutant, swap_sin_cos
 from lagrade.judge.problem import build_problem
 from lagrade.judge.rows import _in_span_float, equation_rows
+from lagrade.notation.printer import as_typed
 
 from .conftest import HOOP, WEDGE, judge
 
@@ -164,7 +165,7 @@ def test_catalogue_is_built_for_every_scene():
 
 def test_helpers():
     x = sp.Symbol("x")
-    assert plain(x**2 / 2) == "x^2/2"
+    assert as_typed(x**2 / 2) == "x^2/2"
     assert swap_sin_cos(sp.sin(x) * sp.cos(2 * x)) == sp.cos(x) * sp.sin(2 * x)
 
 

@@ -4,7 +4,7 @@ import pytest
 import sympy as sp
 
 from lagrade.bank import get_scene
-from lagrade.judge.followup import check_numeric_followup
+from lagrade.judge.parts import run_checker
 from lagrade.judge.problem import build_problem
 
 SEED = 3
@@ -20,7 +20,9 @@ def wedge():
 
 def judge(wedge, text, tolerance=0.01):
     variant, problem, _ = wedge
-    return check_numeric_followup(variant, problem, "block_acceleration", text, tolerance)
+    return run_checker(
+        problem, "expression", text, {"values": variant.values, "tolerance": tolerance}
+    )
 
 
 def test_the_value_with_or_without_its_unit_is_right(wedge):

@@ -5,7 +5,7 @@ import pytest
 
 from lagrade.assign.assignment import PARTS, Part
 from lagrade.bank import get_scene, scene_ids
-from lagrade.judge.checks import run_checker
+from lagrade.judge.parts import run_checker
 from lagrade.judge.problem import build_problem
 from lagrade.judge.verify import verify_variant
 

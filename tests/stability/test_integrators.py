@@ -1,4 +1,4 @@
-"""Where integrators drift, pinned, and the default (problem_bank.integrate) holding the
+"""Where integrators drift, pinned, and the default (benchmarks/integrate.py) holding the
 conserved quantities of bank scenes to 1e-8 over runs long enough to show the drift
 (figures and chart: docs/integrators.csv, benchmarks/bench_integrators.py)."""
 

@@ -1,41 +1,11 @@
-"""What the parser understood, shown back to the student: a plain echo with explicit * and ^,
-LaTeX with dots over derivatives, the symbols found — or the error with its caret.
-
-`preview_command` is the body of `lagrade parse`; the CLI only wires arguments to it.
-"""
+"""`lagrade parse TEXT`: how an answer is read — the plain echo, LaTeX with dots over derivatives,
+the symbols found — or the error with a caret under its position."""
 
 from __future__ import annotations
 
-import sympy as sp
+import argparse
 
 from lagrade.mechanics.lagrange import DDOT, DOT
-
-
-def render_plain(expr: sp.Expr) -> str:
-    """sympy's own order, with ^ for powers: 'R^2*m*theta_ddot - R*g*m*sin(theta)'."""
-    return sp.sstr(expr).replace("**", "^")
-
-
-def _latex_name(name: str) -> str:
-    """theta_dot → \\dot{\\theta}; x_M_ddot → \\ddot{x}_{M}; x_M → x_{M}."""
-    accent = None
-    for suffix, command in ((DDOT, "ddot"), (DOT, "dot")):
-        if name.endswith(suffix) and len(name) > len(suffix):
-            name, accent = name[: -len(suffix)], command
-            break
-    head, _, subscript = name.partition("_")
-    body = sp.latex(sp.Symbol(head))
-    if accent:
-        body = f"\\{accent}{{{body}}}"
-    if subscript:
-        body += "_{" + sp.latex(sp.Symbol(subscript)) + "}"
-    return body
-
-
-def render_latex(expr: sp.Expr) -> str:
-    """LaTeX with \\dot/\\ddot over velocities and accelerations and \\cdot for products."""
-    names = {s: _latex_name(s.name) for s in expr.free_symbols if isinstance(s, sp.Symbol)}
-    return sp.latex(expr, symbol_names=names, mul_symbol="dot")
 
 
 def preview_command(
@@ -70,3 +40,39 @@ def preview_command(
             lines.append(f"Warning: the coordinate {name} does not appear (nor its velocity).")
     lines += [f"Warning: {w}" for w in parsed.warnings]
     return 0, "\n".join(lines)
+
+
+def run(args: argparse.Namespace) -> int:
+    status, text = preview_command(
+        args.text,
+        _split(args.coordinates),
+        _split(args.parameters),
+        latex=True if args.latex else None,
+        allow_primes=args.allow_primes,
+    )
+    print(text)
+    return status
+
+
+def _split(csv: str) -> list[str]:
+    return [s.strip() for s in csv.split(",") if s.strip()]
+
+
+def add_parser(commands: argparse._SubParsersAction) -> None:
+    """Register this command with the `lagrade` parser."""
+    parse = commands.add_parser(
+        "parse",
+        help="show how an answer is read (the 'interpreted as' preview)",
+        description="Parse TEXT as a student answer and print what it was read as, or the error "
+        "with a caret under its position. Parameters named here are taken as positive.",
+    )
+    parse.add_argument("text", help="the answer, plain text or LaTeX")
+    parse.add_argument(
+        "--coordinates", default="", help="comma-separated coordinates, e.g. theta,phi"
+    )
+    parse.add_argument("--parameters", default="", help="comma-separated parameters, e.g. m,g,R")
+    parse.add_argument(
+        "--latex", action="store_true", help="read TEXT as LaTeX (default: auto-detect)"
+    )
+    parse.add_argument("--allow-primes", action="store_true", help="read x' as x_dot")
+    parse.set_defaults(run=run)

@@ -1,0 +1,66 @@
+"""The bodies of a scene as drawn: point masses as discs sized by mass, rigid bodies as wheels
+with a mark that shows their angle, each labelled with its mass; and the axes of a 3-D view."""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+import numpy as np
+import sympy as sp
+
+from lagrade.assign.figures.geometry import Geometry
+from lagrade.assign.figures.primitives import put_text
+from lagrade.assign.figures.style import GREY, INK
+from lagrade.mechanics.scene import RigidBody
+
+
+def body_radius(g: Geometry, i: int, unit: float) -> float:
+    b = g.bodies[i]
+    if isinstance(b, RigidBody):
+        try:
+            gyration = math.sqrt(g.number(b.inertia / b.mass))
+            return min(max(gyration, 0.05 * unit), 0.3 * unit)
+        except (TypeError, ValueError):
+            return 0.1 * unit
+    masses = []
+    for other in g.bodies:
+        try:
+            masses.append(g.number(other.mass))
+        except (TypeError, ValueError):
+            masses.append(1.0)
+    relative = g.number(b.mass) / max(masses) if masses and max(masses) > 0 else 1.0
+    return 0.045 * unit * (0.7 + 0.3 * relative ** (1 / 3))
+
+
+def body_disc(ax: Any, unit: float, g: Geometry, i: int, b: Any) -> None:
+    from matplotlib.patches import Circle
+
+    at = g.at(i)[0]
+    r = body_radius(g, i, unit)
+    if isinstance(b, RigidBody):
+        ax.add_patch(
+            Circle(tuple(at), r, facecolor="#f2f2f2", edgecolor=INK, linewidth=1.4, zorder=4)
+        )
+        phi = g.number(b.angle)
+        tip = at + r * np.array([math.cos(phi), math.sin(phi)])
+        ax.plot(*np.array([at, tip]).T, color=INK, linewidth=1.2, zorder=5)
+        ax.plot(*at, marker="o", markersize=2.5, color=INK, zorder=5)
+    else:
+        ax.add_patch(Circle(tuple(at), r, facecolor=INK, edgecolor=INK, zorder=4))
+    put_text(ax, at + np.array([1.6 * r + 0.04 * unit, 1.6 * r]), f"${sp.latex(b.mass)}$")
+
+
+def axes3d(ax: Any, unit: float, g: Geometry) -> None:
+    origin = np.zeros(2)
+    for name, vec in (("x", (1, 0, 0)), ("y", (0, 1, 0)), ("z", (0, 0, 1))):
+        tip = np.array([float(c) for c in g.project(vec)]) * 0.25 * unit
+        ax.annotate(
+            "",
+            xy=tip,
+            xytext=origin,
+            arrowprops=dict(
+                arrowstyle="-|>", color=GREY, linewidth=0.8, shrinkA=0, shrinkB=0, mutation_scale=8
+            ),
+        )
+        put_text(ax, tip * 1.18, f"${name}$", color=GREY)

@@ -1,0 +1,300 @@
+"""The layout of a figure: from a scene's geometry, what to draw and in which order (shapes,
+each coordinate's sweep with its rod, arc or dimension line, motions in time, dimensions, bodies,
+gravity), collected as traces and drawing operations before the figure's extent is known."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from types import SimpleNamespace
+from typing import Any
+
+import numpy as np
+import sympy as sp
+
+from lagrade.assign.figures.bodies import axes3d, body_disc, body_radius
+from lagrade.assign.figures.geometry import (
+    TRIG,
+    Geometry,
+    circle,
+    label_for_length,
+    rotation_axis,
+)
+from lagrade.assign.figures.primitives import (
+    along_label,
+    arc_arrow,
+    arrow_along,
+    dimension,
+    gravity_arrow,
+    incline_angle,
+    pivot,
+    put_text,
+    time_mark,
+)
+from lagrade.assign.figures.style import ACCENT, GREY, INK
+from lagrade.mechanics import lagrange as mech
+from lagrade.mechanics.scene import RigidBody, as_expr
+from lagrade.notation.printer import name_latex
+
+
+class Drawing:
+    """Collects what to draw, then draws it scaled to the figure's extent."""
+
+    def __init__(self, geometry: Geometry):
+        self.g = geometry
+        self.traces: list[tuple[np.ndarray, str]] = []  # (points, style)
+        self.ops: list[Callable[[Any, float], None]] = []
+        self.points: list[np.ndarray] = []
+
+    def add_points(self, pts: np.ndarray) -> None:
+        finite = pts[np.all(np.isfinite(pts), axis=1)]
+        if len(finite):
+            self.points.append(finite)
+
+
+def plan(geometry: Geometry) -> Drawing:
+    """Everything to draw for `geometry`, in drawing order."""
+    d = Drawing(geometry)
+    ns = geometry.variant.namespace
+    _plan_shapes(d, ns)
+    centre_of = np.mean(np.vstack(d.points), axis=0)
+    for k, j in enumerate(geometry.jets):
+        _plan_coordinate(d, k, j, ns, centre_of)
+    _plan_time(d)
+    _plan_dimensions_and_bodies(d, ns, centre_of)
+    return d
+
+
+def _plan_shapes(d: Drawing, ns: SimpleNamespace) -> None:
+    """Every body's position counts toward the extent; a body given a shape (the wedge) is drawn
+    as that polygon, with its mass at the centroid."""
+    g = d.g
+    for i in range(len(g.bodies)):
+        d.add_points(g.at(i))
+    for body_name, shape in g.hint.shapes.items():
+        vertices = np.array([[g.number(c) for c in g.project(v)] for v in shape(ns)])
+        d.add_points(vertices)
+        d.ops.append(
+            lambda ax, u, v=vertices: ax.fill(
+                *v.T, facecolor="#e4e4e4", edgecolor=INK, linewidth=1.2, zorder=2
+            )
+        )
+        index = next((k for k, b in enumerate(g.bodies) if b.name == body_name), None)
+        if index is not None:
+            centroid = vertices.mean(axis=0)
+            d.ops.append(
+                lambda ax, u, c=centroid, b=g.bodies[index]: put_text(
+                    ax, c, f"${sp.latex(b.mass)}$", zorder=6
+                )
+            )
+
+
+def _plan_coordinate(
+    d: Drawing, k: int, j: mech.Jet, ns: SimpleNamespace, centre_of: np.ndarray
+) -> None:
+    """The k-th coordinate: the paths it sweeps its bodies along, and one label for it."""
+    g = d.g
+    canonical = g.variant.scene.coordinates[k]
+    label = f"${name_latex(j.name)}$"
+    carriers = g.carriers(j.q)
+    if not carriers:
+        _plan_rotation(d, j, label)
+        return
+    lo, hi = _sweep_range(g, canonical, j.q, ns)
+    sweep = np.linspace(lo, hi, 181)
+    for n, i in enumerate(carriers):
+        pts = g.at(i, {j.q: sweep})
+        d.add_points(pts)
+        if g.is_angle(j.q):
+            style = "solid" if canonical in g.hint.solid else "path"
+            d.traces.append((pts, style))
+            if n == 0:  # one label per coordinate, however many bodies it moves
+                _plan_angle(d, i, j, label, canonical)
+        else:
+            if g.constrained:  # the sweep traces a track; a free body has none
+                d.traces.append((pts, "solid"))
+            if n == 0:
+                _plan_length(d, i, j, label, pts, centre_of)
+
+
+def _sweep_range(
+    g: Geometry, canonical: str, q: sp.Symbol, ns: SimpleNamespace
+) -> tuple[float, float]:
+    """The hint's range, else a full turn for an angle, else a length scale either side of the
+    pose (starting at zero or below)."""
+    if canonical in g.hint.ranges:
+        lo, hi = (g.number(x) for x in g.hint.ranges[canonical](ns))
+        return lo, hi
+    if g.is_angle(q):
+        return 0.0, 2 * math.pi
+    pose = g.pose[q]
+    return min(0.0, pose - g.scale), pose + g.scale
+
+
+def _plan_dimensions_and_bodies(d: Drawing, ns: SimpleNamespace, centre_of: np.ndarray) -> None:
+    """The hint's dimension lines, then the bodies on top, gravity, and the axes of a 3-D view."""
+    g = d.g
+    shaped = set(g.hint.shapes)
+    for name, ends in g.hint.dimensions:
+        a, b = (np.array([g.number(c) for c in g.project(p)]) for p in ends(ns))
+        d.ops.append(
+            lambda ax, u, a=a, b=b, n=name: dimension(
+                ax, u, a, b, f"${name_latex(n)}$", centre_of, both=True
+            )
+        )
+    for i, b in enumerate(g.bodies):
+        if b.name in shaped:
+            continue
+        d.ops.append(lambda ax, u, i=i, b=b: body_disc(ax, u, g, i, b))
+    if any(s.name == "g" for s in g.variant.potential_energy.free_symbols):
+        d.ops.append(lambda ax, u: gravity_arrow(ax, u, d.points))
+    if g.three_d:
+        d.ops.append(lambda ax, u: axes3d(ax, u, g))
+
+
+def _plan_angle(d: Drawing, body: int, j: mech.Jet, label: str, canonical: str) -> None:
+    """An angle whose body moves on a circle: a rod (or a radius) from the circle's centre, a
+    dashed line to where the angle is zero and an arc from there to the pose. On any other path,
+    an arrow along it."""
+    g = d.g
+    found = circle(g, body, j.q)
+    pose = g.pose[j.q]
+    if found is None:
+        pts = g.at(body, {j.q: np.linspace(pose - 0.3, pose, 20)})
+        d.ops.append(lambda ax, u: arrow_along(ax, pts, label, u))
+        return
+    centre, radius = found
+    position = g.at(body)[0]
+    pivot_body = _body_at(g, body, centre, radius)
+    length = _rod_length(g, body, j.q)
+    zero = g.at(body, {j.q: np.array([0.0])})[0]
+    arc = g.at(body, {j.q: np.linspace(0.0, pose, 40)})
+    rods = g.hint.rods and g.constrained  # a free orbit (Kepler) hangs from nothing
+
+    def draw(ax: Any, unit: float) -> None:
+        ax.plot(
+            *np.array([centre, zero]).T, color=GREY, linewidth=0.8, linestyle=(0, (4, 3)), zorder=1
+        )
+        if rods:
+            ax.plot(
+                *np.array([centre, position]).T,
+                color=INK,
+                linewidth=2.2,
+                zorder=3,
+                solid_capstyle="round",
+            )
+            if pivot_body is None:
+                pivot(ax, centre, unit)
+        else:
+            ax.plot(*np.array([centre, position]).T, color=INK, linewidth=0.9, zorder=3)
+            ax.plot(*centre, marker="o", markersize=3, color=INK, zorder=4)
+        if length:
+            along_label(ax, centre, position, f"${length}$", unit, centre_of=None)
+        r = min(0.35, 0.3 * unit / max(radius, 1e-9))
+        pts = centre + r * (arc - centre)
+        arc_arrow(ax, pts, label)
+        mid = centre + 1.45 * r * (g.at(body, {j.q: np.array([pose / 2])})[0] - centre)
+        put_text(ax, mid, label, color=ACCENT)
+
+    d.ops.append(draw)
+
+
+def _body_at(g: Geometry, body: int, centre: np.ndarray, radius: float) -> int | None:
+    """Another body sitting at the circle's centre (the rod hangs from it: no pivot is drawn)."""
+    return next(
+        (
+            k
+            for k in range(len(g.bodies))
+            if k != body and np.allclose(g.at(k)[0], centre, atol=1e-6 * max(radius, 1))
+        ),
+        None,
+    )
+
+
+def _rod_length(g: Geometry, body: int, q: sp.Symbol) -> str | None:
+    """The length parameter the rod equals, as LaTeX, if any."""
+    # the rod's length, symbolically: |P - C|² with C the mean of three points on the circle
+    thirds = (0, 2 * sp.pi / 3, 4 * sp.pi / 3)
+    if g.three_d:  # measured in space, before the projection
+        raw = g.bodies[body].position
+        c3 = [sum(as_expr(p).subs(q, a) for a in thirds) / 3 for p in raw]
+        return label_for_length(g, sum((as_expr(p) - c) ** 2 for p, c in zip(raw, c3, strict=True)))
+    p_sym = [g.project(g.bodies[body].position)[k] for k in range(2)]
+    c_sym = [sum(as_expr(p).subs(q, a) for a in thirds) / 3 for p in p_sym]
+    return label_for_length(g, sum((p - c) ** 2 for p, c in zip(p_sym, c_sym, strict=True)))
+
+
+def _plan_length(
+    d: Drawing, body: int, j: mech.Jet, label: str, trace: np.ndarray, centre_of: np.ndarray
+) -> None:
+    """A length coordinate: a dimension arrow from where it is zero to the pose; on a straight
+    track inclined at an angle parameter, that angle marked at the track's lower end."""
+    g = d.g
+    pose = g.pose[j.q]
+    pts = g.at(body, {j.q: np.linspace(0.0, pose, 30)})
+    if np.hypot(*(pts[-1] - pts[0])) < 1e-9:
+        return
+    d.ops.append(lambda ax, u: dimension(ax, u, pts[0], pts[-1], label, centre_of, path=pts))
+    if g.three_d:
+        return
+    # a straight track inclined at an angle parameter: mark that angle at its lower end
+    position = g.project(g.bodies[body].position)
+    direction = [sp.diff(as_expr(c), j.q) for c in position]
+    for a in g.parameters_with_unit("rad"):
+        for sign in (1, -1):
+            if g.identically_zero(
+                direction[1] * sp.cos(a) - sign * direction[0] * sp.sin(a)
+            ) and not g.identically_zero(direction[0]):
+                d.ops.append(lambda ax, u, a=a: incline_angle(ax, u, trace, name_latex(a.name)))
+                return
+
+
+def _plan_rotation(d: Drawing, j: mech.Jet, label: str) -> None:
+    """A coordinate that only turns a rigid body: a curved arrow around that body."""
+    g = d.g
+    for i, b in enumerate(g.bodies):
+        if isinstance(b, RigidBody) and as_expr(b.angle).has(j.q):
+
+            def draw(ax: Any, unit: float, i: int = i) -> None:
+                centre = g.at(i)[0]
+                r = 1.5 * body_radius(g, i, unit)
+                angles = np.linspace(0.3, 0.3 + g.pose[j.q] + 0.8, 40)
+                pts = centre + r * np.column_stack([np.cos(angles), np.sin(angles)])
+                arc_arrow(ax, pts, label)
+                put_text(
+                    ax,
+                    centre + 1.3 * r * np.array([math.cos(0.2), math.sin(0.2)]),
+                    label,
+                    color=ACCENT,
+                )
+
+            d.ops.append(draw)
+            return
+
+
+def _plan_time(d: Drawing) -> None:
+    """Bodies moved by t (a turning hoop, a driven support): trace them over one period."""
+    g = d.g
+    for i, b in enumerate(g.bodies):
+        if not g.moves(i, mech.t):
+            continue
+        rates = set()
+        for f in as_expr(sp.Tuple(*b.position)).atoms(*TRIG):
+            if f.args[0].has(mech.t):
+                rate = sp.diff(f.args[0], mech.t)
+                if not rate.has(mech.t):
+                    rates.add(rate)
+        if len(rates) == 1:
+            rate = rates.pop()
+            period = 2 * math.pi / g.number(rate)
+            label = f"${sp.latex(rate)}$"
+        else:
+            period, label = 1.0, "$t$"
+        times = g.hint.t + np.linspace(0, period, 121)
+        pts = g.at(i, {mech.t: times})
+        d.add_points(pts)
+        d.traces.append((pts, "time"))
+        axis = rotation_axis(g, i, times) if label != "$t$" else None
+        d.ops.append(
+            lambda ax, u, pts=pts, label=label, axis=axis: time_mark(ax, u, pts, label, axis)
+        )

@@ -1,0 +1,261 @@
+"""What the templates see: one student's variant of one problem as plain data (statement with
+its names set as math, parameters and values, the parts asked with their prompts, the figure),
+and the variant's derived solution, computed once per presentation and shared by every seed."""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import re
+from functools import lru_cache
+from typing import Any
+
+import sympy as sp
+from markupsafe import Markup, escape
+
+from lagrade.assign.assignment import EXPRESSION, Problem
+from lagrade.assign.figures import draw
+from lagrade.assign.templating import md_escape, tex_escape
+from lagrade.assign.variants import VariantChoice
+from lagrade.mechanics.scene import RigidBody, SceneVariant
+from lagrade.notation import printer as rm
+
+PROMPTS: dict[str, str] = {
+    "dof": "List the constraints and give the number of degrees of freedom.",
+    "coordinates": "Name the generalized coordinates (use the ones named in the statement).",
+    "transformation": "Write the transformation equations: each body's Cartesian coordinates "
+    "in terms of the generalized coordinates (and t).",
+    "T": "Write the kinetic energy T.",
+    "V": "Write the potential energy V.",
+    "lagrangian": "Write the Lagrangian L = T - V.",
+    "eom": "Derive the Euler-Lagrange equations of motion, one per coordinate.",
+    "momenta": "Give the generalized momentum of each coordinate.",
+    "cyclic": "Which coordinates are cyclic? (Write none if there are none.)",
+    "conserved": "Give the conserved quantities as functions of the coordinates and velocities.",
+}
+#: Parts whose answer sheet field holds several lines (one equation or item per line).
+MULTILINE = frozenset({"transformation", "eom", "momenta", "conserved"})
+_WORD = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
+_ENGLISH = frozenset({"a", "A", "I"})
+
+
+def _statement(variant: SceneVariant) -> dict[str, Any]:
+    """The statement with every coordinate and parameter name set as math, in each format."""
+    text = variant.statement()
+    names = set(variant.coordinates) | set(variant.parameter_symbols)
+    md, html, tex = [], [], []
+    last = 0
+    for match in _WORD.finditer(text):
+        word = match.group()
+        if word not in names or word in _ENGLISH:
+            continue
+        before = text[last : match.start()]
+        md.append(md_escape(before))
+        html.append(str(escape(before)))
+        tex.append(tex_escape(before))
+        math = rm.render(sp.Symbol(word))
+        md.append(f"${math.latex}$")
+        html.append(str(math.mathml))
+        tex.append(f"${math.latex}$")
+        last = match.end()
+    rest = text[last:]
+    md.append(md_escape(rest))
+    html.append(str(escape(rest)))
+    tex.append(tex_escape(rest))
+    return {"text": text, "md": "".join(md), "html": Markup("".join(html)), "tex": "".join(tex)}
+
+
+def _body_kind(body: Any) -> str:
+    return "rigid body" if isinstance(body, RigidBody) else "point mass"
+
+
+@lru_cache(maxsize=512)
+def symbolic_solution(scene_id: str, names: tuple, options: tuple) -> dict[str, Any]:
+    """The derived solution of a presentation (names, options) of a scene: it does not depend on
+    the parameter values, so every seed with the same names and options shares it."""
+    from lagrade.bank.registry import get_scene
+
+    scene = get_scene(scene_id)
+    v = SceneVariant(scene, names=dict(names), options=dict(options))
+    coords = v.coordinates
+
+    def math(expr: sp.Basic) -> rm.Math:
+        return rm.render(expr, coords)
+
+    def eq(lhs: sp.Basic, rhs: sp.Basic) -> rm.Math:
+        return rm.equation(lhs, rhs, coords)
+
+    system = v.system
+    parameters = set(v.parameter_symbols)
+    energy = next(n for n in ("h", "H", "E_J") if n not in parameters and n not in coords)
+
+    def label(name: str) -> sp.Symbol:
+        """`p_x_M` → p_{xM}; the energy function `h` renamed when a parameter is called h."""
+        if name == "h":
+            return sp.Symbol(energy)
+        head, _, sub = name.partition("_")
+        return sp.Symbol(f"{head}_{sub.replace('_', '')}" if sub else head)
+
+    constraints = [
+        {"description": label if label != "declared" else "constraint", "math": eq(f, 0)}
+        for label, f in v.constraints
+    ]
+    return {
+        "statement": _statement(v),
+        "coordinates": [math(sp.Symbol(c)) for c in coords],
+        "coordinate_names": list(coords),
+        "bodies": [
+            {"name": b.name, "kind": _body_kind(b), "freedoms": b.freedoms} for b in v.bodies
+        ],
+        "freedoms": sum(b.freedoms for b in v.bodies),
+        "constraints": constraints,
+        "k": len(constraints),
+        "dof": v.dof,
+        "transformation": [eq(sp.Symbol(k), e) for k, e in v.transformation.items()],
+        "T": math(v.kinetic_energy),
+        "V": math(v.potential_energy),
+        "L": math(v.lagrangian),
+        "momenta": [
+            eq(label(f"p_{c}"), p) for c, p in zip(coords, system.generalized_momenta, strict=True)
+        ],
+        "eom": [eq(e, 0) for e in system.euler_lagrange],
+        "cyclic": [math(sp.Symbol(c)) for c in system.cyclic_coordinates],
+        "cyclic_names": list(system.cyclic_coordinates),
+        "conserved": [
+            {"name": name, "math": eq(label(name), q)}
+            for name, q in system.conserved_quantities.items()
+        ],
+        "figure": draw(v),
+    }
+
+
+def _number(value: sp.Expr) -> str:
+    number = complex(sp.N(value, 15))
+    if abs(number.imag) > 1e-12 * max(1.0, abs(number.real)):
+        return "not real for these values"
+    return f"{number.real:.4g}"
+
+
+def problem_view(problem: Problem, choice: VariantChoice, name: str) -> dict[str, Any]:
+    """Everything a template shows about one student's variant of one problem; `name` is the
+    figure's file name (without extension) in the `figures/` folder."""
+    scene = problem.scene
+    symbolic = symbolic_solution(scene.id, *presentation(choice))
+    variant = choice.variant(scene)
+    parameters = _parameters(choice, variant)
+    quantities = _quantities(problem, choice, variant)
+    parts = _parts(problem)
+    return {
+        "index": problem.index,
+        "title": problem.title,
+        "scene": scene.id,
+        "seed": choice.seed,
+        "statement": symbolic["statement"],
+        "coordinates": symbolic["coordinates"],
+        "coordinate_names": symbolic["coordinate_names"],
+        "parameters": parameters,
+        "parts": parts,
+        "asked": [p.part for p in problem.parts],
+        "total_points": problem.total_points,
+        "figure": {
+            "svg": f"../figures/{name}.svg",
+            "pdf": f"../figures/{name}.pdf",
+            "inline_svg": _inline_svg(symbolic["figure"].svg),
+        },
+        "solution": {
+            **{k: v for k, v in symbolic.items() if k not in ("figure", "statement")},
+            "quantities": quantities,
+        },
+    }
+
+
+def _parameters(choice: VariantChoice, variant: SceneVariant) -> list[dict[str, Any]]:
+    """Each parameter with its symbol, the student's value (None: stays a symbol) and domain."""
+    parameters = []
+    for p in variant.scene.parameters:
+        value = choice.values.get(p.name)
+        parameters.append(
+            {
+                "name": p.name,
+                "symbol": rm.render(variant.parameter_symbols[p.name]),
+                "value": None if value is None else f"{value:g}",
+                "unit": p.unit,
+                "description": p.description,
+                "domain": p.domain.text,
+            }
+        )
+    return parameters
+
+
+def _quantities(
+    problem: Problem, choice: VariantChoice, variant: SceneVariant
+) -> dict[str, dict[str, Any]]:
+    """The quantities the expression parts ask for: closed form, and value at the student's
+    parameter values."""
+    declared = {q.name: q for q in variant.scene.quantities}
+    quantities = {}
+    for part in problem.parts:
+        if part.part != EXPRESSION:
+            continue
+        q = declared[part.quantity]
+        expr = variant.quantities[q.name]
+        quantities[q.name] = {
+            "name": q.name,
+            "description": q.description,
+            "unit": q.unit,
+            "formula": rm.equation(sp.Symbol(q.name), expr, variant.coordinates),
+            "value": _number(
+                expr.xreplace(
+                    {
+                        variant.parameter_symbols[n]: sp.Float(v, 15)
+                        for n, v in choice.values.items()
+                    }
+                )
+            ),
+        }
+    return quantities
+
+
+def _parts(problem: Problem) -> list[dict[str, Any]]:
+    """The parts asked, each with its prompt and points."""
+    declared = {q.name: q for q in problem.scene.quantities}
+    parts = []
+    for part in problem.parts:
+        if part.part == EXPRESSION:
+            q = declared[part.quantity]
+            unit = f" (in {q.unit})" if q.unit else ""
+            prompt = (
+                f"Find {q.description}: a closed form in the parameters, and its value for "
+                f"your parameter values{unit}."
+            )
+        else:
+            prompt = PROMPTS[part.part]
+        parts.append(
+            {
+                "key": part.key,
+                "part": part.part,
+                "quantity": part.quantity,
+                "points": part.points,
+                "prompt": prompt,
+                "multiline": part.part in MULTILINE,
+            }
+        )
+    return parts
+
+
+def _inline_svg(svg: bytes) -> Markup:
+    text = svg.decode("utf-8")
+    return Markup(text[text.index("<svg") :])
+
+
+def presentation(choice: VariantChoice) -> tuple[tuple, tuple]:
+    """The (names, options) of a variant, hashable: the key of its symbolic solution."""
+    return tuple(sorted(choice.names.items())), tuple(sorted(choice.options.items()))
+
+
+def figure_name(problem: Problem, choice: VariantChoice) -> str:
+    """`p<index>-<scene>-<digest of names and options>`: students who share a presentation
+    share a figure file."""
+    tag = json.dumps([sorted(choice.names.items()), sorted(choice.options.items())])
+    digest = hashlib.sha256(tag.encode()).hexdigest()[:10]
+    return f"p{problem.index}-{problem.scene_id}-{digest}"

@@ -1,0 +1,201 @@
+"""`lagrade check`: one answer from the command line, or `--batch REQUESTS.jsonl` for many (one
+result line per request, in order). The judging itself is `lagrade.judge.check`."""
+
+from __future__ import annotations
+
+import argparse
+import json
+from pathlib import Path
+from typing import Any
+
+from lagrade.errors import RequestError
+from lagrade.grading.atomic import write_text
+from lagrade.judge.check import DEFAULT_TIME_LIMIT, check, run_batch
+from lagrade.judge.parts import PARTS
+from lagrade.judge.problem import build_problem
+from lagrade.judge.verdict import Verdict
+
+
+def check_batch_file(
+    requests: str | Path,
+    out: str | Path | None = None,
+    *,
+    time_limit: float = DEFAULT_TIME_LIMIT,
+    jobs: int = 1,
+) -> tuple[int, str]:
+    """`lagrade check --batch`: results to `out` (written whole or not at all) or, without it,
+    as the returned text. Returns (exit status, text)."""
+    path = Path(requests)
+    try:
+        text = path.read_text(encoding="utf-8")
+    except OSError as error:
+        raise RequestError(f"cannot read {path}: {error.strerror}") from None
+    counts: dict[str, int] = {}
+    results = []
+    for result in run_batch(text.splitlines(), time_limit=time_limit, jobs=jobs):
+        counts[result["verdict"]] = counts.get(result["verdict"], 0) + 1
+        results.append(json.dumps(result, ensure_ascii=False))
+    body = "\n".join(results) + ("\n" if results else "")
+    summary = f"{len(results)} requests: " + ", ".join(
+        f"{v} {k}" for k, v in sorted(counts.items())
+    )
+    if out is None:
+        return 0, body.rstrip("\n")
+    write_text(Path(out), body)
+    return 0, f"{summary}; results in {out}"
+
+
+# --- the command line -----------------------------------------------------------------------------
+
+
+def add_check_arguments(parser: argparse.ArgumentParser) -> None:
+    """The arguments of `lagrade check` (for the CLI to add to its `check` subcommand)."""
+    parser.add_argument(
+        "--batch",
+        metavar="REQUESTS.jsonl",
+        help="check every request of a JSON-lines file, one result line each",
+    )
+    parser.add_argument(
+        "--out",
+        metavar="RESULTS.jsonl",
+        help="with --batch: write the results here (default: standard output)",
+    )
+    parser.add_argument("--scene", help="a bank scene id, e.g. wedge")
+    parser.add_argument("--seed", type=int, default=None, help="the variant seed of --scene")
+    parser.add_argument("--quantity", help="with --scene and --part expression: which quantity")
+    parser.add_argument("--lagrangian", help="an ad-hoc reference Lagrangian (with --coordinates)")
+    parser.add_argument("--expression", help="an ad-hoc reference expression (with --parameters)")
+    parser.add_argument("--coordinates", default="", help="comma-separated coordinates, e.g. theta")
+    parser.add_argument(
+        "--parameters",
+        default="",
+        help="name=domain pairs, e.g. m=positive,alpha=(0, pi/2); a bare name is positive",
+    )
+    parser.add_argument("--part", choices=tuple(PARTS), help="the part the answer is for")
+    parser.add_argument(
+        "--answer",
+        action="append",
+        default=None,
+        help="the answer; repeat for parts that take a list (eom, momenta, …)",
+    )
+    parser.add_argument(
+        "--given-lagrangian",
+        default=None,
+        help="the student's own L, for follow-through on later parts",
+    )
+    parser.add_argument(
+        "--time-limit",
+        type=float,
+        default=DEFAULT_TIME_LIMIT,
+        help="seconds per request (default 2)",
+    )
+    parser.add_argument(
+        "--jobs",
+        type=int,
+        default=1,
+        help="with --batch: worker processes (results stay in request order; default 1)",
+    )
+    parser.add_argument("--json", action="store_true", help="print the result as JSON")
+
+
+def _parameters(text: str) -> dict[str, str]:
+    """'m=positive,alpha=(0, pi/2),g' → {"m": "positive", "alpha": "(0, pi/2)", "g": "positive"}
+    (commas inside brackets belong to an interval)."""
+    out: dict[str, str] = {}
+    depth, piece, pieces = 0, "", []
+    for ch in text:
+        depth += ch in "([" and 1 or (ch in ")]" and -1 or 0)
+        if ch == "," and depth == 0:
+            pieces.append(piece)
+            piece = ""
+        else:
+            piece += ch
+    pieces.append(piece)
+    for p in (p.strip() for p in pieces):
+        if not p:
+            continue
+        name, _, domain = p.partition("=")
+        out[name.strip()] = domain.strip() or "positive"
+    return out
+
+
+def problem_from_arguments(args: argparse.Namespace) -> dict[str, Any]:
+    """The problem field that the single form of `lagrade check` describes."""
+    chosen = [k for k in ("scene", "lagrangian", "expression") if getattr(args, k, None)]
+    if len(chosen) != 1:
+        raise RequestError("give exactly one of --scene, --lagrangian or --expression")
+    if chosen[0] == "scene":
+        spec: dict[str, Any] = {"scene": args.scene}
+        if args.seed is not None:
+            spec["seed"] = args.seed
+        if args.quantity:
+            spec["quantity"] = args.quantity
+        return spec
+    spec = {chosen[0]: getattr(args, chosen[0]), "parameters": _parameters(args.parameters)}
+    coords = [c.strip() for c in args.coordinates.split(",") if c.strip()]
+    if coords or chosen[0] == "lagrangian":
+        spec["coordinates"] = coords
+    return spec
+
+
+def format_verdict(verdict: Verdict) -> str:
+    """A result as a person reads it."""
+    lines = [f"{verdict.part}: {verdict.status} (score {verdict.score:g})"]
+    shown = verdict.interpreted
+    if shown:
+        shown = "; ".join(shown) if isinstance(shown, list) else shown
+        lines.append(f"  read as: {shown}")
+    lines += [f"  - {f}" for f in verdict.feedback]
+    if verdict.follows_from_own_answer:
+        lines.append("  (follows from your own earlier answer)")
+    lines.append(f"  decided by {verdict.method} in {verdict.ms:.1f} ms")
+    return "\n".join(lines)
+
+
+def run_check_command(args: argparse.Namespace) -> tuple[int, str]:
+    """`lagrade check`: (exit status, text to print). Exit 0 when the answer is correct (or a
+    batch ran to its end), 1 when it is not; a malformed request raises RequestError (the CLI
+    prints it and exits 2)."""
+    if args.batch:
+        return check_batch_file(
+            args.batch, args.out, time_limit=args.time_limit, jobs=max(1, args.jobs)
+        )
+    if not args.part or args.answer is None:
+        raise RequestError("give --part and --answer (or --batch REQUESTS.jsonl)")
+    spec = problem_from_arguments(args)
+    answer: Any = args.answer[0] if len(args.answer) == 1 else list(args.answer)
+    if args.part in ("eom", "momenta", "conserved", "transformation") and isinstance(answer, str):
+        answer = [answer]
+    given = {"lagrangian": args.given_lagrangian} if args.given_lagrangian else None
+    build_problem(spec)  # a malformed problem is a usage error here, not a verdict
+    verdict = check(spec, args.part, answer, time_limit=args.time_limit, given=given)
+    text = (
+        json.dumps(verdict.to_dict(), ensure_ascii=False, indent=2)
+        if args.json
+        else format_verdict(verdict)
+    )
+    return (0 if verdict.status == "correct" else 1), text
+
+
+def run(args: argparse.Namespace) -> int:
+    status, text = run_check_command(args)
+    if text:
+        print(text)
+    return status
+
+
+def add_parser(commands: argparse._SubParsersAction) -> None:
+    """Register this command with the `lagrade` parser."""
+    check = commands.add_parser(
+        "check",
+        help="judge one answer, or a JSON-lines file of requests",
+        description="Judge an answer against a bank scene (--scene), an ad-hoc Lagrangian "
+        "(--lagrangian with --coordinates and --parameters) or a reference expression "
+        "(--expression). Exit 0 when correct (or when a --batch ran to its end), 1 otherwise.",
+        epilog="examples:\n  lagrade check --scene wedge --part cyclic --answer x_M\n"
+        '  lagrade check --scene hoop --part eom --answer "theta_ddot = omega^2 sin(theta) '
+        'cos(theta) - g/R sin(theta)"\n  lagrade check --batch requests.jsonl --out results.jsonl',
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+    )
+    add_check_arguments(check)
+    check.set_defaults(run=run)

@@ -1,0 +1,58 @@
+"""`lagrade generate`: handouts, keys, answer sheets and a manifest for a roster."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+
+
+def run(args: argparse.Namespace) -> int:
+    from lagrade.assign.generate import generate
+    from lagrade.cli.progress import ProgressBar
+    from lagrade.judge.verify import verify_variant
+
+    with ProgressBar() as bar:
+        result = generate(
+            args.assignment,
+            args.roster,
+            args.seed,
+            args.out,
+            formats=args.formats,
+            templates_dir=args.templates,
+            force=args.force,
+            progress=bar,
+            verify=None if args.no_verify else verify_variant,
+        )
+    for warning in result.warnings:
+        print(f"warning: {warning}", file=sys.stderr)
+    print(f"wrote {result.files} files for {result.students} students to {result.out_dir}")
+    return 0
+
+
+def add_parser(commands: argparse._SubParsersAction) -> None:
+    """Register this command with the `lagrade` parser."""
+    generate = commands.add_parser(
+        "generate",
+        help="handouts, answer keys, answer sheets and a manifest for a roster",
+        description="Generate one variant per student of every problem in ASSIGNMENT.toml: "
+        "handouts with figures, answer keys, blank answer sheets and manifest.json. Every "
+        "variant's key is checked by the grader before anything is written.",
+        epilog="example: lagrade generate examples/assignment.toml --roster examples/roster.csv "
+        "--seed 2025 --out ps3 --formats md,html,tex,pdf",
+    )
+    generate.add_argument("assignment", type=Path, metavar="ASSIGNMENT.toml")
+    generate.add_argument("--roster", type=Path, required=True, help="CSV with columns id and name")
+    generate.add_argument("--seed", type=int, required=True, help="fixes every student's variant")
+    generate.add_argument("--out", type=Path, required=True, help="output folder (must not exist)")
+    generate.add_argument(
+        "--formats",
+        default="md,html,tex",
+        help="comma list of md,html,tex,pdf (default md,html,tex)",
+    )
+    generate.add_argument("--templates", type=Path, default=None, help="folder of *.j2 overrides")
+    generate.add_argument("--force", action="store_true", help="replace an existing output folder")
+    generate.add_argument(
+        "--no-verify", action="store_true", help="skip grading each key before writing (faster)"
+    )
+    generate.set_defaults(run=run)

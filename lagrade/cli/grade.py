@@ -1,0 +1,50 @@
+"""`lagrade grade`: a folder of answer sheets graded against a manifest."""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+
+
+def run(args: argparse.Namespace) -> int:
+    from lagrade.cli.progress import ProgressBar
+    from lagrade.grading.batch import grade
+
+    with ProgressBar() as bar:
+        summary = grade(
+            args.manifest,
+            args.submissions,
+            args.out,
+            jobs=args.jobs,
+            part_time_limit=args.part_time_limit,
+            progress=bar,
+        )
+    counts = ", ".join(f"{k} {v}" for k, v in summary.counts.items() if v)
+    print(f"{len(summary.results)} students: {counts} ({summary.reused} unchanged, reused)")
+    print(f"gradebook: {summary.out_dir / 'gradebook.csv'}")
+    print(f"summary:   {summary.out_dir / 'summary.md'}")
+    return 0 if summary.all_graded else 1
+
+
+def add_parser(commands: argparse._SubParsersAction) -> None:
+    """Register this command with the `lagrade` parser."""
+    grade = commands.add_parser(
+        "grade",
+        help="grade a folder of answer sheets: gradebook, feedback, results.json, summary",
+        description="Grade every roster student's answer sheet (SUBMISSIONS/<id>.toml or .json) "
+        "against the manifest. Every student gets a row; a rerun reuses unchanged results. "
+        "Exit 0 when every student was graded, 1 when some are missing, invalid, timed out or "
+        "failed (their rows say why).",
+        epilog="example: lagrade grade ps3/manifest.json submissions/ --out grades --jobs 2",
+    )
+    grade.add_argument("manifest", type=Path, metavar="DIR/manifest.json")
+    grade.add_argument("submissions", type=Path, metavar="SUBMISSIONS")
+    grade.add_argument("--out", type=Path, default=None, help="output folder (default DIR/grades)")
+    grade.add_argument("--jobs", type=int, default=1, help="submissions graded in parallel")
+    grade.add_argument(
+        "--part-time-limit",
+        type=float,
+        default=2.0,
+        help="seconds allowed per answer part (default 2)",
+    )
+    grade.set_defaults(run=run)

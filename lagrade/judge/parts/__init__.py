@@ -1,0 +1,85 @@
+"""One checker per answer part, registered by part name in `PARTS`; each returns a frozen Verdict
+and never raises over a student's mistake (text that does not parse is `invalid`, with the
+parser's message). Every command that judges a part (`check`, `check --batch`, `grade`, key
+verification, the demo) comes through `run_checker`.
+
+    dof             an integer: 3N − k
+    coordinates     the generalized coordinates, by name
+    transformation  Cartesian coordinates that satisfy the constraints identically, full rank
+    lagrangian      E(L′) = c E(L): c > 0 right (constant, dF/dt, factor named), c < 0 V − T
+    T, V            T equal; V equal up to a constant (another zero level)
+    eom             each equation in the span of the EL rows; the set yields the same q̈
+    momenta         p_j = ∂L/∂q̇_j, each
+    cyclic          the set of coordinates absent from L
+    conserved       each Q non-constant with D_t Q = 0 on the reference motion
+    expression      a number at the handout's values, or equal to the reference expression
+
+`given` carries what the student brings besides the answer: their own L for follow-through on
+later parts ("lagrangian"), and for a numeric answer the handout's values and the tolerance
+("values", "tolerance").
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping
+from typing import Any
+
+from lagrade.errors import ParseError, RequestError, UnsupportedExpression
+from lagrade.judge.parts.conserved import check_conserved
+from lagrade.judge.parts.coordinates import check_coordinates
+from lagrade.judge.parts.cyclic import check_cyclic
+from lagrade.judge.parts.dof import check_dof
+from lagrade.judge.parts.energy import check_kinetic, check_lagrangian, check_potential
+from lagrade.judge.parts.eom import check_eom
+from lagrade.judge.parts.expression import check_expression
+from lagrade.judge.parts.momenta import check_momenta
+from lagrade.judge.parts.transformation import check_transformation
+from lagrade.judge.problem import Problem
+from lagrade.judge.verdict import Verdict, invalid
+
+Checker = Callable[[Problem, Any, Mapping | None], Verdict]
+
+PARTS: dict[str, Checker] = {
+    "dof": check_dof,
+    "coordinates": check_coordinates,
+    "transformation": check_transformation,
+    "lagrangian": check_lagrangian,
+    "T": check_kinetic,
+    "V": check_potential,
+    "eom": check_eom,
+    "momenta": check_momenta,
+    "cyclic": check_cyclic,
+    "conserved": check_conserved,
+    "expression": check_expression,
+}
+
+#: Parts that need a Lagrangian (a bank scene or an ad-hoc L), not only an expression.
+NEEDS_LAGRANGIAN = frozenset(PARTS) - {"expression"}
+
+
+def run_checker(problem: Problem, part: str, answer: Any, given: Mapping | None = None) -> Verdict:
+    """Judge `answer` to `part` of `problem`. A student's mistake never raises: text that does
+    not parse, or that names something the evaluator cannot compute, is `invalid` with a message.
+    A malformed request (unknown part, wrong answer shape) raises RequestError."""
+    checker = PARTS.get(part)
+    if checker is None:
+        raise RequestError(f"unknown part {part!r}; parts: {', '.join(PARTS)}")
+    if part in NEEDS_LAGRANGIAN and problem.lagrangian is None:
+        raise RequestError(
+            f"part {part!r} needs a scene or a Lagrangian, and this problem gives "
+            "only an expression"
+        )
+    if part == "expression" and problem.expression is None:
+        raise RequestError(
+            'part "expression" needs a reference expression (an "expression" '
+            'problem, or a scene with "quantity")'
+        )
+    try:
+        return checker(problem, answer, given)
+    except ParseError as error:
+        return invalid(part, str(error), getattr(error, "source", ""))
+    except UnsupportedExpression as error:
+        return invalid(part, f"Cannot evaluate your answer: {error}.")
+
+
+__all__ = ["NEEDS_LAGRANGIAN", "PARTS", "run_checker"]

@@ -1,0 +1,99 @@
+"""The `cyclic` part: the set of coordinates that L does not contain."""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Mapping
+from typing import Any
+
+import sympy as sp
+
+from lagrade.errors import ParseError
+from lagrade.judge.parts.reading import NONE_WORDS, items_of, own_lagrangian, read
+from lagrade.judge.problem import Problem
+from lagrade.judge.verdict import Verdict
+from lagrade.notation.printer import as_typed
+
+
+def check_cyclic(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
+    items = (
+        items_of(answer, "cyclic")
+        if not isinstance(answer, str)
+        else re.split(r"\s*(?:,|;|\band\b)\s*", answer.strip())
+    )
+    names: list[str] = []
+    echoes: list[str] = []
+    velocity_named = []
+    coords = {j.q: j.name for j in problem.jets}
+    velocities = {j.dot: j.name for j in problem.jets}
+    for item in items:
+        if isinstance(item, str) and item.strip().lower() in NONE_WORDS:
+            continue
+        got = read(problem, item, (), "expression")
+        echoes.append(got.echo)
+        sym = got.expr
+        if sym in coords:
+            names.append(coords[sym])
+        elif sym in velocities:
+            velocity_named.append(velocities[sym])
+            names.append(velocities[sym])
+        else:
+            text = item if isinstance(item, str) else str(item)
+            raise ParseError(
+                f"Name the cyclic coordinates, e.g. {problem.coordinates[0]}; or write none.",
+                (0, len(text)),
+                text,
+            )
+    claimed = set(names)
+    L = sp.expand(problem.system.L)
+    truth = set(problem.system.cyclic_coordinates)
+    feedback, mistakes = [], []
+    for name in velocity_named:
+        feedback.append(f"A cyclic coordinate is a coordinate ({name}), not its velocity.")
+    right = 0
+    for j in problem.jets:
+        if (j.name in claimed) == (j.name in truth):
+            right += 1
+            continue
+        if j.name in claimed:
+            if not L.has(j.dot):
+                feedback.append(
+                    f"{j.name} is not cyclic: L contains {j.name} itself (only its "
+                    f"velocity {j.name}_dot is missing); cyclic means ∂L/∂{j.name} = 0."
+                )
+                mistakes.append("velocity_missing_not_cyclic")
+            else:
+                term = next((x for x in sp.Add.make_args(L) if x.has(j.q)), None)
+                example = f" (for example in the term {as_typed(term)})" if term is not None else ""
+                feedback.append(f"{j.name} is not cyclic: L depends on {j.name}{example}.")
+                mistakes.append("not_cyclic")
+        else:
+            feedback.append(
+                f"{j.name} is cyclic: L contains its velocity {j.name}_dot but not "
+                f"{j.name} itself, so p_{j.name} is conserved."
+            )
+            mistakes.append("missed_cyclic")
+    n = len(problem.jets)
+    echo = echoes if echoes else ["none"]
+    follows = False
+    own = own_lagrangian(problem, given)
+    if right < n and own is not None:
+        own_cyclic = {j.name for j in problem.jets if not sp.expand(own).has(j.q)}
+        if own_cyclic == claimed and own_cyclic != truth:
+            follows = True
+            feedback.append(
+                "This is the set of cyclic coordinates of your own Lagrangian, which "
+                "is not the right one."
+            )
+    if right == n and not velocity_named:
+        return Verdict("cyclic", "correct", 1.0, (), echo, "exact")
+    return Verdict(
+        "cyclic",
+        "incorrect",
+        right / n * (0.5 if velocity_named else 1.0),
+        tuple(feedback),
+        echo,
+        "exact",
+        follows_from_own_answer=follows,
+        mistakes=tuple(mistakes),
+    )

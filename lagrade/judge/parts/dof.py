@@ -1,0 +1,40 @@
+"""The `dof` part: the number of degrees of freedom, 3N − k, as a whole number."""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Mapping
+from typing import Any
+
+from lagrade.judge.problem import Problem
+from lagrade.judge.verdict import Verdict, invalid
+
+
+def check_dof(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
+    text = str(answer).strip() if not isinstance(answer, list) else ""
+    if isinstance(answer, bool) or not (isinstance(answer, int) or re.fullmatch(r"[+-]?\d+", text)):
+        return invalid(
+            "dof", "Write the number of degrees of freedom as a whole number, e.g. 2.", text
+        )
+    n = int(text if not isinstance(answer, int) else answer)
+    if n == problem.dof:
+        return Verdict("dof", "correct", 1.0, (), str(n), "exact")
+    feedback = [f"{n} is not the number of degrees of freedom."]
+    mistakes: tuple[str, ...] = ()
+    v = problem.variant
+    if v is not None:
+        freedoms = sum(b.freedoms for b in v.bodies)
+        implied = sum(1 for label, _ in v.constraints if label != "declared")
+        if n == freedoms:
+            feedback.append(
+                f"You counted {freedoms} freedoms of the bodies but subtracted no "
+                "constraints (DOF = 3N − k)."
+            )
+            mistakes = ("no_constraints",)
+        elif implied and n == problem.dof + implied:
+            feedback.append(
+                "Motion in a plane is a constraint too (z = 0 for each body); "
+                "count it among the k constraints."
+            )
+            mistakes = ("forgot_planarity",)
+    return Verdict("dof", "incorrect", 0.0, tuple(feedback), str(n), "exact", mistakes=mistakes)

@@ -1,0 +1,217 @@
+"""The `lagrangian`, `T` and `V` parts. L′ is right when E(L′) = c E(L) with c > 0 (a dropped
+constant, an added dF/dt, a factor are named); c < 0 is V − T. T must equal the reference;
+V may differ by a constant (another zero level)."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from typing import Any
+
+import numpy as np
+import sympy as sp
+
+from lagrade.judge.compiled import Compiled
+from lagrade.judge.decision import Outcome
+from lagrade.judge.equivalence import (
+    affine_match,
+    differ_by_constant,
+    expressions_equal,
+    lagrangians_match,
+    reference_values,
+)
+from lagrade.judge.evaluate import UnsupportedExpression
+from lagrade.judge.parts.common import (
+    as_sentence,
+    free_parameters,
+    incorrect,
+    method_name,
+    ratio_text,
+    reference_el,
+    where_text,
+    witness_point,
+)
+from lagrade.judge.parts.reading import has_acceleration, read_single
+from lagrade.judge.problem import Problem
+from lagrade.judge.sampling import Points
+from lagrade.judge.verdict import Verdict
+
+
+def judge_lagrangian(
+    problem: Problem, expr: sp.Expr
+) -> tuple[str, float, list[str], Outcome, dict[str, float] | None, tuple[str, ...]]:
+    """(status, score, feedback, outcome, witness, mistakes) for a Lagrangian answer; the
+    witness is a point where the motion differs, when it does."""
+    answer = Compiled.of(expr)
+    points = problem.points("lagrangian", free_parameters(problem, expr))
+    if has_acceleration(problem, answer):  # before E(L), which needs an L(q, q̇, t)
+        return (
+            "incorrect",
+            0.0,
+            ["A Lagrangian depends on coordinates, velocities and t, not on accelerations."],
+            Outcome(False, "structure", math.inf),
+            None,
+            ("acceleration",),
+        )
+    fast = _affine_to_reference(problem, answer, points)
+    if fast is not None:  # c (T − V) + k: the same motion, settled by values alone
+        notes = _factor_notes(fast.factor) + ([_CONSTANT_NOTE] if fast.shifted else [])
+        return ("correct", 1.0, notes, Outcome(True, "numeric", fast.worst), None, ())
+    match = lagrangians_match(answer, reference_el(problem, points), problem.jets, points)
+    out = match.outcome
+    factors = np.array(match.factors)
+    if out.equal and np.all(np.abs(factors) < 1e-12):
+        return (
+            "incorrect",
+            0.0,
+            [
+                "Your L gives no equations of motion at all (it is a constant "
+                "or a total time derivative)."
+            ],
+            out,
+            None,
+            ("trivial",),
+        )
+    if out.equal and np.all(factors > 0):
+        return (
+            "correct",
+            1.0,
+            _same_dynamics_notes(problem, answer, match, points),
+            out,
+            None,
+            (),
+        )
+    if out.equal and np.all(factors < 0):
+        return (
+            "incorrect",
+            0.5,
+            [
+                "Your L gives the right equations of motion but has the "
+                "opposite sign: the convention is L = T − V, and you wrote "
+                "V − T (or a negative multiple)."
+            ],
+            out,
+            None,
+            ("V_minus_T",),
+        )
+    feedback = []
+    mistakes: tuple[str, ...] = ()
+    mutant = problem.catalogue.match_lagrangian(answer, points, match.answer_el)
+    if mutant is not None:
+        feedback.append(as_sentence(mutant.message))
+        mistakes = (mutant.kind,)
+    witness = witness_point(points, out, answer)
+    feedback.append(
+        "Your L does not give the equations of motion of this system" + where_text(witness) + "."
+    )
+    return ("incorrect", 0.0, feedback, out, witness, mistakes)
+
+
+_CONSTANT_NOTE = (
+    "Your L differs from T − V by a constant (for example m g h, another zero "
+    "level of V); that does not change the motion."
+)
+
+
+def _affine_to_reference(problem: Problem, answer: Compiled, points: Points):
+    """answer = c (T − V) + k at the points (see `affine_match`), or None."""
+    try:
+        with np.errstate(all="ignore"):
+            values = answer.values(points.env)
+    except (UnsupportedExpression, ValueError, ZeroDivisionError, OverflowError):
+        return None
+    return affine_match(values, reference_values(problem.L, points), points)
+
+
+def _factor_notes(c: float | None) -> list[str]:
+    if c is None:
+        return [
+            "Your L is T − V times a factor that depends on the parameters; that gives "
+            "the same motion."
+        ]
+    if abs(c - 1) > 1e-9:
+        return [
+            f"Your L is {ratio_text(c)} × (T − V); a constant factor gives the same "
+            "equations of motion."
+        ]
+    return []
+
+
+def _same_dynamics_notes(problem: Problem, answer: Compiled, match, points: Points) -> list[str]:
+    """Name how a right L differs from T − V: a constant, dF/dt, a global factor."""
+    notes = _factor_notes(match.factor)
+    with np.errstate(all="ignore"):
+        a, sa = answer.values(points.env)
+        b, sb = reference_values(problem.L, points)
+        factors = np.array(match.factors)[points.group]
+        d = np.broadcast_to(a - factors * b, (points.n,))
+        size = np.broadcast_to(sa + np.abs(factors) * sb, (points.n,))
+    if np.all(np.abs(d) <= 1e-9 * size):
+        return notes
+    starts = np.searchsorted(points.group, points.group)
+    if np.all(np.abs(d - d[starts]) <= 1e-9 * (size + np.abs(d[starts]))):
+        notes.append(_CONSTANT_NOTE)
+    else:
+        notes.append(
+            "Your L differs from T − V by a total time derivative dF/dt; that gives the "
+            "same equations of motion."
+        )
+    return notes
+
+
+def check_lagrangian(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
+    got = read_single(problem, answer, "lagrangian", "L")
+    status, score, feedback, out, witness, mistakes = judge_lagrangian(problem, got.expr)
+    return Verdict(
+        "lagrangian",
+        status,
+        score,
+        tuple(feedback),
+        got.echo,
+        method_name(out),
+        witness=witness,
+        mistakes=mistakes,
+    )
+
+
+def check_kinetic(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
+    got = read_single(problem, answer, "T", "T")
+    answer_c = Compiled.of(got.expr)
+    points = problem.points("T", free_parameters(problem, got.expr))
+    out = expressions_equal(answer_c, problem.kinetic, points)
+    if out.equal:
+        return Verdict("T", "correct", 1.0, (), got.echo, method_name(out))
+    mutant = problem.catalogue.match_plain(problem.catalogue.kinetic_mutants, answer_c, points)
+    return incorrect(
+        "T",
+        got,
+        mutant,
+        "Your T is not the kinetic energy of this system",
+        witness_point(points, out, answer_c),
+        method_name(out),
+    )
+
+
+def check_potential(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
+    got = read_single(problem, answer, "V", "V")
+    answer_c = Compiled.of(got.expr)
+    reference = problem.potential
+    points = problem.points("V", free_parameters(problem, got.expr))
+    out = differ_by_constant(answer_c, reference, points)
+    if out.equal:
+        notes = ()
+        if not expressions_equal(answer_c, reference, points).equal:
+            notes = (
+                "Your V differs from the reference by a constant (another zero level); "
+                "that is fine.",
+            )
+        return Verdict("V", "correct", 1.0, notes, got.echo, method_name(out))
+    mutant = problem.catalogue.match_offset(problem.catalogue.potential_mutants, answer_c, points)
+    return incorrect(
+        "V",
+        got,
+        mutant,
+        "Your V is not the potential energy of this system (up to a constant)",
+        witness_point(points, out, answer_c),
+        method_name(out),
+    )

@@ -1,0 +1,161 @@
+"""The `eom` part: each equation must lie in the span of the Euler–Lagrange rows, and the set must
+yield the same accelerations (any row operations, solved forms, multiplied through)."""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from typing import Any
+
+import numpy as np
+import sympy as sp
+
+from lagrade.judge.compiled import Compiled
+from lagrade.judge.decision import decide
+from lagrade.judge.evaluate import FLOAT, UnsupportedExpression
+from lagrade.judge.parts.common import (
+    free_parameters,
+    method_name,
+    where_text,
+    witness_point,
+)
+from lagrade.judge.parts.reading import Read, items_of, own_lagrangian, read, read_parsed
+from lagrade.judge.problem import Problem, parser
+from lagrade.judge.rows import equation_rows, in_span, lagrangian_rows, row_rank
+from lagrade.judge.verdict import Verdict, invalid
+
+
+def check_eom(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
+    items = items_of(answer, "eom")
+    reads: list[Read] = []
+    for item in items:
+        if isinstance(item, str):
+            for parsed in parser().parse_equations(item, problem.vocabulary()):
+                reads.append(read_parsed(problem, parsed))
+        else:
+            reads.append(read(problem, item))
+    echoes = [r.echo for r in reads]
+    if not reads:
+        return invalid("eom", "Give one equation of motion per coordinate.")
+    exprs = [sp.S(r.expr) for r in reads]
+    compiled = [Compiled.of(e) for e in exprs]
+    jets = problem.jets
+    n = len(jets)
+    points = problem.points("eom", free_parameters(problem, *exprs))
+    ref_rows = problem.cached(
+        "rows", points, lambda: equation_rows(problem.euler_lagrange, jets, points.env)
+    )
+    with np.errstate(all="ignore"):
+        rows = equation_rows(compiled, jets, points.env)
+    right, outcomes, feedback, mistakes = [], [], [], []
+    wrong: list[int] = []
+    witness = None
+    for k in range(len(reads)):
+        label = f"Equation {k + 1} ({echoes[k]})" if len(reads) > 1 else "Your equation"
+        nonlinear = decide(lambda b, k=k: _nonlinear_residual(compiled, k, jets, points, b))
+        if not nonlinear.equal:
+            feedback.append(
+                f"{label} is not linear in the accelerations, so it cannot be an "
+                "Euler–Lagrange equation."
+            )
+            wrong.append(k)
+            outcomes.append(nonlinear)
+            continue
+        size = rows.size[:, k]
+        norm = np.linalg.norm(rows.coef[:, k, :].astype(float), axis=1)
+        if np.all(norm <= 1e-10 * np.maximum(size, 1e-300)):
+            feedback.append(f"{label} says nothing (it reduces to 0 = 0).")
+            mistakes.append("trivial_equation")
+            wrong.append(k)
+            continue
+        out = decide(lambda b, k=k: _span_residual(problem, compiled, ref_rows, k, points, b))
+        outcomes.append(out)
+        if out.equal:
+            right.append(k)
+            continue
+        wrong.append(k)
+        witness = witness or witness_point(points, out, compiled[k])
+        mutant = problem.catalogue.match_row(compiled[k], points)
+        if mutant is not None:
+            feedback.append(f"{label}: {mutant.message}.")
+            mistakes.append(mutant.kind)
+        else:
+            feedback.append(
+                f"{label} does not follow from the Euler–Lagrange equations of this "
+                f"system{where_text(witness_point(points, out, compiled[k]))}."
+            )
+    rank = row_rank(rows.coef.astype(float), right)
+    follows = False
+    own = own_lagrangian(problem, given)
+    if wrong and own is not None:
+        follows = _follows_from_own(problem, own, compiled, wrong, points)
+        if follows:
+            feedback.append(
+                "These equations follow correctly from your own Lagrangian, which is "
+                "not the right one."
+            )
+    if not wrong and rank == n:
+        notes = ()
+        if len(reads) > n:
+            notes = (f"You gave {len(reads)} equations; {n} of them are independent.",)
+        return Verdict("eom", "correct", 1.0, notes, echoes, method_name(*outcomes))
+    if not wrong and rank < n:
+        feedback.append(
+            f"Your equations are right but only {rank} of them are independent; "
+            f"{n} coordinates need {n} equations."
+        )
+        mistakes.append("too_few_equations")
+        score = rank / n
+    else:
+        score = len(right) / max(len(reads), n)
+        if len(reads) < n and not wrong:
+            feedback.append(f"{n} coordinates need {n} equations.")
+    return Verdict(
+        "eom",
+        "incorrect",
+        float(min(score, 1.0)),
+        tuple(feedback),
+        echoes,
+        method_name(*outcomes),
+        witness=witness,
+        follows_from_own_answer=follows,
+        mistakes=tuple(mistakes),
+    )
+
+
+def _nonlinear_residual(compiled, k, jets, points, backend):
+    env = points.arrays(backend)
+    rows = equation_rows([compiled[k]], jets, env, backend)
+    return rows.nonlinear[:, 0], rows.size[:, 0]
+
+
+def _span_residual(problem, compiled, ref_rows, k, points, backend):
+    if backend is FLOAT:
+        student = equation_rows([compiled[k]], problem.jets, points.env)
+        return in_span(student, ref_rows, 0)
+    env = points.arrays(backend)
+    student = equation_rows([compiled[k]], problem.jets, env, backend)
+    ref = equation_rows(problem.euler_lagrange, problem.jets, env, backend)
+    return in_span(student, ref, 0, backend)
+
+
+def _follows_from_own(problem: Problem, own: sp.Expr, compiled, wrong, points) -> bool:
+    own_c = Compiled.of(own)
+    jets = problem.jets
+    try:
+        with np.errstate(all="ignore"):
+            own_rows = lagrangian_rows(own_c, jets, points.env)
+        if not np.all(np.isfinite(own_rows.coef.astype(float))):
+            return False
+        for k in wrong:
+
+            def residual(backend, k=k):
+                env = points.arrays(backend)
+                s = equation_rows([compiled[k]], jets, env, backend)
+                r = own_rows if backend is FLOAT else lagrangian_rows(own_c, jets, env, backend)
+                return in_span(s, r, 0, backend)
+
+            if not decide(residual).equal:
+                return False
+    except (UnsupportedExpression, ValueError, np.linalg.LinAlgError):
+        return False
+    return True

@@ -1,0 +1,111 @@
+"""The `expression` part, and with it every numeric follow-up of an assignment, by one rule:
+
+- a number (no symbols) is judged against the reference's value at the handout's parameter
+  values, within a relative tolerance (`given["values"]`, `given["tolerance"]`; by default the
+  question's own variant and `NUMERIC_TOLERANCE`), with or without the quantity's unit;
+- anything else (a closed form) must equal the reference expression on the declared domains.
+
+`lagrade check` and `lagrade grade` both come here, so one answer gets one verdict.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Mapping
+from typing import Any
+
+import sympy as sp
+
+from lagrade.judge.adaptive import ExactThenAdaptive
+from lagrade.judge.compiled import Compiled
+from lagrade.judge.decision import Outcome
+from lagrade.judge.equivalence import expressions_equal
+from lagrade.judge.parts.common import free_parameters, incorrect, method_name, witness_point
+from lagrade.judge.parts.reading import read_single
+from lagrade.judge.problem import Problem
+from lagrade.judge.sampling import coordinate_range
+from lagrade.judge.verdict import Verdict
+from lagrade.mechanics.domains import Domain
+
+
+def _domains_for(problem: Problem) -> dict:
+    """Domains of every variable: parameters as declared, coordinates in their sample ranges."""
+    domains = dict(problem.domains)
+    for j in problem.jets:
+        lo, hi = (problem.coordinate_domains or {}).get(j.name) or coordinate_range(j.name)
+        domains[j.q] = Domain(j.name, sp.Float(lo), sp.Float(hi))
+    return domains
+
+
+#: Relative tolerance of a numeric answer unless the rubric or the request sets another.
+NUMERIC_TOLERANCE = 0.01
+
+
+def strip_unit(text: str, unit: str) -> str:
+    """'5.39 m/s^2' → '5.39' when the quantity's unit is m/s^2 (spaces and ** tolerated)."""
+    if not unit:
+        return text
+    pattern = re.escape(unit).replace(r"\^", r"(?:\^|\*\*)").replace(r"\ ", r"\s*")
+    return re.sub(rf"\s*(?:\[\s*)?{pattern}(?:\s*\])?\s*$", "", text.strip())
+
+
+def _handout_values(problem: Problem, given: Mapping | None) -> dict[sp.Symbol, sp.Expr] | None:
+    """The parameter values the student was given (exact numbers), or None without a handout."""
+    values = (given or {}).get("values")
+    if values is None and problem.variant is not None:
+        values = problem.variant.values
+    if not values or set(problem.parameters) - set(values):
+        return None
+    return {problem.parameters[n]: sp.nsimplify(v, rational=True) for n, v in values.items()}
+
+
+def _judge_number(problem: Problem, got: sp.Expr, values: Mapping, tolerance: float) -> Verdict:
+    """A number against the reference's value at the handout's values (relative tolerance)."""
+    expected = complex(sp.N(problem.expression.xreplace(values), 30))
+    value = complex(sp.N(got, 30))
+    echo = f"{value.real:.6g}"  # a number reads better as a decimal than as 6887/1000
+    if abs(expected.imag) > 1e-12 * max(1.0, abs(expected)):
+        feedback = ("For these values the quantity is not real; the key says so.",)
+        return Verdict("expression", "incorrect", 0.0, feedback, echo, "numeric")
+    error = abs(value - expected.real) / max(abs(expected.real), 1e-300)
+    if error <= tolerance:
+        return Verdict("expression", "correct", 1.0, (), echo, "numeric")
+    sign_flipped = abs(value.real + expected.real) <= tolerance * abs(expected.real)
+    feedback = (
+        f"Your value {value.real:.4g} is off by {100 * error:.3g} % (the tolerance is "
+        f"{100 * tolerance:g} %)." + (" Check the sign." if sign_flipped else ""),
+    )
+    mistakes = ("numeric_sign",) if sign_flipped else ("numeric_value",)
+    return Verdict("expression", "incorrect", 0.0, feedback, echo, "numeric", mistakes=mistakes)
+
+
+def check_expression(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
+    if isinstance(answer, str) and problem.unit:
+        answer = strip_unit(answer, problem.unit)
+    got = read_single(problem, answer, "expression", "x")
+    values = _handout_values(problem, given) if not got.expr.free_symbols else None
+    if values is not None:
+        tolerance = float((given or {}).get("tolerance", NUMERIC_TOLERANCE))
+        return _judge_number(problem, got.expr, values, tolerance)
+    ref = problem.reference_expression
+    # The default decision (docs/methods.csv): exact where possible, bounded floats otherwise;
+    # the numeric hybrid decides only what that method cannot reach, and finds witnesses.
+    decided = ExactThenAdaptive().decide(got.expr, ref.expr, _domains_for(problem))
+    if decided:
+        return Verdict("expression", "correct", 1.0, (), got.echo, "exact_then_adaptive")
+    ans = Compiled.of(got.expr)
+    points = problem.points("expression", free_parameters(problem, got.expr))
+    out = expressions_equal(ans, ref, points)
+    if decided is not None:
+        out = Outcome(False, "exact_then_adaptive", out.worst, out.where)
+    if out.equal:
+        return Verdict("expression", "correct", 1.0, (), got.echo, method_name(out))
+    mutant = problem.catalogue.match_plain(problem.catalogue.expression_mutants, ans, points)
+    return incorrect(
+        "expression",
+        got,
+        mutant,
+        "Your answer is not equal to the expected expression",
+        witness_point(points, out, ans, ref),
+        out.method if decided is not None else method_name(out),
+    )

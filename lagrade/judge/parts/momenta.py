@@ -1,0 +1,140 @@
+"""The `momenta` part: p_j = ∂L/∂q̇_j, each, or what follows from the student's own L."""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from typing import Any
+
+import sympy as sp
+
+from lagrade.errors import ParseError
+from lagrade.judge.compiled import Compiled
+from lagrade.judge.derivatives import gradient
+from lagrade.judge.equivalence import expressions_equal, lagrangians_match, values_equal
+from lagrade.judge.evaluate import UnsupportedExpression
+from lagrade.judge.parts.common import (
+    as_sentence,
+    free_parameters,
+    method_name,
+    reference_el,
+    where_text,
+    witness_point,
+)
+from lagrade.judge.parts.reading import Read, items_of, own_lagrangian, read
+from lagrade.judge.problem import Problem
+from lagrade.judge.verdict import Verdict, invalid
+
+
+def check_momenta(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
+    jets = problem.jets
+    labels = [f"p_{j.name}" for j in jets]
+    items = items_of(answer, "momenta")
+    by_coordinate: dict[int, Read] = {}
+    unlabelled: list[Read] = []
+    echoes = []
+    for item in items:
+        got = read(problem, item, labels)
+        echoes.append(got.echo)
+        if got.rhs is not None:
+            if not (isinstance(got.lhs, sp.Symbol) and str(got.lhs) in labels):
+                text = item if isinstance(item, str) else str(item)
+                raise ParseError(
+                    f"Write each momentum as {labels[0]} = … or give them in the order "
+                    f"{', '.join(j.name for j in jets)}.",
+                    (0, len(text)),
+                    text,
+                )
+            k = labels.index(str(got.lhs))
+            if k in by_coordinate:
+                return invalid("momenta", f"{labels[k]} is given twice.", echoes)
+            by_coordinate[k] = Read(got.rhs, None, got.echo)
+        else:
+            unlabelled.append(got)
+    free_slots = [k for k in range(len(jets)) if k not in by_coordinate]
+    if len(unlabelled) > len(free_slots):
+        return invalid(
+            "momenta", f"{len(items)} momenta given for {len(jets)} coordinates.", echoes
+        )
+    for k, got in zip(free_slots, unlabelled, strict=False):
+        by_coordinate[k] = got
+    own = own_lagrangian(problem, given)
+    right, feedback, mistakes, outcomes = 0, [], [], []
+    witness, follows_all, any_wrong = None, True, False
+    for k, j in enumerate(jets):
+        if k not in by_coordinate:
+            feedback.append(f"p_{j.name} is missing.")
+            any_wrong, follows_all = True, False
+            continue
+        expr = by_coordinate[k].expr
+        ans = Compiled.of(expr)
+        points = problem.points("momenta", free_parameters(problem, expr))
+        out = expressions_equal(ans, problem.momenta[k], points)
+        outcomes.append(out)
+        if out.equal:
+            right += 1
+            continue
+        if own is not None and _own_momentum_matches(problem, own, ans, k, points):
+            if _own_is_same_gauge(problem, own):
+                right += 1
+                feedback.append(
+                    f"p_{j.name} is the momentum of your Lagrangian, which differs "
+                    "from T − V by a total derivative; that is right for your L."
+                )
+                continue
+            feedback.append(
+                f"p_{j.name} follows correctly from your own Lagrangian, which is "
+                "not the right one."
+            )
+            any_wrong = True
+            continue
+        any_wrong, follows_all = True, False
+        witness = witness or witness_point(points, out, ans)
+        mutant = problem.catalogue.match_plain(problem.catalogue.momentum_mutants(k), ans, points)
+        if mutant is not None:
+            feedback.append(as_sentence(mutant.message))
+            mistakes.append(mutant.kind)
+        else:
+            feedback.append(
+                f"p_{j.name} is not ∂L/∂{j.name}_dot{where_text(witness_point(points, out, ans))}."
+            )
+    score = right / len(jets)
+    status = "correct" if right == len(jets) else "incorrect"
+    follows = status != "correct" and any_wrong and follows_all and own is not None
+    return Verdict(
+        "momenta",
+        status,
+        score,
+        tuple(feedback)
+        if status != "correct"
+        else tuple(f for f in feedback if "total derivative" in f),
+        echoes,
+        method_name(*outcomes),
+        witness=witness if status != "correct" else None,
+        follows_from_own_answer=follows,
+        mistakes=tuple(mistakes),
+    )
+
+
+def _own_momentum_matches(problem: Problem, own: sp.Expr, ans: Compiled, k: int, points) -> bool:
+    own_c = Compiled.of(own)
+    velocity = problem.jets[k].dot
+
+    def values(backend):
+        grads = gradient(own_c, [velocity], points.arrays(backend), backend)
+        v = sum(g[:, 0] for g in grads) if grads else 0
+        s = sum(abs(g[:, 0]) for g in grads) if grads else 0
+        return v, s
+
+    try:
+        return values_equal(ans, values, points).equal
+    except (UnsupportedExpression, ValueError):
+        return False
+
+
+def _own_is_same_gauge(problem: Problem, own: sp.Expr) -> bool:
+    """The student's L is T − V plus a constant or a total derivative (factor exactly 1), so its
+    momenta are right for it."""
+    points = problem.points("lagrangian", free_parameters(problem, own))
+    match = lagrangians_match(Compiled.of(own), reference_el(problem, points), problem.jets, points)
+    c = match.factor
+    return match.outcome.equal and c is not None and abs(c - 1) <= 1e-9

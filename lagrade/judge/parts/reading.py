@@ -1,0 +1,118 @@
+"""Reading a part's answer: items of a list answer, each parsed by the project parser in the
+question's vocabulary, labels (`p_x = …`, `L = …`) dropped, and the student's own L for
+follow-through."""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+from typing import Any
+
+import sympy as sp
+
+from lagrade.errors import ParseError, RequestError
+from lagrade.judge.compiled import Compiled
+from lagrade.judge.problem import Problem, parser
+from lagrade.notation.printer import as_typed
+
+
+@dataclass(frozen=True)
+class Read:
+    """One parsed answer item: lhs (a label symbol or an expression), rhs, and the echo."""
+
+    lhs: sp.Expr
+    rhs: sp.Expr | None
+    echo: str
+
+    @property
+    def expr(self) -> sp.Expr:
+        return self.lhs if self.rhs is None else self.lhs - self.rhs
+
+
+def items_of(answer: Any, part: str) -> list[Any]:
+    if isinstance(answer, str | sp.Basic):
+        return [answer]
+    if isinstance(answer, Sequence) and not isinstance(answer, str | bytes):
+        return list(answer)
+    raise RequestError(f"the answer to {part!r} must be a string or a list of strings")
+
+
+def read(problem: Problem, item: Any, labels: Sequence[str] = (), mode: str = "answer") -> Read:
+    """Parse one answer item with the project parser; sympy objects (from Python callers and
+    tests, never from student text) pass through."""
+    if isinstance(item, sp.Equality):
+        return Read(problem.canonical(item.lhs), problem.canonical(item.rhs), as_typed(item))
+    if isinstance(item, sp.Basic):
+        return Read(problem.canonical(sp.S(item)), None, as_typed(item))
+    if not isinstance(item, str):
+        raise RequestError(f"an answer item must be a string, got {type(item).__name__}")
+    p = parser()
+    vocab = problem.vocabulary(labels)
+    parse = {
+        "answer": p.parse_answer,
+        "equation": p.parse_equation,
+        "expression": p.parse_expression,
+    }
+    return read_parsed(problem, parse[mode](item, vocab))
+
+
+def read_parsed(problem: Problem, parsed) -> Read:
+    if problem.parser_symbols_are_mine:
+        return Read(parsed.lhs, parsed.rhs, parsed.plain())
+    rhs = None if parsed.rhs is None else problem.canonical(parsed.rhs)
+    return Read(problem.canonical(parsed.lhs), rhs, parsed.plain())
+
+
+_LABEL = re.compile(r"^\s*([A-Za-z][A-Za-z0-9_]*)\s*=")
+
+
+def read_labelled(problem: Problem, item: Any, extra_labels: Sequence[str] = ()) -> Read:
+    """An expression that may be written `name = expression` (p_x = …, h = …, L = …): the name
+    is dropped. `expression = const` is accepted too."""
+    labels = [n for n in [*extra_labels, "const", "constant"] if n not in problem.by_name]
+    if isinstance(item, str):
+        m = _LABEL.match(item)
+        if m and m.group(1) not in problem.by_name and m.group(1) not in labels:
+            labels.append(m.group(1))
+    got = read(problem, item, labels)
+    if got.rhs is None:
+        return got
+    if isinstance(got.lhs, sp.Symbol):  # a name for the quantity (h = …, even when h is a
+        return Read(got.rhs, None, got.echo)  # parameter: "parameter = expression" says nothing)
+    if isinstance(got.rhs, sp.Symbol) and str(got.rhs) in ("const", "constant"):
+        return Read(got.lhs, None, got.echo)
+    raise not_labelled(item)
+
+
+def not_labelled(item: Any) -> ParseError:
+    text = item if isinstance(item, str) else str(item)
+    return ParseError(
+        "Write this answer as an expression, or as name = expression.", (0, len(text)), text
+    )
+
+
+def read_single(problem: Problem, answer: Any, part: str, label: str) -> Read:
+    items = items_of(answer, part)
+    if len(items) != 1:
+        raise RequestError(f"the answer to {part!r} is a single expression")
+    return read_labelled(problem, items[0], (label,))
+
+
+def own_lagrangian(problem: Problem, given: Mapping | None) -> sp.Expr | None:
+    """The student's own L from `given`, when it parses (follow-through is best effort)."""
+    if not given or "lagrangian" not in given:
+        return None
+    try:
+        expr = read_labelled(problem, given["lagrangian"], ("L",)).expr
+    except (ParseError, RequestError):
+        return None
+    return None if has_acceleration(problem, expr) else expr
+
+
+NONE_WORDS = {"none", "no", "-", "", "∅", "nothing"}
+
+
+def has_acceleration(problem: Problem, expr: sp.Expr | Compiled) -> bool:
+    symbols = expr.symbols if isinstance(expr, Compiled) else expr.free_symbols
+    return any(j.ddot in symbols for j in problem.jets)

@@ -1,0 +1,149 @@
+"""The `transformation` part: Cartesian coordinates of the bodies in the generalized coordinates,
+right when they satisfy the constraints identically and have full rank."""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from typing import Any
+
+import numpy as np
+import sympy as sp
+
+from lagrade.errors import ParseError, RequestError
+from lagrade.judge.compiled import Compiled
+from lagrade.judge.decision import decide
+from lagrade.judge.derivatives import gradient
+from lagrade.judge.evaluate import FLOAT
+from lagrade.judge.parts.common import (
+    free_parameters,
+    method_name,
+    where_text,
+    witness_point,
+)
+from lagrade.judge.parts.reading import items_of, read
+from lagrade.judge.problem import Problem
+from lagrade.judge.rows import row_rank
+from lagrade.judge.sampling import Points
+from lagrade.judge.verdict import Verdict, invalid
+from lagrade.notation.printer import as_typed
+
+
+def check_transformation(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
+    v = problem.variant
+    if v is None:
+        raise RequestError("transformation equations can be checked only for bank scenes")
+    required = list(v.transformation)
+    optional = [f"z_{b.name}" for b in v.bodies if b.planar and f"z_{b.name}" not in required]
+    labels = required + optional
+    given_pos: dict[str, sp.Expr] = {}
+    echoes = []
+    for item in items_of(answer, "transformation"):
+        got = read(problem, item, labels, "answer")
+        echoes.append(got.echo)
+        if got.rhs is None or not (isinstance(got.lhs, sp.Symbol) and str(got.lhs) in labels):
+            text = item if isinstance(item, str) else str(item)
+            raise ParseError(
+                f"Write each line as a Cartesian coordinate = expression, with one of: "
+                f"{', '.join(labels)}.",
+                (0, len(text)),
+                text,
+            )
+        name = str(got.lhs)
+        if name in given_pos:
+            return invalid("transformation", f"{name} is given twice.", echoes)
+        given_pos[name] = got.rhs
+    missing = [n for n in required if n not in given_pos]
+    if missing:
+        return Verdict(
+            "transformation",
+            "incorrect",
+            0.0,
+            (f"Give every Cartesian coordinate; missing: {', '.join(missing)}.",),
+            echoes,
+            "exact",
+            mistakes=("missing_coordinate",),
+        )
+    for name, expr in given_pos.items():
+        if any(expr.has(j.dot) or expr.has(j.ddot) for j in problem.jets):
+            return Verdict(
+                "transformation",
+                "incorrect",
+                0.0,
+                (f"{name} must depend on the coordinates (and t), not on velocities.",),
+                echoes,
+                "exact",
+            )
+    cart = {}
+    for b in v.bodies:
+        for axis, sym in vars(getattr(v.cartesian, b.name)).items():
+            cart[sym] = given_pos.get(f"{axis}_{b.name}", sp.S.Zero)
+    compiled_pos = {s: Compiled.of(e) for s, e in cart.items()}
+    points = problem.points("transformation", free_parameters(problem, *given_pos.values()))
+    failures, outcomes = [], []
+    for label, f in v.constraints:
+        if f == 0:
+            continue
+        fc = Compiled.of(f)
+
+        def residual(backend, fc=fc):
+            env = dict(points.arrays(backend))
+            n = points.n
+            for s, c in compiled_pos.items():
+                val = c.values(env, backend)[0]
+                env[s] = (
+                    np.full(n, val, dtype=float if backend is FLOAT else object)
+                    if np.ndim(val) == 0
+                    else val
+                )
+            value, size = fc.values(env, backend)
+            return (
+                np.broadcast_to(value, (n,)) if np.ndim(value) == 0 else value,
+                np.broadcast_to(size, (n,)) if np.ndim(size) == 0 else size,
+            )
+
+        out = decide(residual)
+        outcomes.append(out)
+        if not out.equal:
+            shown = (
+                "z = 0 (motion in the x-y plane)" if label != "declared" else f"{as_typed(f)} = 0"
+            )
+            failures.append((shown, witness_point(points, out, *given_pos.values())))
+    rank = _transformation_rank(problem, list(given_pos.values()), points)
+    n = len(problem.jets)
+    feedback, mistakes = [], []
+    for shown, w in failures:
+        feedback.append(f"Your positions violate the constraint {shown}{where_text(w)}.")
+        mistakes.append("violates_constraint")
+    if rank < n:
+        feedback.append(
+            f"Your positions depend on only {rank} independent combination(s) of the "
+            f"{n} coordinates; the map must have full rank."
+        )
+        mistakes.append("rank_deficient")
+    if not feedback:
+        return Verdict("transformation", "correct", 1.0, (), echoes, method_name(*outcomes))
+    total = max(1, len(outcomes))
+    score = 0.0 if rank < n else 0.5 * (total - len(failures)) / total
+    return Verdict(
+        "transformation",
+        "incorrect",
+        score,
+        tuple(feedback),
+        echoes,
+        method_name(*outcomes),
+        witness=failures[0][1] if failures else None,
+        mistakes=tuple(mistakes),
+    )
+
+
+def _transformation_rank(problem: Problem, exprs: list[sp.Expr], points: Points) -> int:
+    coords = [j.q for j in problem.jets]
+    with np.errstate(all="ignore"):
+        rows = []
+        for e in exprs:
+            grads = gradient(Compiled.of(e), coords, points.env)
+            rows.append(sum(grads) if grads else np.zeros((points.n, len(coords))))
+        J = np.stack([np.broadcast_to(r, (points.n, len(coords))) for r in rows], axis=1)
+    if not np.all(np.isfinite(J)):
+        return 0
+    return row_rank(np.transpose(J, (0, 2, 1)), list(range(len(coords))))

@@ -1,0 +1,50 @@
+"""The judgement of one answer part, the one result type every checker returns."""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from typing import Any
+
+STATUSES = ("correct", "incorrect", "invalid", "timeout", "error")  # error: a bug of ours
+
+
+@dataclass(frozen=True)
+class Verdict:
+    """The judgement of one answer part: status (correct | incorrect | invalid | timeout), score
+    in [0, 1], feedback sentences, the parser's echo of what was read, the method that decided,
+    the time it took, and when wrong a point where the answer and the reference differ."""
+
+    part: str
+    status: str
+    score: float
+    feedback: tuple[str, ...] = ()
+    interpreted: str | list[str] = ""
+    method: str = ""
+    ms: float = 0.0
+    witness: Mapping[str, float] | None = None
+    follows_from_own_answer: bool = False
+    mistakes: tuple[str, ...] = field(default=())
+
+    def __post_init__(self) -> None:
+        assert self.status in STATUSES, self.status
+        assert 0.0 <= self.score <= 1.0, self.score
+
+    def to_dict(self) -> dict[str, Any]:
+        """The JSON form of a result (without the request id), in the documented key order."""
+        return {
+            "verdict": self.status,
+            "score": self.score,
+            "feedback": list(self.feedback),
+            "interpreted": self.interpreted,
+            "method": self.method,
+            "ms": round(self.ms, 3),
+            "part": self.part,
+            "witness": dict(self.witness) if self.witness else None,
+            "follows_from_own_answer": self.follows_from_own_answer,
+            "mistakes": list(self.mistakes),
+        }
+
+
+def invalid(part: str, message: str, interpreted: str | list[str] = "") -> Verdict:
+    return Verdict(part, "invalid", 0.0, (message,), interpreted, "parse")

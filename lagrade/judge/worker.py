@@ -1,0 +1,271 @@
+"""Untrusted work in killable processes, under one time-limit rule, for `check --batch`, the
+`check()` API and `grade` alike.
+
+The rule. A part gets its time limit once its question is prepared (preparing, the instructor's
+side, has its own budget). The limit is enforced twice: inside the worker an alarm interrupts
+Python-level work (`time_limit`: the part's verdict is `timeout` and the worker keeps its caches),
+and the parent kills a worker that has not answered `GRACE` seconds after that (SIGKILL stops
+sympy or numpy stuck in C code); the item in hand then gets `timeout`, a fresh worker takes the
+rest. A worker moves the parent's deadline for the item in hand with `deadline(seconds)`.
+
+Workers are forked and persistent: what the parent derived before the pool started is shared,
+what a worker derives stays for its next items, and a worker is replaced after `Limits.recycle`
+items so that the memory of a long run stays bounded. A memory limit backs up the wall clock.
+"""
+
+from __future__ import annotations
+
+import multiprocessing as mp
+import os
+import resource
+import signal
+import time
+import traceback
+from collections import deque
+from collections.abc import Callable, Iterable, Iterator
+from contextlib import contextmanager
+from dataclasses import dataclass
+from multiprocessing.connection import Connection, wait
+from typing import Any
+
+from lagrade.errors import LagradeError
+
+_FORK = mp.get_context("fork")
+
+#: Seconds past a part's time limit before the parent kills the worker (the alarm comes first).
+GRACE = 2.0
+
+
+class PartTimeout(BaseException):
+    """A part's time limit ran out (raised by the alarm inside the process doing the work). A
+    BaseException, like KeyboardInterrupt, so that no `except Exception` on the way swallows it."""
+
+
+@contextmanager
+def time_limit(seconds: float | None):
+    """Interrupt Python-level work after `seconds` with PartTimeout (None: no limit). The
+    parent's kill at the deadline backs this up for C code that never returns to Python."""
+    if seconds is None:
+        yield
+        return
+
+    def ring(signum, frame):
+        raise PartTimeout
+
+    previous = signal.signal(signal.SIGALRM, ring)
+    signal.setitimer(signal.ITIMER_REAL, seconds)
+    try:
+        yield
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, previous)
+
+
+_parent: Connection | None = None  # set inside a worker: where deadline() reports to
+
+
+def deadline(seconds: float) -> None:
+    """Inside a worker: the item in hand must finish within `seconds` from now, else the parent
+    kills the worker. Outside a worker (work run in-process) it does nothing."""
+    if _parent is not None:
+        _parent.send(("deadline", float(seconds)))
+
+
+@dataclass(frozen=True)
+class Limits:
+    """Per-item deadline (seconds from when a worker starts the item, until the item moves it),
+    extra memory in MiB over what the parent used when it forked, and the number of items after
+    which a worker is replaced."""
+
+    seconds: float = 30.0
+    memory_mib: int = 2048
+    recycle: int = 1000
+
+
+@dataclass(frozen=True)
+class Outcome:
+    """What became of one item: `ok` with its value; `refused` with the LagradeError the work
+    raised (a user's error, to be reported as such); `timeout` or `error` (a bug of ours, or a
+    worker that died) with a reason."""
+
+    key: Any
+    status: str  # "ok" | "refused" | "timeout" | "error"
+    value: Any = None
+    reason: str = ""
+    seconds: float = 0.0
+
+
+def _address_space_in_use() -> int:
+    """Virtual memory of this process in bytes (Linux), so a memory limit adds to it."""
+    try:
+        with open("/proc/self/statm") as f:
+            return int(f.read().split()[0]) * os.sysconf("SC_PAGE_SIZE")
+    except OSError:
+        return 0
+
+
+def _serve(conn: Connection, work: Callable[[Any], Any], limits: Limits) -> None:
+    """The worker loop: an item in, ("done", status, value) out, until None or EOF."""
+    global _parent
+    _parent = conn
+    signal.signal(signal.SIGINT, signal.SIG_IGN)  # the parent handles Ctrl-C and kills us
+    try:
+        ceiling = _address_space_in_use() + limits.memory_mib * 1024 * 1024
+        resource.setrlimit(resource.RLIMIT_AS, (ceiling, ceiling))
+    except (ValueError, OSError):
+        pass  # a platform without the limit still has the wall-clock kill
+    while True:
+        try:
+            item = conn.recv()
+        except (EOFError, OSError):
+            return
+        if item is None:
+            return
+        try:
+            reply: tuple[str, Any] = ("ok", work(item))
+        except LagradeError as error:
+            reply = ("refused", error)
+        except MemoryError:
+            reply = ("error", "ran out of memory (limit exceeded)")
+        except BaseException as error:  # noqa: BLE001 - the worker reports everything
+            reply = ("error", f"{type(error).__name__}: {error}\n{traceback.format_exc(limit=8)}")
+        try:
+            conn.send(("done", *reply))
+        except Exception as error:  # noqa: BLE001 - an unpicklable result is still an answer
+            conn.send(("done", "error", f"result could not be sent back: {error}"))
+
+
+@dataclass
+class _Worker:
+    process: Any
+    conn: Connection
+    served: int = 0
+    key: Any = None
+    since: float = 0.0
+    until: float = 0.0
+
+
+class Pool:
+    """`jobs` persistent forked workers running `work(item)`; `run` yields one Outcome per item.
+    `work` and everything the parent holds when a worker is forked are inherited, not pickled;
+    items and results cross a pipe."""
+
+    def __init__(
+        self, work: Callable[[Any], Any], *, jobs: int = 1, limits: Limits | None = None
+    ) -> None:
+        self.work = work
+        self.jobs = max(1, int(jobs))
+        self.limits = limits or Limits()
+        self._idle: list[_Worker] = []
+        self.restarts = 0
+
+    def _fork(self) -> _Worker:
+        parent, child = _FORK.Pipe()
+        process = _FORK.Process(target=_serve, args=(child, self.work, self.limits), daemon=True)
+        process.start()
+        child.close()
+        return _Worker(process, parent)
+
+    def _retire(self, worker: _Worker, kill: bool = False) -> None:
+        if not kill and worker.process.is_alive():
+            try:
+                worker.conn.send(None)
+                worker.process.join(1.0)
+            except OSError:
+                pass
+        if worker.process.is_alive():
+            worker.process.kill()
+        worker.process.join(2.0)
+        worker.conn.close()
+
+    def run(self, items: Iterable[tuple[Any, Any]], *, in_order: bool = False) -> Iterator[Outcome]:
+        """An Outcome for each (key, item): as each finishes, or in input order (`in_order`)."""
+        pending = deque(items)
+        busy: dict[Connection, _Worker] = {}
+        held: dict[int, Outcome] = {}
+        position = 0
+        next_out = 0
+        try:
+            while pending or busy:
+                while pending and len(busy) < self.jobs:
+                    key, item = pending.popleft()
+                    worker = self._idle.pop() if self._idle else self._fork()
+                    try:
+                        worker.conn.send(item)
+                    except OSError:  # it died while idle: a fresh one takes the item
+                        self._retire(worker, kill=True)
+                        worker = self._fork()
+                        worker.conn.send(item)
+                    now = time.monotonic()
+                    worker.key, worker.since, worker.until = (key, position), now, now
+                    worker.until += self.limits.seconds
+                    busy[worker.conn] = worker
+                    position += 1
+                soonest = min(w.until for w in busy.values())
+                for conn in wait(list(busy), timeout=max(0.0, soonest - time.monotonic())):
+                    worker = busy[conn]
+                    done = self._receive(worker)
+                    if done is None:
+                        continue
+                    del busy[conn]
+                    held[worker.key[1]] = done
+                for conn, worker in list(busy.items()):
+                    if time.monotonic() >= worker.until:
+                        del busy[conn]
+                        self._retire(worker, kill=True)
+                        self.restarts += 1
+                        held[worker.key[1]] = Outcome(
+                            worker.key[0],
+                            "timeout",
+                            reason="took longer than its time limit and was stopped",
+                            seconds=time.monotonic() - worker.since,
+                        )
+                if in_order:
+                    while next_out in held:
+                        yield held.pop(next_out)
+                        next_out += 1
+                else:
+                    for k in sorted(held):
+                        yield held.pop(k)
+        finally:
+            for worker in busy.values():
+                self._retire(worker, kill=True)
+
+    def _receive(self, worker: _Worker) -> Outcome | None:
+        """The worker's message: None after a deadline change, else the item's Outcome (the
+        worker goes back to the idle list, or is retired once it has served `recycle` items)."""
+        key = worker.key[0]
+        try:
+            message = worker.conn.recv()
+        except (EOFError, OSError):
+            self._retire(worker, kill=True)
+            self.restarts += 1
+            code = worker.process.exitcode
+            died = "was killed" if code == -signal.SIGKILL else f"died (exit code {code})"
+            elapsed = time.monotonic() - worker.since
+            return Outcome(key, "error", reason=f"the worker process {died}", seconds=elapsed)
+        if message[0] == "deadline":
+            worker.until = time.monotonic() + message[1]
+            return None
+        _, status, value = message
+        elapsed = time.monotonic() - worker.since
+        worker.served += 1
+        if worker.served >= self.limits.recycle:
+            self._retire(worker)
+        else:
+            self._idle.append(worker)
+        if status == "ok":
+            return Outcome(key, "ok", value=value, seconds=elapsed)
+        if status == "refused":
+            return Outcome(key, "refused", value=value, reason=str(value), seconds=elapsed)
+        return Outcome(key, "error", reason=str(value), seconds=elapsed)
+
+    def close(self) -> None:
+        while self._idle:
+            self._retire(self._idle.pop())
+
+    def __enter__(self) -> Pool:
+        return self
+
+    def __exit__(self, *exc) -> None:
+        self.close()
