@@ -50,7 +50,7 @@ def _bank_show(args: argparse.Namespace) -> int:
 
 
 def _parse(args: argparse.Namespace) -> int:
-    from lagrade.notation.preview import preview_command
+    from lagrade.cli.parse import preview_command
 
     status, text = preview_command(
         args.text,

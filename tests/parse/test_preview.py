@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from lagrade.notation.preview import preview_command
+from lagrade.cli.parse import preview_command
 
 
 def test_preview_of_a_good_answer() -> None:
