@@ -26,7 +26,7 @@ from lagrade.grading.batch import BatchSummary, grade, question, student_variant
 from lagrade.judge.key import key_answer
 from lagrade.judge.verify import verify_variant
 from lagrade.mechanics.scene import SceneVariant
-from lagrade.notation.printer import as_typed
+from lagrade.notation.printer import plain
 
 ASSIGNMENT = """\
 # The demo assignment: `lagrade demo` writes it, generates handouts from it and grades against it.
@@ -159,10 +159,10 @@ def _latex(variant: SceneVariant, expr: sp.Expr) -> str:
 
 
 NOTATIONS: dict[str, Callable[[SceneVariant, sp.Expr], str]] = {
-    "plain": lambda v, e: as_typed(e),
+    "plain": lambda v, e: plain(e),
     "python": lambda v, e: sp.sstr(e),
-    "implicit": lambda v, e: _implicit(as_typed(e)),
-    "undotted": lambda v, e: _undotted(as_typed(e)),
+    "implicit": lambda v, e: _implicit(plain(e)),
+    "undotted": lambda v, e: _undotted(plain(e)),
     "latex": _latex,
 }
 

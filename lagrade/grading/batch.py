@@ -22,6 +22,7 @@ from typing import Any
 import lagrade.grading.atomic as atomic
 import lagrade.grading.report as report
 from lagrade.assign.manifest import project_version
+from lagrade.assign.views import MULTILINE
 from lagrade.bank.registry import get_scene
 from lagrade.errors import AssignmentError, LagradeError
 from lagrade.grading.rubric import Rubric, load_rubric
@@ -34,8 +35,6 @@ from lagrade.judge.verdict import Verdict
 from lagrade.judge.worker import GRACE, Limits, Outcome, PartTimeout, Pool, deadline, time_limit
 from lagrade.mechanics.scene import SceneVariant
 
-#: Parts whose answer sheet field holds one item per line.
-MULTILINE = frozenset({"transformation", "eom", "momenta", "conserved"})
 #: Parts that can follow from the student's own Lagrangian.
 FOLLOW_L = frozenset({"eom", "momenta", "cyclic", "conserved"})
 STATUSES = ("graded", "missing", "invalid", "timeout", "error")

@@ -4,7 +4,7 @@ checks the grader accepts before it writes a handout, and what the demo's model 
 from __future__ import annotations
 
 from lagrade.mechanics.scene import SceneVariant
-from lagrade.notation.printer import as_typed
+from lagrade.notation.printer import plain
 
 
 def key_answer(variant: SceneVariant, part: str, quantity: str | None = None) -> str | list[str]:
@@ -15,26 +15,26 @@ def key_answer(variant: SceneVariant, part: str, quantity: str | None = None) ->
     if part == "coordinates":
         return ", ".join(variant.coordinates)
     if part == "transformation":
-        return [f"{name} = {as_typed(value)}" for name, value in variant.transformation.items()]
+        return [f"{name} = {plain(value)}" for name, value in variant.transformation.items()]
     if part == "T":
-        return as_typed(variant.kinetic_energy)
+        return plain(variant.kinetic_energy)
     if part == "V":
-        return as_typed(variant.potential_energy)
+        return plain(variant.potential_energy)
     if part == "lagrangian":
-        return as_typed(variant.lagrangian)
+        return plain(variant.lagrangian)
     if part == "eom":
-        return [f"{as_typed(e)} = 0" for e in system.euler_lagrange]
+        return [f"{plain(e)} = 0" for e in system.euler_lagrange]
     if part == "momenta":
         return [
-            f"p_{q} = {as_typed(p)}"
+            f"p_{q} = {plain(p)}"
             for q, p in zip(variant.coordinates, system.generalized_momenta, strict=True)
         ]
     if part == "cyclic":
         return ", ".join(system.cyclic_coordinates) or "none"
     if part == "conserved":
-        return [as_typed(q) for q in system.conserved_quantities.values()]
+        return [plain(q) for q in system.conserved_quantities.values()]
     if part == "expression":
         if quantity is None or quantity not in variant.quantities:
             raise KeyError(f"scene {variant.scene.id!r} has no quantity {quantity!r}")
-        return as_typed(variant.quantities[quantity])
+        return plain(variant.quantities[quantity])
     raise KeyError(f"no key for part {part!r}")

@@ -11,7 +11,7 @@ import sympy as sp
 
 from lagrade.mechanics.lagrange import Jet, LagrangianSystem
 from lagrade.mechanics.scene import SceneVariant
-from lagrade.notation.printer import as_typed
+from lagrade.notation.printer import plain
 
 
 @dataclass(frozen=True)
@@ -59,7 +59,7 @@ def term_mutants(expr: sp.Expr, what: str, parameters: Sequence[sp.Symbol]) -> l
     out: list[Mutant] = []
     for k, term in enumerate(terms):
         rest = sp.Add(*(terms[:k] + terms[k + 1 :]))
-        shown = as_typed(term)
+        shown = plain(term)
         out.append(
             Mutant("wrong_sign", f"the term {shown} in {what} has the wrong sign", rest - term)
         )
@@ -108,12 +108,12 @@ def kinetic_mutants(T: sp.Expr, jets: Sequence[Jet], what: str) -> list[Mutant]:
             out.append(
                 Mutant(
                     "dropped_half",
-                    f"the ½ is missing in the kinetic term {as_typed(term)} of {what}",
+                    f"the ½ is missing in the kinetic term {plain(term)} of {what}",
                     rest + 2 * term,
                 )
             )
         if len(vel) >= 2:
-            cross = as_typed(sp.Mul(*vel))
+            cross = plain(sp.Mul(*vel))
             out.append(
                 Mutant("missing_cross_term", f"{what} lacks the cross term in {cross}", rest)
             )
@@ -121,7 +121,7 @@ def kinetic_mutants(T: sp.Expr, jets: Sequence[Jet], what: str) -> list[Mutant]:
             out.append(
                 Mutant(
                     "missing_driven_term",
-                    f"{what} lacks the term {as_typed(term)} from the prescribed motion "
+                    f"{what} lacks the term {plain(term)} from the prescribed motion "
                     "(the centripetal "
                     "or ω² term of the kinetic energy)",
                     rest,
@@ -197,7 +197,7 @@ def momentum_mutants(
 def _momentum_message(m: Mutant, what: str, right: sp.Expr, wrong: sp.Expr) -> str:
     missing = sp.expand(right - wrong)
     if m.kind in ("missing_cross_term", "missing_driven_term") and missing != 0:
-        return f"{what} lacks the term {as_typed(missing)}"
+        return f"{what} lacks the term {plain(missing)}"
     return m.message.replace("your L", what)
 
 

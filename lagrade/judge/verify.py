@@ -11,7 +11,7 @@ from lagrade.judge.key import key_answer
 from lagrade.judge.parts import run_checker
 from lagrade.judge.problem import Problem, build_problem
 from lagrade.mechanics.scene import SceneVariant
-from lagrade.notation.printer import as_typed
+from lagrade.notation.printer import plain
 
 
 def _spec(variant: SceneVariant, quantity: str | None = None) -> dict:
@@ -45,7 +45,7 @@ def verify_variant(variant: SceneVariant, parts: Iterable) -> list[str]:
             )
         if name == "lagrangian":
             for mutant in problem.catalogue.lagrangian_mutants:
-                wrong = run_checker(problem, "lagrangian", as_typed(mutant.expr))
+                wrong = run_checker(problem, "lagrangian", plain(mutant.expr))
                 if wrong.status == "correct" and wrong.score >= 1:
                     problems.append(
                         f"{where}: the grader accepts a known mistake ({mutant.kind}) as correct"

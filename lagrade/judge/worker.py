@@ -157,7 +157,6 @@ class Pool:
         self.jobs = max(1, int(jobs))
         self.limits = limits or Limits()
         self._idle: list[_Worker] = []
-        self.restarts = 0
 
     def _fork(self) -> _Worker:
         parent, child = _FORK.Pipe()
@@ -213,7 +212,6 @@ class Pool:
                     if time.monotonic() >= worker.until:
                         del busy[conn]
                         self._retire(worker, kill=True)
-                        self.restarts += 1
                         held[worker.key[1]] = Outcome(
                             worker.key[0],
                             "timeout",
@@ -239,7 +237,6 @@ class Pool:
             message = worker.conn.recv()
         except (EOFError, OSError):
             self._retire(worker, kill=True)
-            self.restarts += 1
             code = worker.process.exitcode
             died = "was killed" if code == -signal.SIGKILL else f"died (exit code {code})"
             elapsed = time.monotonic() - worker.since

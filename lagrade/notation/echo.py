@@ -20,7 +20,7 @@ _DECIMAL = re.compile(r"\d+\.?\d*(?:[eE][+-]?\d+)?|\.\d+(?:[eE][+-]?\d+)?")
 
 
 def echo(node: Any, text: str) -> str:
-    """The plain echo of one parsed side (a `parse.Node`); `text` is the text it was read from."""
+    """The plain echo of one parsed side (a `nodes.Node`); `text` is the text it was read from."""
     return _render(node, text)[0]
 
 

@@ -160,35 +160,43 @@ def normalise(src: Source) -> Source:
             pieces.append((_FRACTIONS.get(c) or _OPERATORS[c], i, i + 1))
             i += 1
             continue
-        j = i + 1
-        while j < n and unicodedata.combining(text[j]):
-            if _is_hidden(text[j]):
-                src.fail(_hidden_message(text[j], src.locate(j, j)[0]), j, j + 1)
-            j += 1
-        cluster = unicodedata.normalize("NFD", unicodedata.normalize("NFKC", text[i:j]))
-        out = []
-        for ch in cluster:
-            if ch < "\x80" or ch == DOT_MARK or ch == DDOT_MARK:
-                out.append(ch)
-            elif ch in GREEK:
-                before = out[-1][-1:] if out else pieces[-1][0][-1:] if pieces else ""
-                if before.isascii() and before.isalpha():
-                    out.append(" ")
-                out.append(GREEK[ch])
-                after_greek = True
-            elif ch in _OPERATORS:  # reached through NFKC, e.g. fullwidth forms
-                out.append(_OPERATORS[ch])
-            elif unicodedata.category(ch) == "Zs":
-                out.append(" ")
-            else:
-                where = src.locate(i, i)[0] + 1
-                bad = text[i:j]
-                src.fail(
-                    f"Unexpected character '{bad}' (U+{ord(c):04X}) at position {where}.", i, j
-                )
-        pieces.append(("".join(out), i, j))
+        previous = pieces[-1][0][-1:] if pieces else ""
+        out, j, after_greek = _cluster(src, i, previous)
+        pieces.append((out, i, j))
         i = j
     return src.derive(pieces)
+
+
+def _cluster(src: Source, i: int, previous: str) -> tuple[str, int, bool]:
+    """The character at i with its combining marks, in plain notation: (text, end, whether it
+    held a Greek letter). `previous` is the last character written before it."""
+    text, n, c = src.text, len(src.text), src.text[i]
+    j = i + 1
+    while j < n and unicodedata.combining(text[j]):
+        if _is_hidden(text[j]):
+            src.fail(_hidden_message(text[j], src.locate(j, j)[0]), j, j + 1)
+        j += 1
+    cluster = unicodedata.normalize("NFD", unicodedata.normalize("NFKC", text[i:j]))
+    out = []
+    greek = False
+    for ch in cluster:
+        if ch < "\x80" or ch == DOT_MARK or ch == DDOT_MARK:
+            out.append(ch)
+        elif ch in GREEK:
+            before = out[-1][-1:] if out else previous
+            if before.isascii() and before.isalpha():
+                out.append(" ")
+            out.append(GREEK[ch])
+            greek = True
+        elif ch in _OPERATORS:  # reached through NFKC, e.g. fullwidth forms
+            out.append(_OPERATORS[ch])
+        elif unicodedata.category(ch) == "Zs":
+            out.append(" ")
+        else:
+            where = src.locate(i, i)[0] + 1
+            bad = text[i:j]
+            src.fail(f"Unexpected character '{bad}' (U+{ord(c):04X}) at position {where}.", i, j)
+    return "".join(out), j, greek
 
 
 # --- tokens --------------------------------------------------------------------------------------

@@ -1,8 +1,8 @@
-"""Math as handouts show it: LaTeX (with dots over velocities), presentation MathML and the plain
-text a student types, from one sympy expression.
+"""The one place that prints expressions: LaTeX (with dots over velocities), presentation MathML
+and the plain text a student types, for handouts and for showing a student what was read.
 
-Velocities are plain symbols such as `theta_dot` (see `mechanics.jet`); sympy's printers would
-show them as θ with a subscript "dot", so both printers here are told which symbols are jets.
+Velocities are plain symbols such as `theta_dot` (see `lagrade.mechanics.lagrange.jet`); sympy's
+printers would show them as θ with a subscript "dot", so the printers here put the dots back.
 """
 
 from __future__ import annotations
@@ -15,7 +15,6 @@ from markupsafe import Markup
 from sympy.printing.mathml import MathMLPresentationPrinter
 
 from lagrade.mechanics import lagrange as mech
-from lagrade.mechanics.lagrange import DDOT, DOT
 
 _MATHML_NS = "http://www.w3.org/1998/Math/MathML"
 _DOTS = {mech.DOT: ("dot", "\u02d9"), mech.DDOT: ("ddot", "\u00a8")}
@@ -35,13 +34,28 @@ def name_latex(name: str) -> str:
     return sp.latex(sp.Symbol(name))
 
 
+def _subscripted_latex(name: str, accent: str | None = None) -> str:
+    """`x_{M}` for 'x_M', with `\\dot{…}` or `\\ddot{…}` over the head letter when `accent` says
+    so: the dot sits over the letter, not over its subscript."""
+    head, _, sub = name.partition("_")
+    text = name_latex(head)
+    if accent:
+        text = rf"\{accent}{{{text}}}"
+    return text + (f"_{{{name_latex(sub)}}}" if sub else "")
+
+
 def dotted_latex(base: str, suffix: str) -> str:
-    """`\\dot{\\theta}` for ('theta', '_dot'), `\\ddot{x}_{M}` for ('x_M', '_ddot'): the dot sits
-    over the letter, not over its subscript."""
-    head, _, sub = base.partition("_")
-    accent = _DOTS[suffix][0]
-    text = rf"\{accent}{{{name_latex(head)}}}"
-    return text + (f"_{{{sub}}}" if sub else "")
+    """`\\dot{\\theta}` for ('theta', '_dot'), `\\ddot{x}_{M}` for ('x_M', '_ddot')."""
+    return _subscripted_latex(base, _DOTS[suffix][0])
+
+
+def _jet_name_latex(name: str) -> str:
+    """theta_dot → \\dot{\\theta}; x_M_ddot → \\ddot{x}_{M}; x_M → x_{M}: any name ending in
+    _dot or _ddot is dotted, whether or not its base is a coordinate."""
+    for suffix in (mech.DDOT, mech.DOT):
+        if name.endswith(suffix) and len(name) > len(suffix):
+            return dotted_latex(name[: -len(suffix)], suffix)
+    return _subscripted_latex(name)
 
 
 def symbol_names(coordinates: Iterable[str]) -> dict[sp.Symbol, str]:
@@ -94,9 +108,17 @@ def mathml(expr: sp.Basic, coordinates: Iterable[str] = (), display: str = "inli
     return Markup(f'<math xmlns="{_MATHML_NS}" display="{display}">{inner}</math>')
 
 
-def plain(expr: sp.Basic) -> str:
-    """The notation students type: `m*theta_dot^2/2`, `sin(theta)`."""
-    return sp.sstr(expr, order="lex").replace("**", "^")
+def plain(expr: sp.Basic, order: str | None = None) -> str:
+    """The notation students type: `m*theta_dot^2/2`, `sin(theta)`, terms in sympy's usual order
+    (`1 - x`); `order="lex"` sorts them strictly (`-x + 1`), as handouts do."""
+    return sp.sstr(expr, order=order).replace("**", "^")
+
+
+def answer_latex(expr: sp.Basic) -> str:
+    """A parsed answer in LaTeX, as a student's check: every velocity and acceleration dotted,
+    and products shown with \\cdot so that an implicit multiplication is visible."""
+    names = {s: _jet_name_latex(s.name) for s in expr.free_symbols if isinstance(s, sp.Symbol)}
+    return sp.latex(expr, symbol_names=names, mul_symbol="dot")
 
 
 @dataclass(frozen=True)
@@ -116,42 +138,13 @@ def render(expr: sp.Basic, coordinates: Iterable[str] = ()) -> Math:
     """All notations of `expr` at once (inline and display MathML)."""
     coords = tuple(coordinates)
     return Math(
-        latex(expr, coords), mathml(expr, coords), mathml(expr, coords, "block"), plain(expr)
+        latex(expr, coords),
+        mathml(expr, coords),
+        mathml(expr, coords, "block"),
+        plain(expr, order="lex"),
     )
 
 
 def equation(lhs: sp.Basic, rhs: sp.Basic, coordinates: Iterable[str] = ()) -> Math:
     """`lhs = rhs` in every notation (unevaluated, so `E = 0` stays an equation)."""
     return render(sp.Eq(lhs, rhs, evaluate=False), coordinates)
-
-
-# --- answers as the preview shows them -----------------------------------------------------------
-
-
-def as_typed(expr: sp.Expr) -> str:
-    """An expression as a student would type it, in sympy's default term order (what feedback,
-    key answers and the parser's plain reading print; `plain` orders terms for handouts), with
-    ^ for powers and explicit *: 'R^2*m*theta_ddot - R*g*m*sin(theta)'."""
-    return sp.sstr(expr).replace("**", "^")
-
-
-def _latex_name(name: str) -> str:
-    """theta_dot → \\dot{\\theta}; x_M_ddot → \\ddot{x}_{M}; x_M → x_{M}."""
-    accent = None
-    for suffix, command in ((DDOT, "ddot"), (DOT, "dot")):
-        if name.endswith(suffix) and len(name) > len(suffix):
-            name, accent = name[: -len(suffix)], command
-            break
-    head, _, subscript = name.partition("_")
-    body = sp.latex(sp.Symbol(head))
-    if accent:
-        body = f"\\{accent}{{{body}}}"
-    if subscript:
-        body += "_{" + sp.latex(sp.Symbol(subscript)) + "}"
-    return body
-
-
-def render_latex(expr: sp.Expr) -> str:
-    """LaTeX with \\dot/\\ddot over velocities and accelerations and \\cdot for products."""
-    names = {s: _latex_name(s.name) for s in expr.free_symbols if isinstance(s, sp.Symbol)}
-    return sp.latex(expr, symbol_names=names, mul_symbol="dot")

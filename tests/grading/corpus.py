@@ -21,7 +21,7 @@ import sympy as sp
 
 from lagrade.bank.registry import get_scene, scene_ids
 from lagrade.mechanics import lagrange as mech
-from lagrade.notation.printer import as_typed
+from lagrade.notation.printer import plain
 
 DIGITS = 50
 POINTS = 5
@@ -287,14 +287,14 @@ def _scene_items(sid: str, seed, per_part: int) -> list[Item]:
     mutations = _thin(single_term_mutations(L, jets), per_part, rnd.randrange(10**6))
     for kind, expr in rewrites + mutations:
         label = lagrangian_label(expr, L, jets, pts)
-        out.append(Item(spec, "lagrangian", as_typed(expr), label, kind, (expr, L)))
+        out.append(Item(spec, "lagrangian", plain(expr), label, kind, (expr, L)))
 
     # Momenta: each p_j on its own.
     momenta = system.generalized_momenta
     for k, p in enumerate(momenta):
 
         def answer(e, k=k):
-            return [as_typed(e if i == k else momenta[i]) for i in range(len(jets))]
+            return [plain(e if i == k else momenta[i]) for i in range(len(jets))]
 
         cases = [("factored", sp.factor(p))]
         cases += [(kind, e) for kind, e in single_term_mutations(p, jets)]
@@ -340,7 +340,7 @@ def _scene_items(sid: str, seed, per_part: int) -> list[Item]:
         if len(key) > 1:
             cons.append(("sum", [key[0] + key[-1]] + key[1:]))
         for kind, qs in cons:
-            out.append(Item(spec, "conserved", [as_typed(q) for q in qs], "correct", kind))
+            out.append(Item(spec, "conserved", [plain(q) for q in qs], "correct", kind))
         for kind, m in _thin(
             single_term_mutations(key[-1], jets), max(3, per_part // 2), rnd.randrange(10**6)
         ):
@@ -348,7 +348,7 @@ def _scene_items(sid: str, seed, per_part: int) -> list[Item]:
             label = conserved_label(m, system, pts)
             if label == "correct" and _rank(qs, jets, pts[0]) < _rank(key, jets, pts[0]):
                 label = "incorrect"  # conserved, but no longer independent of the others
-            out.append(Item(spec, "conserved", [as_typed(q) for q in qs], label, kind))
+            out.append(Item(spec, "conserved", [plain(q) for q in qs], label, kind))
 
     # Expressions: the scene's quantities, rewritten or mutated.
     for name, expr in v.quantities.items():
@@ -357,7 +357,7 @@ def _scene_items(sid: str, seed, per_part: int) -> list[Item]:
         cases += [(kind, e) for kind, e in _expression_mutations(expr, params)]
         for kind, e in cases:
             label = "correct" if same_values(e, expr, pts) else "incorrect"
-            out.append(Item(qspec, "expression", as_typed(e), label, kind, (e, expr)))
+            out.append(Item(qspec, "expression", plain(e), label, kind, (e, expr)))
     return out
 
 
@@ -373,8 +373,8 @@ def _expression_mutations(expr: sp.Expr, params) -> list[tuple[str, sp.Expr]]:
 
 def _eq_text(row) -> str:
     if isinstance(row, sp.Equality):
-        return f"{as_typed(row.lhs)} = {as_typed(row.rhs)}"
-    return f"{as_typed(row)} = 0"
+        return f"{plain(row.lhs)} = {plain(row.rhs)}"
+    return f"{plain(row)} = 0"
 
 
 def expected_status(item: Item) -> str:

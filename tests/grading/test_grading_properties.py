@@ -11,7 +11,7 @@ from hypothesis import strategies as st
 
 from lagrade.bank.registry import get_scene
 from lagrade.mechanics import lagrange as mech
-from lagrade.notation.printer import as_typed
+from lagrade.notation.printer import plain
 
 from .conftest import judge
 from .corpus import _points, corpus, expected_status, lagrangian_label, single_term_mutations
@@ -55,8 +55,8 @@ def rewrites(draw):
 @given(rewrites())
 def test_equivalent_lagrangians_are_accepted(case):
     sid, expr = case
-    v = judge({"scene": sid}, "lagrangian", as_typed(expr))
-    assert v.status == "correct", (sid, as_typed(expr), v.feedback)
+    v = judge({"scene": sid}, "lagrangian", plain(expr))
+    assert v.status == "correct", (sid, plain(expr), v.feedback)
 
 
 @st.composite
@@ -75,11 +75,11 @@ def test_mutations_that_change_the_dynamics_are_rejected(case):
     sid, kind, expr = case
     v = _variant(sid)
     label = lagrangian_label(expr, v.lagrangian, v.jets, _points(v, 11))
-    verdict = judge({"scene": sid}, "lagrangian", as_typed(expr))
+    verdict = judge({"scene": sid}, "lagrangian", plain(expr))
     assert verdict.status == expected_status_of(label), (
         sid,
         kind,
-        as_typed(expr),
+        plain(expr),
         verdict.feedback,
     )
 
@@ -98,7 +98,7 @@ def test_equations_of_motion_row_operations_are_accepted(sid, shift, factor):
     rows = [sp.expand(factor * E[k] + (E[(k + 1) % len(E)] if len(E) > 1 else 0))] + [
         e for i, e in enumerate(E) if i != k
     ]
-    verdict = judge({"scene": sid}, "eom", [f"{as_typed(r)} = 0" for r in rows])
+    verdict = judge({"scene": sid}, "eom", [f"{plain(r)} = 0" for r in rows])
     assert verdict.status == "correct", verdict.feedback
 
 

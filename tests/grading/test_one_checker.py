@@ -9,8 +9,9 @@ from __future__ import annotations
 import pytest
 import sympy as sp
 
+from lagrade.assign.views import MULTILINE
 from lagrade.bank import get_scene
-from lagrade.grading.batch import MULTILINE, grade_part
+from lagrade.grading.batch import grade_part
 from lagrade.grading.rubric import Rubric
 from lagrade.judge.check import check
 from lagrade.judge.key import key_answer

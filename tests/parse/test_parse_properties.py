@@ -11,7 +11,8 @@ from hypothesis import strategies as st
 
 from lagrade.errors import ParseError
 from lagrade.mechanics.lagrange import jet, t
-from lagrade.notation.parse import MAX_LENGTH, Vocabulary, parse_answer, parse_expression
+from lagrade.notation.limits import MAX_LENGTH
+from lagrade.notation.parse import Vocabulary, parse_answer, parse_expression
 
 VOCAB = Vocabulary.from_names(["theta", "x_M"], ["m", "g", "R", "omega"], ["L"])
 TH, XM = jet("theta"), jet("x_M")

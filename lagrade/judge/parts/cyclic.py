@@ -12,7 +12,7 @@ from lagrade.errors import ParseError
 from lagrade.judge.parts.reading import NONE_WORDS, items_of, own_lagrangian, read
 from lagrade.judge.problem import Problem
 from lagrade.judge.verdict import Verdict
-from lagrade.notation.printer import as_typed
+from lagrade.notation.printer import plain
 
 
 def check_cyclic(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
@@ -64,7 +64,7 @@ def check_cyclic(problem: Problem, answer: Any, given: Mapping | None) -> Verdic
                 mistakes.append("velocity_missing_not_cyclic")
             else:
                 term = next((x for x in sp.Add.make_args(L) if x.has(j.q)), None)
-                example = f" (for example in the term {as_typed(term)})" if term is not None else ""
+                example = f" (for example in the term {plain(term)})" if term is not None else ""
                 feedback.append(f"{j.name} is not cyclic: L depends on {j.name}{example}.")
                 mistakes.append("not_cyclic")
         else:

@@ -14,7 +14,7 @@ import sympy as sp
 from lagrade.errors import ParseError, RequestError
 from lagrade.judge.compiled import Compiled
 from lagrade.judge.problem import Problem, parser
-from lagrade.notation.printer import as_typed
+from lagrade.notation.printer import plain
 
 
 @dataclass(frozen=True)
@@ -42,9 +42,9 @@ def read(problem: Problem, item: Any, labels: Sequence[str] = (), mode: str = "a
     """Parse one answer item with the project parser; sympy objects (from Python callers and
     tests, never from student text) pass through."""
     if isinstance(item, sp.Equality):
-        return Read(problem.canonical(item.lhs), problem.canonical(item.rhs), as_typed(item))
+        return Read(problem.canonical(item.lhs), problem.canonical(item.rhs), plain(item))
     if isinstance(item, sp.Basic):
-        return Read(problem.canonical(sp.S(item)), None, as_typed(item))
+        return Read(problem.canonical(sp.S(item)), None, plain(item))
     if not isinstance(item, str):
         raise RequestError(f"an answer item must be a string, got {type(item).__name__}")
     p = parser()

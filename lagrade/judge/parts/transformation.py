@@ -25,7 +25,7 @@ from lagrade.judge.problem import Problem
 from lagrade.judge.rows import row_rank
 from lagrade.judge.sampling import Points
 from lagrade.judge.verdict import Verdict, invalid
-from lagrade.notation.printer import as_typed
+from lagrade.notation.printer import plain
 
 
 def check_transformation(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
@@ -104,9 +104,7 @@ def check_transformation(problem: Problem, answer: Any, given: Mapping | None) -
         out = decide(residual)
         outcomes.append(out)
         if not out.equal:
-            shown = (
-                "z = 0 (motion in the x-y plane)" if label != "declared" else f"{as_typed(f)} = 0"
-            )
+            shown = "z = 0 (motion in the x-y plane)" if label != "declared" else f"{plain(f)} = 0"
             failures.append((shown, witness_point(points, out, *given_pos.values())))
     rank = _transformation_rank(problem, list(given_pos.values()), points)
     n = len(problem.jets)

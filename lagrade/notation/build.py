@@ -1,0 +1,110 @@
+"""Tree → sympy, through one whitelist: `SYMPY_CONSTRUCTORS` maps the tree's node kinds and the
+function names a student may write to sympy constructors, and nothing else in the parser builds
+sympy objects."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+import sympy as sp
+
+from lagrade.notation.lexer import Source
+from lagrade.notation.limits import MAX_EXPONENT, MAX_NUMBER_BITS
+from lagrade.notation.nodes import Node
+
+#: The only door from the parser to sympy: tree node kinds and function names → constructors.
+SYMPY_CONSTRUCTORS: dict[str, Callable[..., sp.Expr]] = {
+    "add": sp.Add,
+    "mul": sp.Mul,
+    "pow": sp.Pow,
+    "integer": sp.Integer,
+    "rational": sp.Rational,
+    "pi": lambda: sp.pi,
+    "sin": sp.sin,
+    "cos": sp.cos,
+    "tan": sp.tan,
+    "sec": sp.sec,
+    "csc": sp.csc,
+    "cot": sp.cot,
+    "sinh": sp.sinh,
+    "cosh": sp.cosh,
+    "tanh": sp.tanh,
+    "asin": sp.asin,
+    "acos": sp.acos,
+    "atan": sp.atan,
+    "arcsin": sp.asin,
+    "arccos": sp.acos,
+    "arctan": sp.atan,
+    "exp": sp.exp,
+    "ln": sp.log,
+    "log": sp.log,  # the natural logarithm, as in physics texts (a warning says so)
+    "sqrt": sp.sqrt,
+    "abs": sp.Abs,
+}
+FUNCTIONS = frozenset(SYMPY_CONSTRUCTORS) - {"add", "mul", "pow", "integer", "rational", "pi"}
+
+NOT_FINITE = "The answer is not a finite real expression."
+_BAD_VALUES = (sp.zoo, sp.nan, sp.oo, -sp.oo, sp.I)
+
+
+def build(node: Node, src: Source) -> sp.Expr:
+    """The sympy expression of a tree; a power too large to compute fails at its node."""
+    kind = node.kind
+    make = SYMPY_CONSTRUCTORS
+    if kind == "sym":
+        return node.value  # type: ignore[return-value]
+    if kind == "num":
+        p, q = node.value  # type: ignore[misc]
+        return make["integer"](p) if q == 1 else make["rational"](p, q)
+    if kind == "add":
+        return make["add"](*[build(term, src) for term in node.value])  # type: ignore[union-attr]
+    if kind == "mul":
+        return make["mul"](*[_factor(f, src) for f in node.value])  # type: ignore[union-attr]
+    if kind == "neg":
+        inner = node.value
+        if inner.kind == "mul":  # type: ignore[union-attr]
+            return make["mul"](sp.S.NegativeOne, *[_factor(f, src) for f in inner.value])  # type: ignore[union-attr]
+        return make["mul"](sp.S.NegativeOne, build(inner, src))  # type: ignore[arg-type]
+    if kind == "pow":
+        return _power(build(node.value, src), build(node.extra, src), node, src)  # type: ignore[arg-type]
+    if kind == "call":
+        argument, power = node.extra  # type: ignore[misc]
+        result = make[node.value](build(argument, src))  # type: ignore[index]
+        return result if power is None else make["pow"](result, make["integer"](power))
+    if kind == "pi":
+        return make["pi"]()
+    raise AssertionError(f"unknown node kind {kind!r}")
+
+
+def _factor(node: Node, src: Source) -> sp.Expr:
+    if node.kind == "inv":
+        return _power(build(node.value, src), sp.S.NegativeOne, node, src)  # type: ignore[arg-type]
+    return build(node, src)
+
+
+def _power(base: sp.Expr, exponent: sp.Expr, node: Node, src: Source) -> sp.Expr:
+    """base^exponent, refusing numbers too large to compute and roots of negative numbers."""
+    if exponent.is_Rational:
+        if abs(exponent) > MAX_EXPONENT:
+            src.fail(
+                f"Exponent too large: at most {MAX_EXPONENT} in absolute value.",
+                node.start,
+                node.end,
+            )
+        if base.is_Rational:
+            if exponent.is_Integer:
+                bits = max(abs(base.p).bit_length(), base.q.bit_length()) * abs(int(exponent))
+                if bits > MAX_NUMBER_BITS:
+                    src.fail(
+                        "This power gives a number too large to work with.", node.start, node.end
+                    )
+            elif base.is_negative:
+                src.fail(NOT_FINITE, node.start, node.end)
+    return SYMPY_CONSTRUCTORS["pow"](base, exponent)
+
+
+def check_finite(side: sp.Expr, node: Node | None, src: Source) -> None:
+    """Refuse a side that evaluated to infinity, NaN or an imaginary number (1/0, ln(0))."""
+    if side.has(*_BAD_VALUES):
+        start, end = (node.start, node.end) if node is not None else (0, len(src.text))
+        src.fail(NOT_FINITE, start, end)

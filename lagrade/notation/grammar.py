@@ -1,0 +1,358 @@
+"""The grammar of an answer, one method per rule (notation.md):
+
+    answer  := sum [ '=' sum ]
+    sum     := ['+'|'-'] term (('+'|'-') term)*
+    term    := unary ( ('*'|'/') unary | <juxtaposition> power )*
+    unary   := '-' unary | power
+    power   := atom [ ('^'|'**') unary ]            -- right-associative: 2^3^2 = 2^9
+    atom    := number | '(' sum ')' | call | diff | name
+
+The rules build a `nodes.Node` tree and never touch sympy; names are read by `names.NameRules`.
+"""
+
+from __future__ import annotations
+
+from typing import NoReturn
+
+from lagrade.notation.lexer import Token, read_number
+from lagrade.notation.limits import MAX_EXPONENT
+from lagrade.notation.names import NameRules
+from lagrade.notation.nodes import Node
+
+_TERM_END = frozenset(("+", "-", ")", "=", ",", ";"))
+_TRIG = frozenset(("sin", "cos", "tan", "sec", "csc", "cot", "sinh", "cosh", "tanh"))
+
+
+class Parser(NameRules):
+    """Recursive descent over the tokens of one answer; one method per grammar rule."""
+
+    def parse_answer(self, mode: str) -> tuple[Node, Node | None]:
+        """answer := sum ['=' sum]; mode 'expression' forbids the '='."""
+        self.check_leibniz()
+        if self.peek().kind == "end":
+            self.fail("The answer is empty.", 0, len(self.text))
+        lhs = self.parse_sum()
+        rhs = None
+        tok = self.peek()
+        if tok.text == "=":
+            if mode == "expression":
+                self.fail(
+                    "Expected an expression, not an equation; "
+                    "write only the expression, without '='.",
+                    tok.start,
+                    tok.end,
+                )
+            self.next()
+            if self.peek().kind == "end":
+                self.fail(
+                    "The answer ends with '='; write what it equals (0 if nothing).",
+                    tok.start,
+                    tok.end,
+                )
+            rhs = self.parse_sum()
+            tok = self.peek()
+            if tok.text == "=":
+                self.fail("Use a single '=' for an equation.", tok.start, tok.end)
+        if tok.kind != "end":
+            self.unexpected(tok)
+        return lhs, rhs
+
+    def parse_sum(self) -> Node:
+        """sum := ['+'|'-'] term (('+'|'-') term)*"""
+        first = self.peek()
+        terms = []
+        negative = False
+        if first.text in ("+", "-"):
+            self.next()
+            self.operand_after(first)
+            negative = first.text == "-"
+        term = self.parse_term()
+        terms.append(self.node("neg", first.start, term.end, term) if negative else term)
+        while self.peek().text in ("+", "-"):
+            op = self.next()
+            self.operand_after(op)
+            term = self.parse_term()
+            terms.append(self.node("neg", op.start, term.end, term) if op.text == "-" else term)
+        if len(terms) == 1:
+            return terms[0]
+        return self.node("add", terms[0].start, terms[-1].end, terms)
+
+    def parse_term(self) -> Node:
+        """term := unary ( ('*'|'/') unary | <juxtaposition> power )*"""
+        first = self.parse_unary()
+        factors = [first]
+        after_division = False
+        while True:
+            tok = self.peek()
+            if tok.text in ("*", "/"):
+                self.next()
+                self.operand_after(tok)
+                factor = self.parse_unary()
+                if tok.text == "*":
+                    factors.append(factor)
+                    after_division = False
+                else:
+                    factors.append(self.node("inv", factor.start, factor.end, factor))
+                    after_division = True
+            elif tok.kind in ("num", "name") or tok.text == "(":
+                if tok.kind == "num" and self.tokens[self.pos - 1].kind == "num":
+                    a, b = self.tokens[self.pos - 1].text, tok.text
+                    if not tok.spaced:
+                        start = self.tokens[self.pos - 1].start
+                        self.fail(f"Cannot read the number '{a}{b}'.", start, tok.end)
+                    self.fail(
+                        f"Two numbers side by side; write {a}{b} or {a}*{b}.",
+                        self.tokens[self.pos - 1].start,
+                        tok.end,
+                    )
+                if after_division and not self.is_integer_fraction(factors):
+                    self.ambiguous_division(first.start, factors[-1])
+                factors.append(self.parse_power())
+                after_division = False
+            else:
+                break
+        if len(factors) == 1:
+            return first
+        return self.node("mul", first.start, factors[-1].end, factors)
+
+    @staticmethod
+    def is_integer_fraction(factors: list[Node]) -> bool:
+        """1/2 m v^2: an integer over an integer may be followed by more factors."""
+        if len(factors) != 2:
+            return False
+        top, bottom = factors[0], factors[1].value
+        return top.kind == "num" and top.extra and bottom.kind == "num" and bottom.extra  # type: ignore[union-attr]
+
+    def ambiguous_division(self, term_start: int, divisor: Node) -> NoReturn:
+        following = self.parse_power()
+        left = self.text[term_start : divisor.start].rstrip().rstrip("/").rstrip()
+        under = self.text[divisor.start : divisor.end]
+        after = self.text[following.start : following.end]
+        self.fail(
+            f"Ambiguous division: write {left}/({under}*{after}) or ({left}/{under})*{after}.",
+            term_start,
+            following.end,
+        )
+
+    def parse_unary(self) -> Node:
+        """unary := '-' unary | power"""
+        tok = self.peek()
+        self.enter(tok)
+        if tok.text == "-":
+            self.next()
+            self.operand_after(tok)
+            operand = self.parse_unary()
+            result = self.node("neg", tok.start, operand.end, operand)
+        else:
+            result = self.parse_power()
+        self.depth -= 1
+        return result
+
+    def parse_power(self) -> Node:
+        """power := atom [('^'|'**') unary], right-associative."""
+        base = self.parse_atom()
+        tok = self.peek()
+        if tok.text not in ("^", "**"):
+            return base
+        self.next()
+        self.operand_after(tok)
+        exponent = self.parse_unary()
+        literal = exponent.value if exponent.kind == "num" else None
+        if exponent.kind == "neg" and exponent.value.kind == "num":  # type: ignore[union-attr]
+            literal = exponent.value.value  # type: ignore[union-attr]
+        if literal is not None and abs(literal[0]) > MAX_EXPONENT * literal[1]:  # type: ignore[index]
+            self.fail(
+                f"Exponent too large: at most {MAX_EXPONENT} in absolute value.",
+                exponent.start,
+                exponent.end,
+            )
+        return self.node("pow", base.start, exponent.end, base, exponent)
+
+    def parse_atom(self) -> Node:
+        """atom := number | '(' sum ')' | call | diff | name"""
+        tok = self.peek()
+        if tok.kind == "num":
+            self.next()
+            p, q, whole = read_number(tok, self.src)
+            return self.node("num", tok.start, tok.end, (p, q), whole)
+        if tok.text == "(":
+            return self.parse_group()
+        if tok.kind == "name":
+            if tok.text == "diff" and "diff" not in self.lexicon.table:
+                return self.parse_diff()
+            if self.lexicon.is_function(tok.text):
+                return self.parse_call()
+            self.next()
+            return self.parse_name(tok)
+        self.unexpected(tok)
+
+    def parse_group(self) -> Node:
+        """'(' sum ')'"""
+        opening = self.next()
+        self.enter(opening)
+        tok = self.peek()
+        if tok.text == ")":
+            self.fail("Empty brackets '()'.", opening.start, tok.end)
+        if tok.kind == "end":
+            self.fail(
+                f"Missing ')': the '(' at position {self.column(opening.start)} is never closed.",
+                opening.start,
+                opening.end,
+            )
+        inner = self.parse_sum()
+        closing = self.peek()
+        if closing.text != ")":
+            if closing.kind == "end":
+                self.fail(
+                    self.missing_close(opening),
+                    opening.start,
+                    opening.end,
+                )
+            self.unexpected(closing)
+        self.next()
+        self.depth -= 1
+        return inner._replace(start=opening.start, end=closing.end)
+
+    def parse_call(self) -> Node:
+        """call := FUNC ['^' INTEGER] ('(' sum ')' | simple_arg)"""
+        tok = self.next()
+        name = tok.text
+        if tok.marks or tok.primes:
+            self.fail(
+                f"'{name}' is a function; it cannot carry a dot or a prime.", tok.start, tok.end
+            )
+        if name == "log":
+            self.warn("log is read as the natural logarithm ln.")
+        power = None
+        if self.peek().text in ("^", "**"):
+            op = self.next()
+            nxt = self.peek()
+            if nxt.kind == "num" and nxt.text.isdigit() and 0 < int(nxt.text) <= MAX_EXPONENT:
+                power = int(nxt.text)
+                self.next()
+            elif nxt.text == "-" or (nxt.text == "(" and self.peek(1).text == "-"):
+                fix = f"a{name}(x) or 1/{name}(x)" if name in _TRIG else f"1/{name}(x)"
+                self.fail(f"{name}^-1 is ambiguous; write {fix}.", tok.start, nxt.end)
+            else:
+                self.fail(
+                    f"After '{name}^' write a whole number, as in {name}^2(x), "
+                    f"or put the power after the argument: {name}(x)^n.",
+                    op.start,
+                    nxt.end,
+                )
+        nxt = self.peek()
+        if nxt.text == "(":
+            argument = self.parse_group()
+        elif (
+            nxt.kind in ("name", "num")
+            and not self.lexicon.is_function(nxt.text)
+            and nxt.text != "diff"
+        ):
+            argument = self.parse_simple_argument()
+            self.check_bare_argument(tok, power, argument)
+        elif nxt.kind == "end":
+            self.fail(f"Expected '(' after '{name}' but the answer ended.", tok.start, tok.end)
+        else:
+            self.fail(
+                f"Write the argument of '{name}' in brackets, as in {name}(x).", tok.start, nxt.end
+            )
+        return self.node("call", tok.start, argument.end, name, (argument, power))
+
+    def parse_simple_argument(self) -> Node:
+        tok = self.next()
+        if tok.kind == "num":
+            p, q, whole = read_number(tok, self.src)
+            return self.node("num", tok.start, tok.end, (p, q), whole)
+        return self.parse_name(tok)
+
+    def check_bare_argument(self, function: Token, power: int | None, argument: Node) -> None:
+        """`sin theta` must end its term or be followed by another function: `sin omega t`,
+        `sin 2 theta`, `cos theta^2` are ambiguous."""
+        tok = self.peek()
+        if tok.kind == "end" or tok.text in _TERM_END:
+            return
+        if tok.kind == "name" and self.lexicon.is_function(tok.text):
+            return
+        if (
+            tok.text == "*"
+            and self.peek(1).kind == "name"
+            and self.lexicon.is_function(self.peek(1).text)
+        ):
+            return
+        name = function.text + (f"^{power}" if power else "")
+        arg = self.text[argument.start : argument.end]
+        if tok.text in ("^", "**"):
+            self.next()
+            self.operand_after(tok)
+            following = self.parse_unary()
+            rest = self.text[tok.start : following.end]
+            fix = f"{name}({arg}{rest}) or {name}({arg}){rest}"
+        elif tok.text in ("*", "/"):
+            self.next()
+            self.operand_after(tok)
+            following = self.parse_power()
+            rest = tok.text + self.text[following.start : following.end]
+            fix = f"{name}({arg}{rest}) or {name}({arg}){rest}"
+        else:
+            following = self.parse_power()
+            rest = self.text[following.start : following.end]
+            fix = f"{name}({arg}*{rest}) or {name}({arg})*{rest}"
+        self.fail(
+            f"Ambiguous '{function.text}' without brackets: write {fix}.",
+            function.start,
+            following.end,
+        )
+
+    def parse_diff(self) -> Node:
+        """diff := 'diff' '(' name ',' 't' [',' INTEGER] ')'"""
+        tok = self.next()
+        if self.peek().text != "(":
+            self.fail("Write diff(x, t) with brackets.", tok.start, tok.end)
+        opening = self.next()
+        target = self.peek()
+        if target.kind != "name":
+            self.fail(
+                "diff(...) takes a coordinate and t, as in diff(theta, t).", tok.start, target.end
+            )
+        self.next()
+        self.skip_of_t()
+        comma = self.peek()
+        if comma.text != ",":
+            if comma.text == ")":
+                self.fail(
+                    f"diff(...) needs the variable t: write diff({target.text}, t).",
+                    tok.start,
+                    comma.end,
+                )
+            self.fail(
+                "diff(...) takes a single coordinate, as in diff(theta, t).",
+                target.start,
+                comma.end,
+            )
+        self.next()
+        var = self.peek()
+        if not (var.kind == "name" and var.text == "t" and not var.marks and not var.primes):
+            self.fail("diff(...) is only allowed with respect to t.", var.start, var.end)
+        self.next()
+        order = 1
+        if self.peek().text == ",":
+            self.next()
+            n = self.peek()
+            if not (n.kind == "num" and n.text in ("1", "2")):
+                self.fail("The order in diff(x, t, n) must be 1 or 2.", n.start, n.end)
+            order = int(n.text)
+            self.next()
+        closing = self.peek()
+        if closing.text != ")":
+            if closing.kind == "end":
+                self.fail(
+                    self.missing_close(opening),
+                    opening.start,
+                    opening.end,
+                )
+            self.fail("Expected ')' to close diff(...).", closing.start, closing.end)
+        self.next()
+        entry = self.lookup(target)
+        if entry.jet is None:
+            self.not_a_coordinate(target.text, target)
+        return self.derivative(entry, entry.order + target.marks + order, tok.start, closing.end)

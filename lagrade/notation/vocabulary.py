@@ -1,0 +1,164 @@
+"""What a question lets a student write: its `Vocabulary` (coordinates, parameters, labels) and the
+`Lexicon` of every spelling that vocabulary accepts (m1 for m_1, thetadot for theta_dot)."""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterable, Mapping
+from dataclasses import dataclass
+from functools import cached_property
+from typing import NamedTuple
+
+import sympy as sp
+
+from lagrade.errors import RequestError
+from lagrade.mechanics import lagrange as mechanics
+from lagrade.mechanics.domains import Domain
+from lagrade.notation.build import FUNCTIONS
+
+_NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*\Z")
+
+
+class Entry(NamedTuple):
+    """What one spelling means: the symbol (or pi), its coordinate's jet, and its time order."""
+
+    kind: str  # "sym" or "pi"
+    value: sp.Expr
+    jet: mechanics.Jet | None
+    order: int  # 0 coordinate or plain symbol, 1 velocity, 2 acceleration
+
+
+def _digit_variants(name: str) -> set[str]:
+    """m1 ↔ m_1, theta12 ↔ theta_12: digit subscripts with or without the underscore."""
+    return {name, re.sub(r"_(?=[0-9])", "", name), re.sub(r"(?<=[A-Za-z])(?=[0-9])", "_", name)}
+
+
+@dataclass(frozen=True)
+class Vocabulary:
+    """What a question lets a student write: its coordinates (each with velocity and
+    acceleration), its parameters as the very sympy symbols of the reference, extra labels
+    (p_theta, L, h, …) and whether primes mean time derivatives."""
+
+    coordinates: tuple[str, ...]
+    parameters: Mapping[str, sp.Symbol]
+    labels: tuple[str, ...] = ()
+    allow_primes: bool = False
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "coordinates", tuple(self.coordinates))
+        object.__setattr__(self, "parameters", dict(self.parameters))
+        object.__setattr__(self, "labels", tuple(self.labels))
+        problems = []
+        names = list(self.coordinates) + list(self.parameters) + list(self.labels)
+        for name in names:
+            if not isinstance(name, str) or not _NAME.match(name):
+                problems.append(
+                    f"{name!r} is not a name (letters, digits and _, starting with a letter)"
+                )
+        for name, symbol in self.parameters.items():
+            if not isinstance(symbol, sp.Symbol):
+                problems.append(f"parameter {name!r} must map to a sympy Symbol, not {symbol!r}")
+        jet_names = [f"{c}{suffix}" for c in self.coordinates for suffix in ("", "_dot", "_ddot")]
+        seen: set[str] = set()
+        for name in jet_names + list(self.parameters) + list(self.labels):
+            if name in seen:
+                problems.append(f"{name!r} is declared twice")
+            seen.add(name)
+        if problems:
+            raise RequestError("vocabulary is not valid: " + "; ".join(problems))
+
+    def __hash__(self) -> int:
+        return hash(
+            (self.coordinates, tuple(self.parameters.items()), self.labels, self.allow_primes)
+        )
+
+    @classmethod
+    def from_variant(
+        cls, variant, labels: Iterable[str] = (), *, allow_primes: bool = False
+    ) -> Vocabulary:
+        """The vocabulary of a scene variant (`lagrade.mechanics.scene.SceneVariant`)."""
+        return cls(
+            tuple(variant.coordinates), dict(variant.parameter_symbols), tuple(labels), allow_primes
+        )
+
+    @classmethod
+    def from_names(
+        cls,
+        coordinates: Iterable[str],
+        parameters: Mapping[str, str | Domain] | Iterable[str],
+        labels: Iterable[str] = (),
+        *,
+        allow_primes: bool = False,
+    ) -> Vocabulary:
+        """From names alone; parameter domains as strings ('positive', '(0, pi/2)'), and bare
+        parameter names are positive (masses, lengths, g)."""
+        if isinstance(parameters, Mapping):
+            symbols = {
+                name: Domain.parse(domain).symbol(name) for name, domain in parameters.items()
+            }
+        else:
+            symbols = {name: Domain.parse("positive").symbol(name) for name in parameters}
+        return cls(tuple(coordinates), symbols, tuple(labels), allow_primes)
+
+    @cached_property
+    def _lexicon(self) -> Lexicon:
+        return Lexicon(self)
+
+
+class Lexicon:
+    """Every spelling a vocabulary accepts, resolved once per Vocabulary."""
+
+    def __init__(self, vocabulary: Vocabulary):
+        self.allow_primes = vocabulary.allow_primes
+        self.jets = [mechanics.jet(c) for c in vocabulary.coordinates]
+        self.coordinates = vocabulary.coordinates
+        exact: dict[str, Entry] = {}
+        for j in self.jets:
+            exact[j.name] = Entry("sym", j.q, j, 0)
+            exact[j.dot.name] = Entry("sym", j.dot, j, 1)
+            exact[j.ddot.name] = Entry("sym", j.ddot, j, 2)
+        for name, symbol in vocabulary.parameters.items():
+            exact[name] = Entry("sym", symbol, None, 0)
+        for name in vocabulary.labels:
+            exact[name] = Entry("sym", sp.Symbol(name, real=True), None, 0)
+        table = dict(exact)
+        for j in self.jets:
+            for v in _digit_variants(j.name):
+                table.setdefault(v, exact[j.name])
+                for suffix, order in (("dot", 1), ("_dot", 1), ("ddot", 2), ("_ddot", 2)):
+                    table.setdefault(
+                        v + suffix, Entry("sym", (j.q, j.dot, j.ddot)[order], j, order)
+                    )
+        for name in list(vocabulary.parameters) + list(vocabulary.labels):
+            for v in _digit_variants(name):
+                table.setdefault(v, exact[name])
+        table.setdefault("t", Entry("sym", mechanics.t, None, 0))
+        table.setdefault("pi", Entry("pi", sp.pi, None, 0))
+        self.table = table
+        self.longest = max(len(k) for k in table)
+        allowed = list(vocabulary.parameters)
+        for j in self.jets:
+            allowed += [j.name, j.dot.name, j.ddot.name]
+        allowed += list(vocabulary.labels) + ["t"]
+        self.allowed = ", ".join(allowed)
+
+    def is_function(self, name: str) -> bool:
+        return name in FUNCTIONS and name not in self.table
+
+    def split(self, name: str) -> list[str] | None:
+        """Fewest declared names that spell `name` (mgl → m, g, l), or None."""
+        if len(name) > 64:
+            return None
+        best: list[list[str] | None] = [None] * (len(name) + 1)
+        best[0] = []
+        for i in range(len(name)):
+            if best[i] is None:
+                continue
+            for k in range(i + 1, min(len(name), i + self.longest) + 1):
+                piece = name[i:k]
+                if piece in self.table:
+                    candidate = best[i] + [piece]  # type: ignore[operator]
+                    if best[k] is None or len(candidate) < len(best[k]):  # type: ignore[arg-type]
+                        best[k] = candidate
+        found = best[len(name)]
+        return found if found is not None and len(found) > 1 else None
