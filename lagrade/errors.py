@@ -5,6 +5,10 @@
     ├── SceneError                  an inconsistent scene declaration (lists every problem)
     ├── UnknownSceneError           a scene id the bank does not have (lists the ids)
     ├── AssignmentError             an assignment file, roster, manifest or folder unusable as given
+    ├── UnreadableInput             bytes that are not the text they claim to be (not UTF-8, a lone
+    │                               surrogate, nesting or a number past the bounds, not JSON/TOML)
+    ├── OutputError                 an output folder that cannot be written (disk full, read-only)
+    │   └── OutputBusy              an output folder another run is writing to now (locked)
     └── GraderError                 reading and judging answers
         ├── ParseError              student text that does not parse (message, span, source, hint)
         ├── RequestError            a grading request or problem definition that is malformed
@@ -58,6 +62,19 @@ class UnknownSceneError(LagradeError, KeyError):
 
 class AssignmentError(LagradeError):
     """An assignment file, roster or output location that cannot be used as given."""
+
+
+class UnreadableInput(LagradeError, ValueError):
+    """Bytes that are not the text or structure they claim to be; see `lagrade.untrusted`."""
+
+
+class OutputError(LagradeError):
+    """Results that cannot be written where asked: a full disk, a read-only folder, a folder
+    another run holds. Distinct from bad input, so a script can tell the two apart."""
+
+
+class OutputBusy(OutputError):
+    """The output folder is locked by another run that is writing there now."""
 
 
 class GraderError(LagradeError):

@@ -5,9 +5,11 @@ from __future__ import annotations
 
 import argparse
 import json
+import sys
 from pathlib import Path
 from typing import Any
 
+import lagrade.untrusted as untrusted
 from lagrade.errors import RequestError
 from lagrade.grading.atomic import write_text
 from lagrade.judge.check import DEFAULT_TIME_LIMIT, check, run_batch
@@ -25,14 +27,18 @@ def check_batch_file(
 ) -> tuple[int, str]:
     """`lagrade check --batch`: results to `out` (written whole or not at all) or, without it,
     as the returned text. Returns (exit status, text)."""
-    path = Path(requests)
-    try:
-        text = path.read_text(encoding="utf-8")
-    except OSError as error:
-        raise RequestError(f"cannot read {path}: {error.strerror}") from None
+    if str(requests) == "-":
+        data = sys.stdin.buffer.read()
+    else:
+        path = Path(requests)
+        try:
+            data = path.read_bytes()
+        except OSError as error:
+            raise RequestError(f"cannot read {path}: {error.strerror}") from None
+    records = (record for _number, record in untrusted.split_records(data))
     counts: dict[str, int] = {}
     results = []
-    for result in run_batch(text.splitlines(), time_limit=time_limit, jobs=jobs):
+    for result in run_batch(records, time_limit=time_limit, jobs=jobs):
         counts[result["verdict"]] = counts.get(result["verdict"], 0) + 1
         results.append(json.dumps(result, ensure_ascii=False))
     body = "\n".join(results) + ("\n" if results else "")
@@ -53,7 +59,8 @@ def add_check_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "--batch",
         metavar="REQUESTS.jsonl",
-        help="check every request of a JSON-lines file, one result line each",
+        help="check every request of a JSON-lines file ('-' for standard input), one result "
+        "line each, in order",
     )
     parser.add_argument(
         "--out",

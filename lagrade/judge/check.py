@@ -22,7 +22,8 @@ from collections import OrderedDict
 from collections.abc import Iterable, Iterator, Mapping
 from typing import Any
 
-from lagrade.errors import LagradeError, ReferenceUndefined, RequestError
+import lagrade.untrusted as untrusted
+from lagrade.errors import LagradeError, ReferenceUndefined, RequestError, UnreadableInput
 from lagrade.judge.parts import PARTS, run_checker
 from lagrade.judge.problem import Problem, build_problem, problem_key
 from lagrade.judge.verdict import Verdict
@@ -94,7 +95,8 @@ def _validate(request: Any) -> tuple[Any, str, Any, Mapping | None]:
             raise RequestError(f'the request has no "{name}"')
     part = request["part"]
     if not isinstance(part, str) or part not in PARTS:
-        raise RequestError(f"unknown part {part!r}; parts: {', '.join(PARTS)}")
+        shown = untrusted.clip(part, 40) if isinstance(part, str) else type(part).__name__
+        raise RequestError(f"unknown part {shown!r}; parts: {', '.join(PARTS)}")
     given = request.get("given")
     if given is not None and not isinstance(given, Mapping):
         raise RequestError('"given" must be an object such as {"lagrangian": "..."}')
@@ -205,11 +207,11 @@ def refused(request_id: Any, part: Any, message: str) -> dict[str, Any]:
         "id": request_id,
         "verdict": "invalid",
         "score": 0.0,
-        "feedback": [message],
+        "feedback": [untrusted.bounded(message)],
         "interpreted": "",
         "method": "request",
         "ms": 0.0,
-        "part": part if isinstance(part, str) else "?",
+        "part": untrusted.bounded(part, 40) if isinstance(part, str) else "?",
         "witness": None,
         "follows_from_own_answer": False,
         "mistakes": [],
@@ -229,15 +231,30 @@ def _time_limit(request: Any, default: float) -> float:
     return float(value)
 
 
+#: The longest request id echoed back, in characters of its JSON form.
+MAX_ID_LENGTH = 1_000
+
+
+def _request(number: int, record: str | bytes) -> Any:
+    """The parsed request of input line `number`; UnreadableInput says why it is not one."""
+    what = f"line {number}"
+    text = untrusted.decode(record, what) if isinstance(record, bytes) else record
+    request = untrusted.load_json(text, what)
+    if isinstance(request, dict) and len(json.dumps(request.get("id"))) > MAX_ID_LENGTH:
+        raise UnreadableInput(f'{what}: the "id" is longer than {MAX_ID_LENGTH} characters')
+    return request
+
+
 def run_batch(
-    lines: Iterable[str],
+    lines: Iterable[str | bytes],
     *,
     time_limit: float = DEFAULT_TIME_LIMIT,
     jobs: int = 1,
     pool: Pool | None = None,
 ) -> Iterator[dict[str, Any]]:
-    """One result per input line, in order (blank lines are skipped). A line that is not a
-    valid request gets `invalid` with the reason, and the batch goes on."""
+    """One result per input record, in order (blank records are skipped). Records may be bytes
+    (split on b"\n" only, see `lagrade.untrusted`): one that is not UTF-8, not JSON, or past
+    the bounds gets `invalid` with the reason, and the batch goes on."""
     answers: dict[int, dict[str, Any]] = {}  # lines settled without a worker, by position
     work = []
     ids: list[tuple[Any, Any]] = []
@@ -246,16 +263,17 @@ def run_batch(
             continue
         position = len(ids)
         try:
-            request = json.loads(line)
-        except json.JSONDecodeError as error:
-            message = f"line {number} is not valid JSON: {error.msg} (column {error.colno})"
+            request = _request(number, line)
+        except UnreadableInput as error:
             ids.append((None, "?"))
-            answers[position] = refused(None, "?", message)
+            answers[position] = refused(None, "?", str(error))
             continue
         request_id = request.get("id") if isinstance(request, dict) else None
         part = request.get("part", "?") if isinstance(request, dict) else "?"
         ids.append((request_id, part))
         try:
+            if not isinstance(request, dict):
+                raise RequestError("a request must be a JSON object")
             limit = _time_limit(request, time_limit)
         except RequestError as error:
             answers[position] = refused(request_id, "?", str(error))

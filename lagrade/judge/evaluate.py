@@ -82,6 +82,15 @@ def compile_program(exprs: Sequence[sp.Expr]) -> Program:
     return Program(tuple(code), outputs, frozenset(symbols))
 
 
+def _as_float(number: sp.Expr) -> np.float64:
+    """A constant as a numpy float, so that float arithmetic on it follows IEEE rules (0 ** -1 is
+    inf, not ZeroDivisionError) and a number beyond float range is ±inf, not OverflowError."""
+    try:
+        return np.float64(float(number))
+    except OverflowError:
+        return np.float64(np.inf if number > 0 else -np.inf)
+
+
 def _instruction(node: sp.Basic, emit, symbols: set) -> tuple:
     if isinstance(node, sp.Symbol):
         symbols.add(node)
@@ -89,9 +98,9 @@ def _instruction(node: sp.Basic, emit, symbols: set) -> tuple:
     if isinstance(node, sp.Number):
         if not node.is_finite:
             raise UnsupportedExpression(f"the answer contains {node}, which is not a finite number")
-        return ("const", node, float(node))
+        return ("const", node, _as_float(node))
     if node is sp.pi or node is sp.E:  # singletons: `is`, not sympy's slow ==
-        return ("const", node, float(node))
+        return ("const", node, _as_float(node))
     if isinstance(node, sp.Add):
         return ("add", tuple(emit(a) for a in node.args))
     if isinstance(node, sp.Mul):

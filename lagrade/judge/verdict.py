@@ -6,6 +6,8 @@ from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
+import lagrade.untrusted as untrusted
+
 STATUSES = ("correct", "incorrect", "invalid", "timeout", "error")  # error: a bug of ours
 
 
@@ -29,6 +31,13 @@ class Verdict:
     def __post_init__(self) -> None:
         assert self.status in STATUSES, self.status
         assert 0.0 <= self.score <= 1.0, self.score
+        # What a student typed comes back in the echo and the feedback: bounded in size (a
+        # 100 MB answer must not make a 100 MB result line) and encodable as UTF-8.
+        object.__setattr__(self, "feedback", _bounded(self.feedback))
+        if isinstance(self.interpreted, str):
+            object.__setattr__(self, "interpreted", untrusted.bounded(self.interpreted))
+        else:
+            object.__setattr__(self, "interpreted", list(_bounded(self.interpreted)))
 
     def to_dict(self) -> dict[str, Any]:
         """The JSON form of a result (without the request id), in the documented key order."""
@@ -44,6 +53,12 @@ class Verdict:
             "follows_from_own_answer": self.follows_from_own_answer,
             "mistakes": list(self.mistakes),
         }
+
+
+def _bounded(texts) -> tuple[str, ...]:
+    kept = tuple(untrusted.bounded(str(t)) for t in list(texts)[: untrusted.MAX_ITEMS])
+    left = len(texts) - len(kept)
+    return kept + ((f"… and {left} more",) if left > 0 else ())
 
 
 def invalid(part: str, message: str, interpreted: str | list[str] = "") -> Verdict:

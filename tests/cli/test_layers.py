@@ -10,7 +10,8 @@ import lagrade
 
 ROOT = pathlib.Path(lagrade.__file__).parent
 
-#: Each layer package and the lagrade packages it may import (errors.py sits under them all).
+#: Each layer package and the lagrade packages it may import (errors.py and untrusted.py, the
+#: error tree and the one reader of unvetted bytes, sit under them all).
 ALLOWED = {
     "mechanics": {"mechanics"},
     "bank": {"bank", "mechanics"},
@@ -52,9 +53,23 @@ def test_every_module_belongs_to_a_layer():
     loose = [
         p.relative_to(ROOT).as_posix()
         for p in ROOT.glob("*.py")
-        if p.name not in ("__init__.py", "__main__.py", "errors.py")
+        if p.name not in ("__init__.py", "__main__.py", *FOUNDATION)
     ]
     assert loose == [], "a module outside every layer: put it in the layer that owns it"
+
+
+#: Root modules under every layer: they may import only each other.
+FOUNDATION = ("errors.py", "untrusted.py")
+
+
+def test_the_foundation_imports_no_layer():
+    offenders = [
+        f"{name}:{line} imports {module}"
+        for name in FOUNDATION
+        for line, module in _imports(ROOT / name)
+        if _layer(module) is not None
+    ]
+    assert offenders == []
 
 
 def test_layers_only_look_down():
