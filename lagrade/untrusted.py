@@ -125,7 +125,7 @@ def bounded(text: str, limit: int = MAX_ECHO) -> str:
     return clip(encodable(text), limit)
 
 
-# --- the bounds ------------------------------------------------------------------------------------
+# --- the bounds -----------------------------------------------------------------------------------
 
 
 def _check_nesting(text: str, what: str) -> None:

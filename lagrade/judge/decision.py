@@ -57,7 +57,8 @@ def decide(residual: Residual) -> Outcome:
             r_mp, s_mp = residual(MP)
         except (ZeroDivisionError, OverflowError, ValueError):
             # mpmath raises where float64 gives inf or nan (1/0, 0 ** -1): undefined there.
-            return Outcome(False, "numeric+mpmath50", math.inf, int(per_point.argmax()), "undefined")
+            where = int(per_point.argmax())
+            return Outcome(False, "numeric+mpmath50", math.inf, where, "undefined")
         ratio_mp = np.array(
             [_mp_ratio(a, b) for a, b in zip(np.ravel(r_mp), np.ravel(s_mp), strict=True)]
         ).reshape(np.shape(r_mp))
