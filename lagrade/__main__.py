@@ -1,7 +1,5 @@
 """`python -m lagrade` is the `lagrade` command."""
 
-import sys
+from lagrade.cli.main import entry
 
-from lagrade.cli.main import main
-
-sys.exit(main())
+entry()

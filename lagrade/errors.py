@@ -21,6 +21,7 @@ an error crosses from a worker process to the parent with its type.
 
 from __future__ import annotations
 
+import difflib
 import unicodedata
 
 
@@ -54,7 +55,9 @@ class UnknownSceneError(LagradeError, KeyError):
         super().__init__(scene_id)
 
     def __str__(self) -> str:
-        return f"unknown scene {self.scene_id!r}; the bank has: {', '.join(self.known)}"
+        close = difflib.get_close_matches(str(self.scene_id), self.known, n=1)
+        guess = f"did you mean {close[0]!r}? " if close else ""
+        return f"unknown scene {self.scene_id!r}; {guess}the bank has: {', '.join(self.known)}"
 
     def __reduce__(self):
         return (UnknownSceneError, (self.scene_id, self.known))

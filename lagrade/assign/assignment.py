@@ -21,14 +21,14 @@ Reading it checks everything against the bank and reports every problem in one
 from __future__ import annotations
 
 import datetime as dt
-import tomllib
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+import lagrade.untrusted as untrusted
 from lagrade.bank.registry import get_scene, scene_ids
-from lagrade.errors import AssignmentError, LagradeError
+from lagrade.errors import AssignmentError, LagradeError, UnreadableInput
 from lagrade.mechanics.scene import Scene
 
 #: The parts of the five-step method, in the order a handout asks them.
@@ -106,14 +106,15 @@ class Assignment:
 def load_assignment(path: str | Path) -> Assignment:
     """Read and check an assignment file; one AssignmentError lists every problem in it."""
     path = Path(path)
+    what = f"assignment file {str(path)!r}"
     try:
-        data = tomllib.loads(path.read_text(encoding="utf-8"))
+        data = untrusted.load_toml(untrusted.decode(path.read_bytes(), what), what)
     except FileNotFoundError:
-        raise AssignmentError(f"assignment file {str(path)!r} does not exist") from None
-    except UnicodeDecodeError as exc:
-        raise AssignmentError(f"assignment file {str(path)!r} is not UTF-8 text: {exc}") from None
-    except tomllib.TOMLDecodeError as exc:
-        raise AssignmentError(f"assignment file {str(path)!r} is not valid TOML: {exc}") from None
+        raise AssignmentError(f"{what} does not exist") from None
+    except OSError as exc:
+        raise AssignmentError(f"cannot read {what}: {exc.strerror}") from None
+    except UnreadableInput as exc:
+        raise AssignmentError(str(exc)) from None
     return parse_assignment(data, source=str(path))
 
 

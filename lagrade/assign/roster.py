@@ -9,14 +9,13 @@ from __future__ import annotations
 
 import csv
 import io
-import re
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from lagrade.errors import AssignmentError
+import lagrade.untrusted as untrusted
+from lagrade.errors import AssignmentError, UnreadableInput
 
-_SAFE_ID = re.compile(r"^[A-Za-z0-9][A-Za-z0-9._@+-]{0,127}$")
 REQUIRED = ("id", "name")
 
 
@@ -37,12 +36,12 @@ def load_roster(path: str | Path) -> tuple[Student, ...]:
         raw = path.read_bytes()
     except FileNotFoundError:
         raise AssignmentError(f"roster {str(path)!r} does not exist") from None
+    except OSError as exc:
+        raise AssignmentError(f"cannot read the roster {str(path)!r}: {exc.strerror}") from None
     try:
-        text = raw.decode("utf-8-sig")
-    except UnicodeDecodeError as exc:
-        raise AssignmentError(
-            f"roster {str(path)!r} is not UTF-8 (byte {exc.start}); export it as CSV UTF-8"
-        ) from None
+        text = untrusted.decode(raw, f"roster {str(path)!r}")
+    except UnreadableInput as exc:
+        raise AssignmentError(f"{exc}; export it as CSV UTF-8") from None
     return parse_roster(text, source=str(path))
 
 
@@ -90,11 +89,9 @@ def parse_roster(text: str, source: str = "roster") -> tuple[Student, ...]:
         if not sid:
             problems.append(f"line {line}: the id is empty")
             continue
-        if not _SAFE_ID.match(sid):
-            problems.append(
-                f"line {line}: id {sid!r} cannot name a file; use letters, digits and . _ @ + - "
-                "(starting with a letter or digit, at most 128 characters)"
-            )
+        unsafe = untrusted.unsafe_name_reason(sid, "id")
+        if unsafe:
+            problems.append(f"line {line}: {unsafe}")
             continue
         if not name:
             problems.append(f"line {line}: student {sid!r} has an empty name")

@@ -48,6 +48,17 @@ def md_escape(value: Any) -> str:
     )
 
 
+def md_code(value: Any) -> str:
+    """A Markdown code span holding `value` verbatim: its fence is one backtick longer than the
+    longest run of backticks inside, so no text can close it early (CommonMark's rule), and it
+    is padded with a space when the text starts or ends with a backtick."""
+    text = " ".join(str(value).split())
+    runs = re.findall(r"`+", text)
+    fence = "`" * (max((len(r) for r in runs), default=0) + 1)
+    pad = " " if text.startswith("`") or text.endswith("`") else ""
+    return f"{fence}{pad}{text}{pad}{fence}"
+
+
 def toml_string(value: Any) -> str:
     """A TOML basic string (quoted) holding `value`."""
     out = []
@@ -93,6 +104,11 @@ def environment(templates_dir: str | Path | None = None) -> jinja2.Environment:
         lstrip_blocks=True,
     )
     env.filters.update(
-        tex=tex_escape, md=md_escape, toml=toml_string, points=format_points, oneline=one_line
+        tex=tex_escape,
+        md=md_escape,
+        mdcode=md_code,
+        toml=toml_string,
+        points=format_points,
+        oneline=one_line,
     )
     return env

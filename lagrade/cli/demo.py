@@ -22,7 +22,8 @@ import sympy as sp
 import lagrade.grading.atomic as atomic
 from lagrade.assign.generate import generate
 from lagrade.assign.solution import latex_symbol_names
-from lagrade.grading.batch import BatchSummary, grade, question, student_variant
+from lagrade.grading.batch import BatchSummary, grade, question
+from lagrade.grading.manifest import student_variant
 from lagrade.judge.key import key_answer
 from lagrade.judge.verify import verify_variant
 from lagrade.mechanics.scene import SceneVariant

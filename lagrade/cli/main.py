@@ -1,16 +1,26 @@
 """The `lagrade` command: parse arguments, make one library call, print, exit.
 
-Exit status: 0 success; 1 the answer or request was judged invalid/incorrect where the command
-says so (see each command's help); 2 a usage or input error (`Kind: message` on stderr).
+Exit status, the same for every command (documented in `lagrade --help` and the README):
+  0    success
+  1    done, but not everything passed: an answer judged not correct (`check`), students
+       missing, invalid or timed out (`grade`)
+  2    bad input or usage: a malformed file, request, option or scene id
+  3    environment fault: the disk is full, a folder is read-only or not ours to write
+  4    the output folder is in use by another lagrade run
+  130  interrupted (Ctrl-C or SIGTERM)
 """
 
 from __future__ import annotations
 
 import argparse
+import signal
 import sys
 from collections.abc import Callable, Sequence
 
-from lagrade.errors import LagradeError
+from lagrade.errors import LagradeError, OutputBusy, OutputError
+
+EXIT_OK, EXIT_NOT_ALL_PASSED, EXIT_BAD_INPUT, EXIT_ENVIRONMENT, EXIT_BUSY = 0, 1, 2, 3, 4
+EXIT_INTERRUPTED = 130
 
 EPILOG = """examples:
   lagrade bank list
@@ -20,6 +30,10 @@ EPILOG = """examples:
   lagrade generate examples/assignment.toml --roster examples/roster.csv --seed 2025 --out ps3
   lagrade grade ps3/manifest.json submissions/ --jobs 2
   lagrade demo
+
+exit status: 0 success; 1 done, but an answer was not correct or students are missing or
+invalid; 2 bad input or usage; 3 environment fault (disk full, read-only folder); 4 the output
+folder is in use by another run; 130 interrupted.
 """
 
 
@@ -41,18 +55,46 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def main(argv: Sequence[str] | None = None) -> int:
-    """Entry point of the `lagrade` console script."""
-    args = build_parser().parse_args(argv)
-    run: Callable[[argparse.Namespace], int] = args.run
+    """Entry point of the `lagrade` console script: every outcome is an exit status and, on
+    failure, one line on stderr (never a traceback for anything a user can cause)."""
+    signal.signal(signal.SIGTERM, _interrupt)  # a scheduler's stop is handled like Ctrl-C
     try:
+        args = build_parser().parse_args(argv)
+        run: Callable[[argparse.Namespace], int] = args.run
         return run(args)
+    except OutputBusy as error:
+        return _fail(error, EXIT_BUSY)
+    except OutputError as error:
+        return _fail(error, EXIT_ENVIRONMENT)
     except LagradeError as error:
-        print(f"{type(error).__name__}: {error}", file=sys.stderr)
-        return 2
+        return _fail(error, EXIT_BAD_INPUT)
+    except OSError as error:  # a fault of the machine, not of the input: say which file
+        where = f" ({error.filename})" if error.filename else ""
+        return _fail(f"{error.strerror or error}{where}", EXIT_ENVIRONMENT)
     except KeyboardInterrupt:
-        print("interrupted", file=sys.stderr)
-        return 130
+        print("lagrade: interrupted", file=sys.stderr)
+        return EXIT_INTERRUPTED
+
+
+def _fail(error: object, status: int) -> int:
+    print(f"lagrade: error: {error}", file=sys.stderr)
+    return status
+
+
+def _interrupt(_signum: int, _frame: object) -> None:
+    raise KeyboardInterrupt
+
+
+def entry() -> None:
+    """The console script: `main`, with an interrupt during start-up (importing the commands)
+    reported like any other, never as a traceback."""
+    try:
+        status = main()
+    except KeyboardInterrupt:
+        print("lagrade: interrupted", file=sys.stderr)
+        status = EXIT_INTERRUPTED
+    sys.exit(status)
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    entry()

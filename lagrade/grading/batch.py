@@ -21,10 +21,11 @@ from typing import Any
 
 import lagrade.grading.atomic as atomic
 import lagrade.grading.report as report
+import lagrade.grading.submission as submission
 from lagrade.assign.manifest import project_version
 from lagrade.assign.views import MULTILINE
-from lagrade.bank.registry import get_scene
 from lagrade.errors import AssignmentError, LagradeError
+from lagrade.grading.manifest import load_manifest, student_variant
 from lagrade.grading.rubric import Rubric, load_rubric
 from lagrade.grading.submission import UnreadableAnswer, find_submission, read_sheet
 from lagrade.judge.check import cached_problem, prepare, timeout_verdict
@@ -33,7 +34,6 @@ from lagrade.judge.parts import run_checker
 from lagrade.judge.problem import Problem
 from lagrade.judge.verdict import Verdict
 from lagrade.judge.worker import GRACE, Limits, Outcome, PartTimeout, Pool, deadline, time_limit
-from lagrade.mechanics.scene import SceneVariant
 
 #: Parts that can follow from the student's own Lagrangian.
 FOLLOW_L = frozenset({"eom", "momenta", "cyclic", "conserved"})
@@ -54,36 +54,7 @@ class BatchSummary:
         return self.counts.get("graded", 0) == sum(self.counts.values())
 
 
-# --- the manifest -------------------------------------------------------------------------------
-
-
-def load_manifest(path: Path) -> dict[str, Any]:
-    """Read manifest.json and check that the bank still reproduces every variant in it."""
-    try:
-        manifest = json.loads(Path(path).read_text(encoding="utf-8"))
-    except FileNotFoundError:
-        raise AssignmentError(f"no manifest at {path}; run `lagrade generate` first") from None
-    except (OSError, UnicodeDecodeError, json.JSONDecodeError) as error:
-        raise AssignmentError(f"cannot read the manifest {path}: {error}") from None
-    if not isinstance(manifest, dict) or manifest.get("format") != "lagrade-manifest/1":
-        raise AssignmentError(f"{path} is not a lagrade manifest (format lagrade-manifest/1)")
-    mismatches = []
-    for student in manifest["students"]:
-        for entry in student["problems"]:
-            variant = student_variant(entry["scene"], entry["seed"])
-            if (
-                variant.names != entry["names"]
-                or variant.options != entry["options"]
-                or {k: float(v) for k, v in variant.values.items()}
-                != {k: float(v) for k, v in entry["values"].items()}
-            ):
-                mismatches.append(f"{student['id']} problem {entry['index']} ({entry['scene']})")
-    if mismatches:
-        raise AssignmentError(
-            "the bank no longer reproduces these variants, so grading would not match the "
-            f"handouts: {', '.join(mismatches[:10])}" + (" …" if len(mismatches) > 10 else "")
-        )
-    return manifest
+# --- the rubric -----------------------------------------------------------------------------------
 
 
 def _rubric(manifest_path: Path, manifest: dict) -> Rubric:
@@ -100,13 +71,6 @@ def _rubric(manifest_path: Path, manifest: dict) -> Rubric:
 
 
 # --- grading one student -------------------------------------------------------------------------
-
-
-@functools.lru_cache(maxsize=4096)
-def student_variant(scene_id: str, seed: int) -> SceneVariant:
-    """A student's variant, built once per process (the manifest check, the question key and
-    the numeric follow-ups all ask for it, once per part of every submission otherwise)."""
-    return get_scene(scene_id).variant(seed)
 
 
 def _question_key(spec: Mapping[str, Any]) -> str:
@@ -305,9 +269,7 @@ def _fingerprint(path: Path | None, student: Mapping, rubric: Rubric, version: s
         h.update(b"\x00<missing>")
         return h.hexdigest()
     h.update(b"\x00")
-    with path.open("rb") as f:
-        for chunk in iter(lambda: f.read(1 << 20), b""):
-            h.update(chunk)
+    submission.feed_digest(h, path)
     return h.hexdigest()
 
 
@@ -353,8 +315,24 @@ def grade(
     manifest = load_manifest(manifest_path)
     rubric = _rubric(manifest_path, manifest)
     out = Path(out_dir) if out_dir is not None else manifest_path.parent / "grades"
-    out.mkdir(parents=True, exist_ok=True)
-    atomic.remove_stale_temporaries(out)
+    with atomic.hold_folder(out):
+        atomic.remove_stale_temporaries(out)
+        return _grade_into(
+            out, manifest, rubric, submissions, jobs, part_time_limit, limits, progress
+        )
+
+
+def _grade_into(
+    out: Path,
+    manifest: dict[str, Any],
+    rubric: Rubric,
+    submissions: Path,
+    jobs: int,
+    part_time_limit: float,
+    limits: Limits | None,
+    progress: Callable[[int, int, str], None] | None,
+) -> BatchSummary:
+    """The body of `grade`, run while this process holds the output folder."""
     version = project_version()
     students = manifest["students"]
     # Reading a sheet has this long; each part then moves the deadline to its own time limit.

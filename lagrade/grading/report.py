@@ -15,7 +15,7 @@ from pathlib import Path
 from typing import Any
 
 import lagrade.grading.atomic as atomic
-from lagrade.assign.templating import environment
+from lagrade.assign.templating import environment, md_code, md_escape
 
 STUDENTS = "students"
 
@@ -81,31 +81,57 @@ def write_student_outputs(out: Path, manifest: Mapping[str, Any], result: dict[s
 
 
 def gradebook_csv(manifest: Mapping[str, Any], results: Sequence[Mapping[str, Any]]) -> str:
-    """One row per roster student: id, name, status, score, max, percent, per problem, reason."""
+    """One row per roster student: id, name, the roster's other columns (email, section, …) as
+    the instructor's LMS exported them, status, score, max, percent, per problem, reason."""
     buffer = io.StringIO()
     writer = csv.writer(buffer, lineterminator="\n")
     problems = manifest["problems"]
+    extra = _roster_columns(manifest)
     writer.writerow(
-        ["id", "name", "status", "score", "max_score", "percent"]
+        ["id", "name", *(csv_cell(c) for c in extra), "status", "score", "max_score", "percent"]
         + [f"problem{p['index']}" for p in problems]
         + ["reason"]
     )
+    roster = {s["id"]: s.get("extra") or {} for s in manifest["students"]}
     for r in results:
+        kept = roster.get(r["student"]["id"], {})
         per_problem = {p["index"]: p["score"] for p in r["problems"]}
         percent = 100 * r["score"] / r["max_score"] if r["max_score"] else 0.0
         writer.writerow(
             [
-                r["student"]["id"],
-                r["student"]["name"],
+                csv_cell(r["student"]["id"]),
+                csv_cell(r["student"]["name"]),
+                *(csv_cell(kept.get(c, "")) for c in extra),
                 r["status"],
                 _num(r["score"]),
                 _num(r["max_score"]),
                 f"{percent:.1f}",
             ]
             + [_num(per_problem.get(p["index"], 0.0)) for p in problems]
-            + [r["reason"]]
+            + [csv_cell(r["reason"])]
         )
     return buffer.getvalue()
+
+
+def _roster_columns(manifest: Mapping[str, Any]) -> list[str]:
+    """The roster's extra columns, in the order they first appear."""
+    columns: dict[str, None] = {}
+    for student in manifest["students"]:
+        for name in student.get("extra") or {}:
+            if name not in ("status", "score", "max_score", "percent", "reason"):
+                columns.setdefault(str(name), None)
+    return list(columns)
+
+
+#: What a spreadsheet reads as the start of a formula (OWASP's CSV injection list).
+_FORMULA_START = ("=", "+", "-", "@", "\t", "\r", "\n")
+
+
+def csv_cell(text: Any) -> str:
+    """Text for a CSV cell that a spreadsheet shows and never runs: a cell that would start a
+    formula (`=HYPERLINK(…)`, `+cmd|…`, `@SUM(…)`) gets a leading apostrophe, OWASP's rule."""
+    text = str(text)
+    return "'" + text if text.startswith(_FORMULA_START) else text
 
 
 def _num(x: float) -> str:
@@ -173,7 +199,7 @@ def class_summary(
 
 
 def summary_markdown(manifest: Mapping[str, Any], summary: Mapping[str, Any]) -> str:
-    lines = [f"# {manifest['assignment']['title']}: grading summary", ""]
+    lines = [f"# {md_escape(manifest['assignment']['title'])}: grading summary", ""]
     lines.append(
         f"{summary['students']} students; statuses: "
         + ", ".join(f"{k} {v}" for k, v in summary["statuses"].items())
@@ -182,18 +208,20 @@ def summary_markdown(manifest: Mapping[str, Any], summary: Mapping[str, Any]) ->
     lines += ["", "![score distribution](scores.svg)", ""]
     for problem in summary["problems"]:
         lines += [
-            f"## Problem {problem['index']}: {problem['title']} ({problem['scene']})",
+            f"## Problem {problem['index']}: {md_escape(problem['title'])} "
+            f"({md_escape(problem['scene'])})",
             "",
             "| part | answered | correct | success rate |",
             "| --- | --- | --- | --- |",
         ]
         for p in problem["parts"]:
             rate = "–" if p["success_rate"] is None else f"{100 * p['success_rate']:.0f} %"
-            lines.append(f"| {p['key']} | {p['answered']} | {p['correct']} | {rate} |")
+            lines.append(f"| {md_escape(p['key'])} | {p['answered']} | {p['correct']} | {rate} |")
         if problem["common_mistakes"]:
             lines += ["", "Most common named mistakes:", ""]
             lines += [
-                f'- {m["count"]} × {m["part"]}, `{m["mistake"]}`, e.g. "{m["feedback"]}"'
+                f"- {m['count']} × {md_escape(m['part'])}, {md_code(m['mistake'])}, "
+                f'e.g. "{md_escape(m["feedback"])}"'
                 for m in problem["common_mistakes"]
             ]
         lines.append("")

@@ -13,12 +13,12 @@ Every field is optional; the defaults are those above.
 from __future__ import annotations
 
 import math
-import tomllib
 from dataclasses import asdict, dataclass
 from pathlib import Path
 from typing import Any
 
-from lagrade.errors import RequestError
+import lagrade.untrusted as untrusted
+from lagrade.errors import RequestError, UnreadableInput
 from lagrade.judge.parts.expression import NUMERIC_TOLERANCE
 
 _FIELDS = {"partial_credit", "follow_through", "convention", "numeric_tolerance"}
@@ -89,8 +89,11 @@ def rubric_from_table(table: Any) -> Rubric:
 
 def load_rubric(assignment_file: Path) -> Rubric:
     """The rubric of an assignment file (defaults when it has no [rubric] table)."""
+    what = f"the assignment file {assignment_file}"
     try:
-        data = tomllib.loads(Path(assignment_file).read_text(encoding="utf-8"))
-    except (OSError, UnicodeDecodeError, tomllib.TOMLDecodeError) as error:
+        data = untrusted.load_toml(untrusted.decode(Path(assignment_file).read_bytes(), what), what)
+    except OSError as error:
         raise RequestError(f"cannot read the rubric from {assignment_file}: {error}") from None
+    except UnreadableInput as error:
+        raise RequestError(f"cannot read the rubric: {error}") from None
     return rubric_from_table(data.get("rubric"))

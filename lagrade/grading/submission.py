@@ -4,12 +4,16 @@ clear reason, never an exception that stops the batch."""
 
 from __future__ import annotations
 
+import errno
 import hashlib
-import json
-import tomllib
+import os
+import stat
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
+
+import lagrade.untrusted as untrusted
+from lagrade.errors import UnreadableInput
 
 #: The largest answer sheet read; a real one is a few kilobytes.
 MAX_SHEET_BYTES = 1024 * 1024
@@ -34,52 +38,95 @@ class Sheet:
 
 def find_submission(folder: Path, student_id: str) -> tuple[Path | None, str]:
     """The file of `student_id` in `folder` (`<id>.toml` or `<id>.json`, case-insensitive), or
-    None; the second value explains an ambiguity."""
+    None; the second value explains an ambiguity. Entries are matched by name only: whether
+    one is a regular file (not a link, a folder or a device) is `read_sheet`'s to say."""
     wanted = {student_id.lower() + s for s in SUFFIXES}
-    matches = sorted(p for p in folder.iterdir() if p.name.lower() in wanted and p.is_file())
+    matches = sorted(p for p in folder.iterdir() if p.name.lower() in wanted)
     if len(matches) > 1:
+        regular = [p for p in matches if _is_regular(p)] or matches
         names = ", ".join(p.name for p in matches)
-        return matches[0], f"several files for this student ({names}); graded {matches[0].name}"
+        return regular[0], f"several files for this student ({names}); graded {regular[0].name}"
     return (matches[0] if matches else None), ""
 
 
 def read_sheet(path: Path, student_id: str, problem_count: int) -> Sheet:
     """Read and validate an answer sheet, never raising over its content."""
-    try:
-        size = path.stat().st_size
-        if size > MAX_SHEET_BYTES:
-            return _bad(
-                path,
-                "",
-                f"the file is {size / 1e6:.1f} MB; an answer sheet may be at most "
-                f"{MAX_SHEET_BYTES // 1024} KiB",
-            )
-        data = path.read_bytes()
-    except OSError as error:
-        return _bad(path, "", f"the file cannot be read ({error.strerror or error})")
+    data, reason = _read_regular_file(path)
+    if reason:
+        return _bad(path, "", reason)
     digest = hashlib.sha256(data).hexdigest()
     if not data.strip():
         return _bad(path, digest, "the file is empty")
     if b"\x00" in data:
         return _bad(path, digest, "the file is binary, not a text answer sheet")
     try:
-        text = data.decode("utf-8-sig")
-    except UnicodeDecodeError as error:
-        return _bad(
-            path,
-            digest,
-            f"the file is not UTF-8 text (byte 0x{data[error.start]:02x} at "
-            f"position {error.start}); save it as UTF-8",
-        )
-    try:
-        raw = json.loads(text) if path.suffix.lower() == ".json" else tomllib.loads(text)
-    except tomllib.TOMLDecodeError as error:
-        return _bad(path, digest, f"the answer sheet is not valid TOML: {error}")
-    except (json.JSONDecodeError, RecursionError) as error:
-        return _bad(path, digest, f"the answer sheet is not valid JSON: {error}")
+        text = untrusted.decode(data, "the file")
+        if path.suffix.lower() == ".json":
+            raw = untrusted.load_json(text, "the answer sheet")
+        else:
+            raw = untrusted.load_toml(text, "the answer sheet")
+    except UnreadableInput as error:
+        return _bad(path, digest, str(error))
     if not isinstance(raw, dict):
         return _bad(path, digest, "the answer sheet must be a table of problems")
     return _structure(path, digest, raw, student_id, problem_count)
+
+
+def feed_digest(digest: Any, path: Path) -> None:
+    """Feed what a result depends on into `digest` (a hashlib object): a regular file's bytes,
+    streamed whatever their size, or for anything else its kind, without following a link or
+    opening a device (a rerun then sees a link or a folder replaced by a file as a change)."""
+    try:
+        fd = os.open(path, os.O_RDONLY | os.O_NOFOLLOW | os.O_NONBLOCK)
+    except OSError as error:
+        digest.update(f"<unopenable {error.errno}>".encode())
+        return
+    mode = os.fstat(fd).st_mode
+    if not stat.S_ISREG(mode):
+        os.close(fd)
+        digest.update(f"<not a regular file {stat.S_IFMT(mode)}>".encode())
+        return
+    with os.fdopen(fd, "rb") as f:
+        for chunk in iter(lambda: f.read(1 << 20), b""):
+            digest.update(chunk)
+
+
+def _is_regular(path: Path) -> bool:
+    try:
+        return stat.S_ISREG(path.lstat().st_mode)
+    except OSError:
+        return False
+
+
+def _read_regular_file(path: Path) -> tuple[bytes, str]:
+    """The bytes of `path` when it is a regular file of at most MAX_SHEET_BYTES, else why not.
+    A symbolic link is refused, not followed (it could point at any file the grader can read),
+    and a fifo or device is never opened for reading (it could block forever)."""
+    try:
+        fd = os.open(path, os.O_RDONLY | os.O_NOFOLLOW | os.O_NONBLOCK)
+    except OSError as error:
+        if error.errno == errno.ELOOP or path.is_symlink():
+            return b"", "the submission is a symbolic link; hand in the file itself"
+        return b"", f"the file cannot be read ({error.strerror or error})"
+    try:
+        info = os.fstat(fd)
+        if not stat.S_ISREG(info.st_mode):
+            kind = "a folder" if stat.S_ISDIR(info.st_mode) else "not a regular file"
+            return b"", f"the submission is {kind}; hand in the answer sheet file itself"
+        if info.st_size > MAX_SHEET_BYTES:
+            return b"", (
+                f"the file is {info.st_size / 1e6:.1f} MB; an answer sheet may be at most "
+                f"{MAX_SHEET_BYTES // 1024} KiB"
+            )
+        with os.fdopen(fd, "rb", closefd=False) as f:
+            data = f.read(MAX_SHEET_BYTES + 1)
+    except OSError as error:
+        return b"", f"the file cannot be read ({error.strerror or error})"
+    finally:
+        os.close(fd)
+    if len(data) > MAX_SHEET_BYTES:  # grew while being read
+        return b"", f"the file is larger than {MAX_SHEET_BYTES // 1024} KiB"
+    return data, ""
 
 
 def _structure(path: Path, digest: str, raw: dict, student_id: str, problem_count: int) -> Sheet:

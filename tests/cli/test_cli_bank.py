@@ -48,5 +48,5 @@ def test_bank_show_wedge_text_and_latex(capsys):
 def test_unknown_scene_is_an_error_that_lists_the_bank(capsys):
     assert main(["bank", "show", "wedgie"]) == 2
     err = capsys.readouterr().err
-    assert err.startswith("UnknownSceneError: unknown scene 'wedgie'; the bank has: ")
+    assert err.startswith("lagrade: error: unknown scene 'wedgie'; did you mean 'wedge'? ")
     assert "hoop" in err
