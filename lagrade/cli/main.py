@@ -57,7 +57,6 @@ def build_parser() -> argparse.ArgumentParser:
 def main(argv: Sequence[str] | None = None) -> int:
     """Entry point of the `lagrade` console script: every outcome is an exit status and, on
     failure, one line on stderr (never a traceback for anything a user can cause)."""
-    signal.signal(signal.SIGTERM, _interrupt)  # a scheduler's stop is handled like Ctrl-C
     try:
         args = build_parser().parse_args(argv)
         run: Callable[[argparse.Namespace], int] = args.run
@@ -87,7 +86,9 @@ def _interrupt(_signum: int, _frame: object) -> None:
 
 def entry() -> None:
     """The console script: `main`, with an interrupt during start-up (importing the commands)
-    reported like any other, never as a traceback."""
+    reported like any other, never as a traceback; SIGTERM (a scheduler's stop) is handled
+    like Ctrl-C, so a stopped run removes its temporary files too."""
+    signal.signal(signal.SIGTERM, _interrupt)
     try:
         status = main()
     except KeyboardInterrupt:

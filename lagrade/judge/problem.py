@@ -31,7 +31,10 @@ from lagrade.mechanics.domains import Domain
 from lagrade.mechanics.lagrange import Jet, LagrangianSystem, jet, t
 from lagrade.mechanics.scene import SceneVariant
 
-_NAME = re.compile(r"^[A-Za-z][A-Za-z0-9_]*$")
+#: A coordinate or parameter name of an ad-hoc problem: a plain name of at most 32 characters.
+_NAME = re.compile(r"^[A-Za-z][A-Za-z0-9_]{0,31}$")
+#: More coordinates or parameters than any mechanics problem has is a malformed request.
+MAX_NAMES = 64
 
 
 def parser():
@@ -287,12 +290,14 @@ def _adhoc_problem(spec: Mapping[str, Any], key: str, kind: str) -> Problem:
     raw_params = spec.get("parameters", {})
     if not isinstance(raw_params, Mapping):
         raise RequestError('"parameters" must map each name to a domain, e.g. {"m": "positive"}')
+    if len(raw_params) > MAX_NAMES:
+        raise RequestError(f"{len(raw_params)} parameters; a problem may have at most {MAX_NAMES}")
     params: dict[str, sp.Symbol] = {}
     domains: dict[sp.Symbol, Domain] = {}
     taken = {n for c in coords for n in (c, c + "_dot", c + "_ddot")} | {"t"}
     for name, dom in raw_params.items():
         if not isinstance(name, str) or not _NAME.match(name):
-            raise RequestError(f"parameter name {name!r} is not a plain name")
+            raise RequestError(f"parameter name {_shown(name)} is not a plain name {_NAME_RULE}")
         if name in taken:
             raise RequestError(f"parameter {name!r} clashes with a coordinate (or t)")
         try:
@@ -336,12 +341,23 @@ def _coordinates(raw: Any, required: bool) -> tuple[list[str], dict[str, tuple[f
         raise RequestError('an ad-hoc Lagrangian needs "coordinates", e.g. ["theta"]')
     for name in names:
         if not isinstance(name, str) or not _NAME.match(name):
-            raise RequestError(f"coordinate name {name!r} is not a plain name")
+            raise RequestError(f"coordinate name {_shown(name)} is not a plain name {_NAME_RULE}")
         if name.endswith(("_dot", "_ddot")):
             raise RequestError(f"coordinate {name!r}: name the coordinate, not its velocity")
+    if len(names) > MAX_NAMES:
+        raise RequestError(f"{len(names)} coordinates; a problem may have at most {MAX_NAMES}")
     if len(set(names)) != len(names):
-        raise RequestError(f"coordinates {names} name one coordinate twice")
+        twice = sorted({n for n in names if names.count(n) > 1})
+        raise RequestError(f"coordinates name {', '.join(twice)} more than once")
     return names, ranges
+
+
+_NAME_RULE = "(a letter, then letters, digits or _, at most 32 characters)"
+
+
+def _shown(name: Any) -> str:
+    text = repr(name)
+    return text if len(text) <= 40 else text[:40] + "…"
 
 
 def _only(spec: Mapping[str, Any], allowed: set[str]) -> None:
