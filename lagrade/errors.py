@@ -21,7 +21,6 @@ an error crosses from a worker process to the parent with its type.
 
 from __future__ import annotations
 
-import difflib
 import unicodedata
 
 
@@ -55,6 +54,8 @@ class UnknownSceneError(LagradeError, KeyError):
         super().__init__(scene_id)
 
     def __str__(self) -> str:
+        import difflib  # only when the message is shown: keeps start-up short
+
         close = difflib.get_close_matches(str(self.scene_id), self.known, n=1)
         guess = f"did you mean {close[0]!r}? " if close else ""
         return f"unknown scene {self.scene_id!r}; {guess}the bank has: {', '.join(self.known)}"

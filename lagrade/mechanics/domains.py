@@ -20,9 +20,9 @@ from lagrade.errors import DomainError
 
 _BOUND = re.compile(
     r"""^\s*(?P<sign>[+-])?\s*
-        (?P<num>\d{1,30}(?:\.\d{1,30})?(?:[eE][+-]?\d{1,3})?)?\s*
+        (?P<num>\d{1,100}(?:\.\d{1,100})?(?:[eE][+-]?\d{1,3})?)?\s*
         (?:\*?\s*(?P<pi>pi|π))?\s*
-        (?:/\s*(?P<den>\d{1,30}(?:\.\d{1,30})?(?:[eE][+-]?\d{1,3})?))?\s*$""",
+        (?:/\s*(?P<den>\d{1,100}(?:\.\d{1,100})?(?:[eE][+-]?\d{1,3})?))?\s*$""",
     re.VERBOSE,
 )
 _INTERVAL = re.compile(r"^\s*(?P<lo_br>[\(\[])(?P<lo>[^,]+),(?P<hi>[^\)\]]+)(?P<hi_br>[\)\]])\s*$")
@@ -39,7 +39,7 @@ def _parse_bound(text: str) -> sp.Expr:
     if not match or not (match["num"] or match["pi"]):
         shown = text if len(text) <= 40 else text[:40] + "…"
         raise DomainError(
-            f"cannot read the interval bound {shown!r}; write a number of at most 30 digits "
+            f"cannot read the interval bound {shown!r}; write a number of at most 100 digits "
             "(1.5, 2e-3), pi, 2*pi or pi/2"
         )
     value: sp.Expr = sp.Rational(str(Fraction(match["num"]))) if match["num"] else sp.S.One
