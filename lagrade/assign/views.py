@@ -7,6 +7,7 @@ from __future__ import annotations
 import hashlib
 import json
 import re
+import string
 from functools import lru_cache
 from typing import Any
 
@@ -35,34 +36,54 @@ PROMPTS: dict[str, str] = {
 }
 #: Parts whose answer sheet field holds several lines (one equation or item per line).
 MULTILINE = frozenset({"transformation", "eom", "momenta", "conserved"})
-_WORD = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
+#: A name in prose: a whole word, not part of a possessive or a contraction ("pendulum's").
+_WORD = re.compile(r"(?<![\w'\u2019])[A-Za-z][A-Za-z0-9_]*(?![\w'\u2019])")
 _ENGLISH = frozenset({"a", "A", "I"})
 
 
 def _statement(variant: SceneVariant) -> dict[str, Any]:
-    """The statement with every coordinate and parameter name set as math, in each format."""
-    text = variant.statement()
-    names = set(variant.coordinates) | set(variant.parameter_symbols)
-    md, html, tex = [], [], []
-    last = 0
-    for match in _WORD.finditer(text):
-        word = match.group()
-        if word not in names or word in _ENGLISH:
-            continue
-        before = text[last : match.start()]
-        md.append(md_escape(before))
-        html.append(str(escape(before)))
-        tex.append(tex_escape(before))
-        math = rm.render(sp.Symbol(word))
-        md.append(f"${math.latex}$")
-        html.append(str(math.mathml))
-        tex.append(f"${math.latex}$")
-        last = match.end()
-    rest = text[last:]
-    md.append(md_escape(rest))
-    html.append(str(escape(rest)))
-    tex.append(tex_escape(rest))
-    return {"text": text, "md": "".join(md), "html": Markup("".join(html)), "tex": "".join(tex)}
+    """The statement with every coordinate and parameter name set as math, in each format.
+
+    Coordinates enter through the statement's fields (`{theta}`), so a renamed coordinate is set
+    as math exactly where the scene put it and nowhere else; prose is searched only for the
+    parameters and the coordinates no variant renames (`V = m g z`), as whole words.
+    """
+    scene = variant.scene
+    fill = variant.statement_fill
+    fixed = {c for c in scene.coordinates if len(scene.renames.get(c, (c,))) == 1}
+    prose_names = (set(variant.parameter_symbols) | fixed) - _ENGLISH
+    math_fields = set(scene.coordinates) | set(variant.parameter_symbols)
+    md: list[str] = []
+    html: list[str] = []
+    tex: list[str] = []
+
+    def text(chunk: str) -> None:
+        md.append(md_escape(chunk))
+        html.append(str(escape(chunk)))
+        tex.append(tex_escape(chunk))
+
+    def math(name: str) -> None:
+        rendered = rm.render(sp.Symbol(name))
+        md.append(f"${rendered.latex}$")
+        html.append(str(rendered.mathml))
+        tex.append(f"${rendered.latex}$")
+
+    for literal, field_name, _spec, _conversion in string.Formatter().parse(scene.statement):
+        last = 0
+        for match in _WORD.finditer(literal):
+            if match.group() in prose_names:
+                text(literal[last : match.start()])
+                math(match.group())
+                last = match.end()
+        text(literal[last:])
+        if field_name is not None:
+            (math if field_name in math_fields else text)(fill[field_name])
+    return {
+        "text": variant.statement(),
+        "md": "".join(md),
+        "html": Markup("".join(html)),
+        "tex": "".join(tex),
+    }
 
 
 def _body_kind(body: Any) -> str:
