@@ -16,13 +16,17 @@ from markupsafe import Markup, escape
 
 from lagrade.assign.assignment import EXPRESSION, Problem
 from lagrade.assign.figures import draw
-from lagrade.assign.templating import md_escape, tex_escape
+from lagrade.assign.symbols import part_symbols
+from lagrade.assign.templating import md_escape, tex_escape, toml_literal
+from lagrade.assign.units import unit_formats
 from lagrade.assign.variants import VariantChoice
 from lagrade.mechanics.scene import RigidBody, SceneVariant
 from lagrade.notation import printer as rm
+from lagrade.notation.keys import key_answer
 
 PROMPTS: dict[str, str] = {
-    "dof": "List the constraints and give the number of degrees of freedom.",
+    "dof": "Count the constraints and give the number of degrees of freedom (DOF = 3N - k), "
+    "as a whole number, e.g. 2.",
     "coordinates": "Name the generalized coordinates (use the ones named in the statement).",
     "transformation": "Write the transformation equations: each body's Cartesian coordinates "
     "in terms of the generalized coordinates (and t).",
@@ -34,6 +38,8 @@ PROMPTS: dict[str, str] = {
     "cyclic": "Which coordinates are cyclic? (Write none if there are none.)",
     "conserved": "Give the conserved quantities as functions of the coordinates and velocities.",
 }
+#: Parts with a key answer of their own (an expression part's key is its quantity's name).
+KEYED_PARTS = tuple(PROMPTS)
 #: Parts whose answer sheet field holds several lines (one equation or item per line).
 MULTILINE = frozenset({"transformation", "eom", "momenta", "conserved"})
 #: A name in prose: a whole word, not part of a possessive or a contraction ("pendulum's").
@@ -147,6 +153,14 @@ def symbolic_solution(scene_id: str, names: tuple, options: tuple) -> dict[str, 
             for name, q in system.conserved_quantities.items()
         ],
         "figure": draw(v),
+        # the answers as a student types them: the very text the grader checks before it
+        # accepts a variant (lagrade.judge.verify), one entry per part the scene can ask
+        "key_answers": {
+            **{part: key_answer(v, part) for part in KEYED_PARTS if part != "conserved"},
+            **({"conserved": key_answer(v, "conserved")} if system.conserved_quantities else {}),
+            **{q: key_answer(v, EXPRESSION, q) for q in v.quantities},
+        },
+        "variant": v,
     }
 
 
@@ -165,7 +179,7 @@ def problem_view(problem: Problem, choice: VariantChoice, name: str) -> dict[str
     variant = choice.variant(scene)
     parameters = _parameters(choice, variant)
     quantities = _quantities(problem, choice, variant)
-    parts = _parts(problem)
+    parts = _parts(problem, symbolic["variant"])
     return {
         "index": problem.index,
         "title": problem.title,
@@ -184,8 +198,13 @@ def problem_view(problem: Problem, choice: VariantChoice, name: str) -> dict[str
             "inline_svg": _inline_svg(symbolic["figure"].svg),
         },
         "solution": {
-            **{k: v for k, v in symbolic.items() if k not in ("figure", "statement")},
+            **{
+                k: v
+                for k, v in symbolic.items()
+                if k not in ("figure", "statement", "variant", "key_answers")
+            },
             "quantities": quantities,
+            "sheet": _sheet(problem, symbolic["key_answers"]),
         },
     }
 
@@ -201,6 +220,7 @@ def _parameters(choice: VariantChoice, variant: SceneVariant) -> list[dict[str, 
                 "symbol": rm.render(variant.parameter_symbols[p.name]),
                 "value": None if value is None else f"{value:g}",
                 "unit": p.unit,
+                "units": unit_formats(p.unit),
                 "description": p.description,
                 "domain": p.domain.text,
             }
@@ -224,7 +244,8 @@ def _quantities(
             "name": q.name,
             "description": q.description,
             "unit": q.unit,
-            "formula": rm.equation(sp.Symbol(q.name), expr, variant.coordinates),
+            "units": unit_formats(q.unit),
+            "formula": rm.named_equation(q.name, expr, variant.coordinates),
             "value": _number(
                 expr.xreplace(
                     {
@@ -237,18 +258,20 @@ def _quantities(
     return quantities
 
 
-def _parts(problem: Problem) -> list[dict[str, Any]]:
-    """The parts asked, each with its prompt and points."""
+def _parts(problem: Problem, variant: SceneVariant) -> list[dict[str, Any]]:
+    """The parts asked, each with its prompt, points, unit (numeric follow-ups) and the names
+    its answer may use."""
     declared = {q.name: q for q in problem.scene.quantities}
     parts = []
     for part in problem.parts:
+        unit = None
         if part.part == EXPRESSION:
             q = declared[part.quantity]
-            unit = f" (in {q.unit})" if q.unit else ""
             prompt = (
-                f"Find {q.description}: a closed form in the parameters, and its value for "
-                f"your parameter values{unit}."
+                f"Find {q.description}: a closed form in the parameters (or its value for "
+                "your parameter values)."
             )
+            unit = unit_formats(q.unit) if q.unit else None
         else:
             prompt = PROMPTS[part.part]
         parts.append(
@@ -258,10 +281,21 @@ def _parts(problem: Problem) -> list[dict[str, Any]]:
                 "quantity": part.quantity,
                 "points": part.points,
                 "prompt": prompt,
+                "unit": unit,
                 "multiline": part.part in MULTILINE,
+                "symbols": part_symbols(variant, part.part),
             }
         )
     return parts
+
+
+def _sheet(problem: Problem, answers: dict[str, Any]) -> str:
+    """The problem's key in the answer sheet's own TOML, as a student would hand it in."""
+    lines = [f"[problem{problem.index}]"]
+    for part in problem.parts:
+        answer = answers[part.quantity if part.part == EXPRESSION else part.part]
+        lines.append(f"{part.key} = {toml_literal(answer, part.part in MULTILINE)}")
+    return "\n".join(lines)
 
 
 def _inline_svg(svg: bytes) -> Markup:
