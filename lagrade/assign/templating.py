@@ -74,6 +74,23 @@ def toml_string(value: Any) -> str:
     return '"' + "".join(out) + '"'
 
 
+def toml_literal(value: str | list[str], multiline: bool = False) -> str:
+    """A TOML literal string: `'…'`, or `'''` with one item per line. Literal strings keep
+    backslashes as typed, so LaTeX (`\\theta`, `\\frac`) means what it says; in a "…" string
+    TOML would read `\\t` as a tab and `\\f` as a form feed. Falls back to a basic string only
+    when the text itself holds a quote that a literal string cannot."""
+    items = value if isinstance(value, list) else [value]
+    text = "\n".join(str(item) for item in items)
+    control = any(ord(ch) < 0x20 and ch not in "\t\n" for ch in text)
+    if multiline or len(items) > 1:
+        if "'''" not in text and not control and not text.endswith("'"):
+            return "'''\n" + text + ("\n" if text else "") + "'''"
+        return toml_string(text)
+    if "'" in text or "\n" in text or control:
+        return toml_string(text)
+    return f"'{text}'"
+
+
 def format_points(value: float) -> str:
     return f"{value:g}"
 
@@ -108,6 +125,7 @@ def environment(templates_dir: str | Path | None = None) -> jinja2.Environment:
         md=md_escape,
         mdcode=md_code,
         toml=toml_string,
+        literal=toml_literal,
         points=format_points,
         oneline=one_line,
     )

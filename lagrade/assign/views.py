@@ -7,6 +7,7 @@ from __future__ import annotations
 import hashlib
 import json
 import re
+import string
 from functools import lru_cache
 from typing import Any
 
@@ -15,13 +16,17 @@ from markupsafe import Markup, escape
 
 from lagrade.assign.assignment import EXPRESSION, Problem
 from lagrade.assign.figures import draw
-from lagrade.assign.templating import md_escape, tex_escape
+from lagrade.assign.symbols import part_symbols
+from lagrade.assign.templating import md_escape, tex_escape, toml_literal
+from lagrade.assign.units import unit_formats
 from lagrade.assign.variants import VariantChoice
 from lagrade.mechanics.scene import RigidBody, SceneVariant
 from lagrade.notation import printer as rm
+from lagrade.notation.keys import key_answer
 
 PROMPTS: dict[str, str] = {
-    "dof": "List the constraints and give the number of degrees of freedom.",
+    "dof": "Count the constraints and give the number of degrees of freedom (DOF = 3N - k), "
+    "as a whole number, e.g. 2.",
     "coordinates": "Name the generalized coordinates (use the ones named in the statement).",
     "transformation": "Write the transformation equations: each body's Cartesian coordinates "
     "in terms of the generalized coordinates (and t).",
@@ -33,36 +38,58 @@ PROMPTS: dict[str, str] = {
     "cyclic": "Which coordinates are cyclic? (Write none if there are none.)",
     "conserved": "Give the conserved quantities as functions of the coordinates and velocities.",
 }
+#: Parts with a key answer of their own (an expression part's key is its quantity's name).
+KEYED_PARTS = tuple(PROMPTS)
 #: Parts whose answer sheet field holds several lines (one equation or item per line).
 MULTILINE = frozenset({"transformation", "eom", "momenta", "conserved"})
-_WORD = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
+#: A name in prose: a whole word, not part of a possessive or a contraction ("pendulum's").
+_WORD = re.compile(r"(?<![\w'\u2019])[A-Za-z][A-Za-z0-9_]*(?![\w'\u2019])")
 _ENGLISH = frozenset({"a", "A", "I"})
 
 
 def _statement(variant: SceneVariant) -> dict[str, Any]:
-    """The statement with every coordinate and parameter name set as math, in each format."""
-    text = variant.statement()
-    names = set(variant.coordinates) | set(variant.parameter_symbols)
-    md, html, tex = [], [], []
-    last = 0
-    for match in _WORD.finditer(text):
-        word = match.group()
-        if word not in names or word in _ENGLISH:
-            continue
-        before = text[last : match.start()]
-        md.append(md_escape(before))
-        html.append(str(escape(before)))
-        tex.append(tex_escape(before))
-        math = rm.render(sp.Symbol(word))
-        md.append(f"${math.latex}$")
-        html.append(str(math.mathml))
-        tex.append(f"${math.latex}$")
-        last = match.end()
-    rest = text[last:]
-    md.append(md_escape(rest))
-    html.append(str(escape(rest)))
-    tex.append(tex_escape(rest))
-    return {"text": text, "md": "".join(md), "html": Markup("".join(html)), "tex": "".join(tex)}
+    """The statement with every coordinate and parameter name set as math, in each format.
+
+    Coordinates enter through the statement's fields (`{theta}`), so a renamed coordinate is set
+    as math exactly where the scene put it and nowhere else; prose is searched only for the
+    parameters and the coordinates no variant renames (`V = m g z`), as whole words.
+    """
+    scene = variant.scene
+    fill = variant.statement_fill
+    fixed = {c for c in scene.coordinates if len(scene.renames.get(c, (c,))) == 1}
+    prose_names = (set(variant.parameter_symbols) | fixed) - _ENGLISH
+    math_fields = set(scene.coordinates) | set(variant.parameter_symbols)
+    md: list[str] = []
+    html: list[str] = []
+    tex: list[str] = []
+
+    def text(chunk: str) -> None:
+        md.append(md_escape(chunk))
+        html.append(str(escape(chunk)))
+        tex.append(tex_escape(chunk))
+
+    def math(name: str) -> None:
+        rendered = rm.render(sp.Symbol(name))
+        md.append(f"${rendered.latex}$")
+        html.append(str(rendered.mathml))
+        tex.append(f"${rendered.latex}$")
+
+    for literal, field_name, _spec, _conversion in string.Formatter().parse(scene.statement):
+        last = 0
+        for match in _WORD.finditer(literal):
+            if match.group() in prose_names:
+                text(literal[last : match.start()])
+                math(match.group())
+                last = match.end()
+        text(literal[last:])
+        if field_name is not None:
+            (math if field_name in math_fields else text)(fill[field_name])
+    return {
+        "text": variant.statement(),
+        "md": "".join(md),
+        "html": Markup("".join(html)),
+        "tex": "".join(tex),
+    }
 
 
 def _body_kind(body: Any) -> str:
@@ -126,6 +153,14 @@ def symbolic_solution(scene_id: str, names: tuple, options: tuple) -> dict[str, 
             for name, q in system.conserved_quantities.items()
         ],
         "figure": draw(v),
+        # the answers as a student types them: the very text the grader checks before it
+        # accepts a variant (lagrade.judge.verify), one entry per part the scene can ask
+        "key_answers": {
+            **{part: key_answer(v, part) for part in KEYED_PARTS if part != "conserved"},
+            **({"conserved": key_answer(v, "conserved")} if system.conserved_quantities else {}),
+            **{q: key_answer(v, EXPRESSION, q) for q in v.quantities},
+        },
+        "variant": v,
     }
 
 
@@ -144,7 +179,7 @@ def problem_view(problem: Problem, choice: VariantChoice, name: str) -> dict[str
     variant = choice.variant(scene)
     parameters = _parameters(choice, variant)
     quantities = _quantities(problem, choice, variant)
-    parts = _parts(problem)
+    parts = _parts(problem, symbolic["variant"])
     return {
         "index": problem.index,
         "title": problem.title,
@@ -163,8 +198,13 @@ def problem_view(problem: Problem, choice: VariantChoice, name: str) -> dict[str
             "inline_svg": _inline_svg(symbolic["figure"].svg),
         },
         "solution": {
-            **{k: v for k, v in symbolic.items() if k not in ("figure", "statement")},
+            **{
+                k: v
+                for k, v in symbolic.items()
+                if k not in ("figure", "statement", "variant", "key_answers")
+            },
             "quantities": quantities,
+            "sheet": _sheet(problem, symbolic["key_answers"]),
         },
     }
 
@@ -180,6 +220,7 @@ def _parameters(choice: VariantChoice, variant: SceneVariant) -> list[dict[str, 
                 "symbol": rm.render(variant.parameter_symbols[p.name]),
                 "value": None if value is None else f"{value:g}",
                 "unit": p.unit,
+                "units": unit_formats(p.unit),
                 "description": p.description,
                 "domain": p.domain.text,
             }
@@ -203,7 +244,8 @@ def _quantities(
             "name": q.name,
             "description": q.description,
             "unit": q.unit,
-            "formula": rm.equation(sp.Symbol(q.name), expr, variant.coordinates),
+            "units": unit_formats(q.unit),
+            "formula": rm.named_equation(q.name, expr, variant.coordinates),
             "value": _number(
                 expr.xreplace(
                     {
@@ -216,18 +258,20 @@ def _quantities(
     return quantities
 
 
-def _parts(problem: Problem) -> list[dict[str, Any]]:
-    """The parts asked, each with its prompt and points."""
+def _parts(problem: Problem, variant: SceneVariant) -> list[dict[str, Any]]:
+    """The parts asked, each with its prompt, points, unit (numeric follow-ups) and the names
+    its answer may use."""
     declared = {q.name: q for q in problem.scene.quantities}
     parts = []
     for part in problem.parts:
+        unit = None
         if part.part == EXPRESSION:
             q = declared[part.quantity]
-            unit = f" (in {q.unit})" if q.unit else ""
             prompt = (
-                f"Find {q.description}: a closed form in the parameters, and its value for "
-                f"your parameter values{unit}."
+                f"Find {q.description}: a closed form in the parameters (or its value for "
+                "your parameter values)."
             )
+            unit = unit_formats(q.unit) if q.unit else None
         else:
             prompt = PROMPTS[part.part]
         parts.append(
@@ -237,10 +281,21 @@ def _parts(problem: Problem) -> list[dict[str, Any]]:
                 "quantity": part.quantity,
                 "points": part.points,
                 "prompt": prompt,
+                "unit": unit,
                 "multiline": part.part in MULTILINE,
+                "symbols": part_symbols(variant, part.part),
             }
         )
     return parts
+
+
+def _sheet(problem: Problem, answers: dict[str, Any]) -> str:
+    """The problem's key in the answer sheet's own TOML, as a student would hand it in."""
+    lines = [f"[problem{problem.index}]"]
+    for part in problem.parts:
+        answer = answers[part.quantity if part.part == EXPRESSION else part.part]
+        lines.append(f"{part.key} = {toml_literal(answer, part.part in MULTILINE)}")
+    return "\n".join(lines)
 
 
 def _inline_svg(svg: bytes) -> Markup:

@@ -140,6 +140,11 @@ class Scene:
     and returns expressions that vanish on the constraint surface (besides planarity, which 2-D
     positions declare by themselves). `renames` offers other names for a coordinate and
     `options` other presentation choices; a seeded variant draws from both.
+
+    In `statement`, `{theta}` stands for a coordinate (under the variant's name), `{angle_from}`
+    for an option's choice (as `wording[option][choice]` reads, else the choice itself), and
+    `{a}` for a parameter whose name is also an English word; handouts set coordinates and
+    parameters as math.
     """
 
     id: str
@@ -154,6 +159,7 @@ class Scene:
     options: Mapping[str, tuple[str, ...]] = field(default_factory=dict)
     quantities: tuple[Quantity, ...] = ()
     tags: tuple[str, ...] = ()
+    wording: Mapping[str, Mapping[str, str]] = field(default_factory=dict)
 
     def __post_init__(self) -> None:
         problems = []
@@ -176,6 +182,9 @@ class Scene:
         for name, choices in self.options.items():
             if not choices:
                 problems.append(f"options: {name!r} offers no choice")
+        for name, words in self.wording.items():
+            if name not in self.options or set(words) != set(self.options[name]):
+                problems.append(f"wording: {name!r} must word each choice of an option")
         if problems:
             raise SceneError(self.id, problems)
 
@@ -457,10 +466,20 @@ class SceneVariant:
             for n, v in self.values.items()
         }
 
+    @property
+    def statement_fill(self) -> dict[str, str]:
+        """What each `{field}` of the statement reads as in this variant: a coordinate's name,
+        an option's wording, a parameter's name."""
+        words = {o: self.scene.wording.get(o, {}).get(v, v) for o, v in self.options.items()}
+        return (
+            {p.name: p.name for p in self.scene.parameters}
+            | {c: self.names[c] for c in self.scene.coordinates}
+            | words
+        )
+
     def statement(self) -> str:
         """The problem text with this variant's coordinate names and option words filled in."""
-        fill = {c: self.names[c] for c in self.scene.coordinates} | dict(self.options)
-        return self.scene.statement.format(**fill)
+        return self.scene.statement.format(**self.statement_fill)
 
 
 def _normalized(body: Body) -> Body:

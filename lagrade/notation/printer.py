@@ -110,7 +110,10 @@ def mathml(expr: sp.Basic, coordinates: Iterable[str] = (), display: str = "inli
 
 def plain(expr: sp.Basic, order: str | None = None) -> str:
     """The notation students type: `m*theta_dot^2/2`, `sin(theta)`, terms in sympy's usual order
-    (`1 - x`); `order="lex"` sorts them strictly (`-x + 1`), as handouts do."""
+    (`1 - x`); `order="lex"` sorts them strictly (`-x + 1`), as handouts do. An equation reads
+    `lhs = rhs`, as the grader parses it (sympy would print `Eq(lhs, rhs)`)."""
+    if isinstance(expr, sp.Equality):
+        return f"{plain(expr.lhs, order)} = {plain(expr.rhs, order)}"
     return sp.sstr(expr, order=order).replace("**", "^")
 
 
@@ -148,3 +151,26 @@ def render(expr: sp.Basic, coordinates: Iterable[str] = ()) -> Math:
 def equation(lhs: sp.Basic, rhs: sp.Basic, coordinates: Iterable[str] = ()) -> Math:
     """`lhs = rhs` in every notation (unevaluated, so `E = 0` stays an equation)."""
     return render(sp.Eq(lhs, rhs, evaluate=False), coordinates)
+
+
+def named_equation(name: str, expr: sp.Basic, coordinates: Iterable[str] = ()) -> Math:
+    """`name = expr` with the name written out as a word (a quantity's `block_acceleration`),
+    not read as a symbol with a subscript (block_{acceleration})."""
+    coords = tuple(coordinates)
+    word = name.replace("_", r"\_")
+    rhs = latex(expr, coords)
+
+    def mathml_of(display: str) -> Markup:
+        inner = _JetMathMLPrinter(coords).doprint(expr)
+        text = str(Markup.escape(name))
+        return Markup(
+            f'<math xmlns="{_MATHML_NS}" display="{display}"><mrow><mtext>{text}</mtext>'
+            f"<mo>=</mo>{inner}</mrow></math>"
+        )
+
+    return Math(
+        rf"\text{{{word}}} = {rhs}",
+        mathml_of("inline"),
+        mathml_of("block"),
+        f"{name} = {plain(expr, order='lex')}",
+    )

@@ -17,6 +17,8 @@ from lagrade.mechanics.scene import RigidBody
 
 def body_radius(g: Geometry, i: int, unit: float) -> float:
     b = g.bodies[i]
+    if b.name in g.hint.radii:
+        return g.number(g.hint.radii[b.name](g.variant.namespace))
     if isinstance(b, RigidBody):
         try:
             gyration = math.sqrt(g.number(b.inertia / b.mass))
@@ -48,7 +50,8 @@ def body_disc(ax: Any, unit: float, g: Geometry, i: int, b: Any) -> None:
         ax.plot(*at, marker="o", markersize=2.5, color=INK, zorder=5)
     else:
         ax.add_patch(Circle(tuple(at), r, facecolor=INK, edgecolor=INK, zorder=4))
-    put_text(ax, at + np.array([1.6 * r + 0.04 * unit, 1.6 * r]), f"${sp.latex(b.mass)}$")
+    # beside the disc, up and to the right; the layout moves it if something else is there
+    put_text(ax, at + (r + 0.05 * unit) * np.array([0.8, 0.8]), f"${sp.latex(b.mass)}$")
 
 
 def axes3d(ax: Any, unit: float, g: Geometry) -> None:

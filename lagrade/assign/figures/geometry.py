@@ -58,6 +58,11 @@ class Geometry:
         ns = variant.namespace
         self.scale = self._length_scale()
         self.pose = self._pose(ns)
+        self.offsets = {
+            i: np.array([self.number(c) for c in self.project(hint.offsets[b.name](ns))])
+            for i, b in enumerate(self.bodies)
+            if b.name in hint.offsets
+        }
 
     def project(self, position: Sequence[sp.Expr]) -> tuple[sp.Expr, sp.Expr]:
         """2-D positions as they are; 3-D ones (z up) in an oblique view with y going back."""
@@ -97,11 +102,12 @@ class Geometry:
         return float(as_expr(expr).xreplace(subs))
 
     def is_angle(self, q: sp.Symbol) -> bool:
-        """q enters the positions (and body angles) only through trigonometric functions."""
-        exprs = [as_expr(x) for b in self.bodies for x in b.position]
-        exprs += [as_expr(b.angle) for b in self.bodies if isinstance(b, RigidBody)]
-        hidden = [e.replace(lambda f: isinstance(f, TRIG), lambda f: sp.S.One) for e in exprs]
-        return any(e.has(q) for e in exprs) and not any(h.has(q) for h in hidden)
+        """q enters the positions only through trigonometric functions (a body's own angle may
+        be q itself: the ladder's tilt, the wheel's turn)."""
+        positions = [as_expr(x) for b in self.bodies for x in b.position]
+        angles = [as_expr(b.angle) for b in self.bodies if isinstance(b, RigidBody)]
+        hidden = [e.replace(lambda f: isinstance(f, TRIG), lambda f: sp.S.One) for e in positions]
+        return any(e.has(q) for e in positions + angles) and not any(h.has(q) for h in hidden)
 
     @cached_property
     def constrained(self) -> bool:
@@ -128,7 +134,8 @@ class Geometry:
         point = dict(self.pose) | {mech.t: self.hint.t} | dict(changes or {})
         values = self._funcs[body_index](*[point[a] for a in self.args])
         size = max((np.size(v) for v in values), default=1)
-        return np.array([np.broadcast_to(np.asarray(v, dtype=float), (size,)) for v in values]).T
+        pts = np.array([np.broadcast_to(np.asarray(v, dtype=float), (size,)) for v in values]).T
+        return pts + self.offsets[body_index] if body_index in self.offsets else pts
 
     @cached_property
     def rng_points(self) -> list[dict[sp.Symbol, float]]:

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
+from dataclasses import dataclass
 from types import SimpleNamespace
 from typing import Any
 
@@ -13,6 +14,7 @@ import numpy as np
 import sympy as sp
 
 from lagrade.assign.figures.bodies import axes3d, body_disc, body_radius
+from lagrade.assign.figures.fixtures import anchor, angle_mark, plan_fixtures
 from lagrade.assign.figures.geometry import (
     TRIG,
     Geometry,
@@ -31,10 +33,24 @@ from lagrade.assign.figures.primitives import (
     put_text,
     time_mark,
 )
-from lagrade.assign.figures.style import ACCENT, GREY, INK
+from lagrade.assign.figures.style import ACCENT, GREY, INK, TRACE_STYLE
 from lagrade.mechanics import lagrange as mech
 from lagrade.mechanics.scene import RigidBody, as_expr
 from lagrade.notation.printer import name_latex
+
+#: What a traced path is, by its style: a constraint surface is a track the body runs on.
+TRACE_KIND = {"solid": "track", "path": "path", "time": "time"}
+
+
+@dataclass(frozen=True)
+class Op:
+    """One element of the figure: what it is (`body`, `rod`, `spring`, `mark`, …), whose it is
+    (a body's or coordinate's name), and how to draw it on axes scaled by `unit`. The kinds let
+    the figure test ask whether everything the scene declares was drawn."""
+
+    kind: str
+    name: str
+    draw: Callable[[Any, float], None]
 
 
 class Drawing:
@@ -42,9 +58,17 @@ class Drawing:
 
     def __init__(self, geometry: Geometry):
         self.g = geometry
-        self.traces: list[tuple[np.ndarray, str]] = []  # (points, style)
-        self.ops: list[Callable[[Any, float], None]] = []
+        self.traces: list[Op] = []  # drawn first, under everything
+        self.ops: list[Op] = []
         self.points: list[np.ndarray] = []
+
+    def add(self, kind: str, name: str, draw: Callable[[Any, float], None]) -> None:
+        self.ops.append(Op(kind, name, draw))
+
+    def trace(self, pts: np.ndarray, style: str, name: str) -> None:
+        self.traces.append(
+            Op(TRACE_KIND[style], name, lambda ax, u: ax.plot(*pts.T, **TRACE_STYLE[style]))
+        )
 
     def add_points(self, pts: np.ndarray) -> None:
         finite = pts[np.all(np.isfinite(pts), axis=1)]
@@ -57,6 +81,7 @@ def plan(geometry: Geometry) -> Drawing:
     d = Drawing(geometry)
     ns = geometry.variant.namespace
     _plan_shapes(d, ns)
+    plan_fixtures(d.g, ns, d.add, d.add_points)
     centre_of = np.mean(np.vstack(d.points), axis=0)
     for k, j in enumerate(geometry.jets):
         _plan_coordinate(d, k, j, ns, centre_of)
@@ -74,18 +99,22 @@ def _plan_shapes(d: Drawing, ns: SimpleNamespace) -> None:
     for body_name, shape in g.hint.shapes.items():
         vertices = np.array([[g.number(c) for c in g.project(v)] for v in shape(ns)])
         d.add_points(vertices)
-        d.ops.append(
+        d.add(
+            "body",
+            body_name,
             lambda ax, u, v=vertices: ax.fill(
                 *v.T, facecolor="#e4e4e4", edgecolor=INK, linewidth=1.2, zorder=2
-            )
+            ),
         )
         index = next((k for k, b in enumerate(g.bodies) if b.name == body_name), None)
         if index is not None:
             centroid = vertices.mean(axis=0)
-            d.ops.append(
+            d.add(
+                "label",
+                body_name,
                 lambda ax, u, c=centroid, b=g.bodies[index]: put_text(
                     ax, c, f"${sp.latex(b.mass)}$", zorder=6
-                )
+                ),
             )
 
 
@@ -97,24 +126,34 @@ def _plan_coordinate(
     canonical = g.variant.scene.coordinates[k]
     label = f"${name_latex(j.name)}$"
     carriers = g.carriers(j.q)
+    if canonical in g.hint.angles:
+        _plan_marked_angle(d, canonical, label, ns)
+        return
+    if canonical in g.hint.spans:
+        a, b = (anchor(g, x) for x in g.hint.spans[canonical](ns))
+        d.add("mark", j.name, lambda ax, u: dimension(ax, u, a, b, label, centre_of, both=True))
+        return
     if not carriers:
         _plan_rotation(d, j, label)
         return
     lo, hi = _sweep_range(g, canonical, j.q, ns)
     sweep = np.linspace(lo, hi, 181)
+    shown = g.hint.sweeps.get(canonical) != "none"
     for n, i in enumerate(carriers):
         pts = g.at(i, {j.q: sweep})
-        d.add_points(pts)
+        if shown:
+            d.add_points(pts)
         if g.is_angle(j.q):
             style = "solid" if canonical in g.hint.solid else "path"
-            d.traces.append((pts, style))
+            if shown:
+                d.trace(pts, style, j.name)
             if n == 0:  # one label per coordinate, however many bodies it moves
                 _plan_angle(d, i, j, label, canonical)
         else:
-            if g.constrained:  # the sweep traces a track; a free body has none
-                d.traces.append((pts, "solid"))
+            if g.constrained and shown:  # the sweep traces a track; a free body has none
+                d.trace(pts, "solid", j.name)
             if n == 0:
-                _plan_length(d, i, j, label, pts, centre_of)
+                _plan_length(d, i, j, label, pts if shown else None, centre_of)
 
 
 def _sweep_range(
@@ -137,19 +176,22 @@ def _plan_dimensions_and_bodies(d: Drawing, ns: SimpleNamespace, centre_of: np.n
     shaped = set(g.hint.shapes)
     for name, ends in g.hint.dimensions:
         a, b = (np.array([g.number(c) for c in g.project(p)]) for p in ends(ns))
-        d.ops.append(
+        d.add(
+            "dimension",
+            name,
             lambda ax, u, a=a, b=b, n=name: dimension(
                 ax, u, a, b, f"${name_latex(n)}$", centre_of, both=True
-            )
+            ),
         )
+    barred = {f.body for f in g.hint.fixtures(ns) if f.kind == "bar"}
     for i, b in enumerate(g.bodies):
-        if b.name in shaped:
+        if b.name in shaped or b.name in barred:
             continue
-        d.ops.append(lambda ax, u, i=i, b=b: body_disc(ax, u, g, i, b))
+        d.add("body", b.name, lambda ax, u, i=i, b=b: body_disc(ax, u, g, i, b))
     if any(s.name == "g" for s in g.variant.potential_energy.free_symbols):
-        d.ops.append(lambda ax, u: gravity_arrow(ax, u, d.points))
+        d.add("gravity", "g", lambda ax, u: gravity_arrow(ax, u, d.points))
     if g.three_d:
-        d.ops.append(lambda ax, u: axes3d(ax, u, g))
+        d.add("axes", "xyz", lambda ax, u: axes3d(ax, u, g))
 
 
 def _plan_angle(d: Drawing, body: int, j: mech.Jet, label: str, canonical: str) -> None:
@@ -161,7 +203,7 @@ def _plan_angle(d: Drawing, body: int, j: mech.Jet, label: str, canonical: str) 
     pose = g.pose[j.q]
     if found is None:
         pts = g.at(body, {j.q: np.linspace(pose - 0.3, pose, 20)})
-        d.ops.append(lambda ax, u: arrow_along(ax, pts, label, u))
+        d.add("mark", j.name, lambda ax, u: arrow_along(ax, pts, label, u))
         return
     centre, radius = found
     position = g.at(body)[0]
@@ -170,6 +212,7 @@ def _plan_angle(d: Drawing, body: int, j: mech.Jet, label: str, canonical: str) 
     zero = g.at(body, {j.q: np.array([0.0])})[0]
     arc = g.at(body, {j.q: np.linspace(0.0, pose, 40)})
     rods = g.hint.rods and g.constrained  # a free orbit (Kepler) hangs from nothing
+    spokes = g.hint.spokes
 
     def draw(ax: Any, unit: float) -> None:
         ax.plot(
@@ -185,7 +228,7 @@ def _plan_angle(d: Drawing, body: int, j: mech.Jet, label: str, canonical: str) 
             )
             if pivot_body is None:
                 pivot(ax, centre, unit)
-        else:
+        elif spokes:
             ax.plot(*np.array([centre, position]).T, color=INK, linewidth=0.9, zorder=3)
             ax.plot(*centre, marker="o", markersize=3, color=INK, zorder=4)
         if length:
@@ -196,7 +239,17 @@ def _plan_angle(d: Drawing, body: int, j: mech.Jet, label: str, canonical: str) 
         mid = centre + 1.45 * r * (g.at(body, {j.q: np.array([pose / 2])})[0] - centre)
         put_text(ax, mid, label, color=ACCENT)
 
-    d.ops.append(draw)
+    d.add("rod" if rods else "mark", j.name, draw)
+
+
+def _plan_marked_angle(d: Drawing, canonical: str, label: str, ns: SimpleNamespace) -> None:
+    """An angle the hint places (the ladder's, at its top or foot, between it and the wall or
+    the floor), where no circular path of a body would show it."""
+    g = d.g
+    vertex, a, b = (
+        np.array([g.number(c) for c in g.project(p)]) for p in g.hint.angles[canonical](ns)
+    )
+    d.add("mark", canonical, lambda ax, u: angle_mark(ax, u, vertex, a, b, label))
 
 
 def _body_at(g: Geometry, body: int, centre: np.ndarray, radius: float) -> int | None:
@@ -225,17 +278,20 @@ def _rod_length(g: Geometry, body: int, q: sp.Symbol) -> str | None:
 
 
 def _plan_length(
-    d: Drawing, body: int, j: mech.Jet, label: str, trace: np.ndarray, centre_of: np.ndarray
+    d: Drawing, body: int, j: mech.Jet, label: str, trace: np.ndarray | None, centre_of: np.ndarray
 ) -> None:
     """A length coordinate: a dimension arrow from where it is zero to the pose; on a straight
-    track inclined at an angle parameter, that angle marked at the track's lower end."""
+    track inclined at an angle parameter, that angle marked at the track's lower end (unless the
+    track is not drawn: a declared surface marks its own angle)."""
     g = d.g
     pose = g.pose[j.q]
     pts = g.at(body, {j.q: np.linspace(0.0, pose, 30)})
     if np.hypot(*(pts[-1] - pts[0])) < 1e-9:
         return
-    d.ops.append(lambda ax, u: dimension(ax, u, pts[0], pts[-1], label, centre_of, path=pts))
-    if g.three_d:
+    d.add(
+        "mark", j.name, lambda ax, u: dimension(ax, u, pts[0], pts[-1], label, centre_of, path=pts)
+    )
+    if g.three_d or trace is None:
         return
     # a straight track inclined at an angle parameter: mark that angle at its lower end
     position = g.project(g.bodies[body].position)
@@ -245,7 +301,11 @@ def _plan_length(
             if g.identically_zero(
                 direction[1] * sp.cos(a) - sign * direction[0] * sp.sin(a)
             ) and not g.identically_zero(direction[0]):
-                d.ops.append(lambda ax, u, a=a: incline_angle(ax, u, trace, name_latex(a.name)))
+                d.add(
+                    "mark",
+                    a.name,
+                    lambda ax, u, a=a: incline_angle(ax, u, trace, name_latex(a.name)),
+                )
                 return
 
 
@@ -268,7 +328,7 @@ def _plan_rotation(d: Drawing, j: mech.Jet, label: str) -> None:
                     color=ACCENT,
                 )
 
-            d.ops.append(draw)
+            d.add("mark", j.name, draw)
             return
 
 
@@ -293,8 +353,10 @@ def _plan_time(d: Drawing) -> None:
         times = g.hint.t + np.linspace(0, period, 121)
         pts = g.at(i, {mech.t: times})
         d.add_points(pts)
-        d.traces.append((pts, "time"))
+        d.trace(pts, "time", b.name)
         axis = rotation_axis(g, i, times) if label != "$t$" else None
-        d.ops.append(
-            lambda ax, u, pts=pts, label=label, axis=axis: time_mark(ax, u, pts, label, axis)
+        d.add(
+            "mark",
+            "t",
+            lambda ax, u, pts=pts, label=label, axis=axis: time_mark(ax, u, pts, label, axis),
         )

@@ -1,17 +1,20 @@
-"""The public entry of the figures: `draw` lays a scene variant out, scales it to its extent and
-renders it to SVG and PDF bytes, the same bytes on every run."""
+"""The public entry of the figures: `compose` lays a scene variant out, scales it to its extent,
+keeps its labels apart and inside the frame, and says which artists draw which element; `draw`
+renders that to SVG and PDF bytes, the same bytes on every run."""
 
 from __future__ import annotations
 
 import io
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
 from lagrade.assign.figures.geometry import Geometry
 from lagrade.assign.figures.hints import HINTS, FigureHint
+from lagrade.assign.figures.layout import drawn, settle
 from lagrade.assign.figures.plan import plan
-from lagrade.assign.figures.style import RC, TRACE_STYLE
+from lagrade.assign.figures.style import RC
 from lagrade.errors import LagradeError
 from lagrade.mechanics.scene import SceneVariant
 
@@ -28,12 +31,33 @@ class Figure:
     pdf: bytes
 
 
-def draw(variant: SceneVariant) -> Figure:
-    """The figure of `variant`, as SVG and PDF bytes (deterministic)."""
+@dataclass(frozen=True)
+class Element:
+    """What one planned element put on the page: its kind (`body`, `spring`, `mark`, …), whose
+    it is, and its matplotlib artists."""
+
+    kind: str
+    name: str
+    artists: tuple[Any, ...]
+
+
+@dataclass(frozen=True)
+class Composed:
+    """A laid-out figure, before it is saved: the matplotlib figure, its axes, its elements."""
+
+    figure: Any
+    axes: Any
+    elements: tuple[Element, ...]
+
+
+def compose(variant: SceneVariant) -> Composed:
+    """The figure of `variant` laid out on a matplotlib figure, with its elements."""
     import matplotlib
 
     matplotlib.use("Agg", force=False)
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
     from matplotlib.figure import Figure as MplFigure
+    from matplotlib.patches import Circle
 
     hint = HINTS.get(variant.scene.id, FigureHint())
     try:
@@ -49,17 +73,37 @@ def draw(variant: SceneVariant) -> Figure:
         lo, hi = lo - 0.5 * unit, hi + 0.5 * unit
     with matplotlib.rc_context(RC):
         fig = MplFigure(figsize=(4.6, 3.6))
+        FigureCanvasAgg(fig)
         ax = fig.add_axes((0, 0, 1, 1))
         ax.set_aspect("equal")
         ax.axis("off")
-        for pts, style in drawing.traces:
-            ax.plot(*pts.T, **TRACE_STYLE[style])
-        for op in drawing.ops:
-            op(ax, unit)
-        margin = 0.2 * unit
+        elements = []
+        for op in (*drawing.traces, *drawing.ops):
+            before = set(map(id, drawn(ax)))
+            op.draw(ax, unit)
+            new = tuple(a for a in drawn(ax) if id(a) not in before)
+            elements.append(Element(op.kind, op.name, new))
+        margin = 0.12 * unit
         ax.set_xlim(lo[0] - margin, hi[0] + margin)
         ax.set_ylim(lo[1] - margin, hi[1] + margin)
-        svg, pdf = io.BytesIO(), io.BytesIO()
-        fig.savefig(svg, format="svg", metadata={"Date": None})
-        fig.savefig(pdf, format="pdf", metadata={"CreationDate": None, "ModDate": None})
+        discs = [
+            a
+            for e in elements
+            if e.kind in ("body", "pulley")
+            for a in e.artists
+            if isinstance(a, Circle)
+        ]
+        settle(fig, ax, discs)
+    return Composed(fig, ax, tuple(elements))
+
+
+def draw(variant: SceneVariant) -> Figure:
+    """The figure of `variant`, as SVG and PDF bytes (deterministic)."""
+    import matplotlib
+
+    composed = compose(variant)
+    svg, pdf = io.BytesIO(), io.BytesIO()
+    with matplotlib.rc_context(RC):
+        composed.figure.savefig(svg, format="svg", metadata={"Date": None})
+        composed.figure.savefig(pdf, format="pdf", metadata={"CreationDate": None, "ModDate": None})
     return Figure(svg.getvalue(), pdf.getvalue())

@@ -13,7 +13,7 @@ SCENE = Scene(
     statement=(
         "Two blocks of mass m slide without friction on a horizontal line between two walls. "
         "Each is tied to its wall by a spring of constant k, and to each other by a spring of "
-        "constant k_c; at rest all springs are relaxed and the blocks are a distance a apart. "
+        "constant k_c; at rest all springs are relaxed and the blocks are a distance {a} apart. "
         "Use the displacements {x_1} and {x_2} of the blocks from their rest positions."
     ),
     coordinates=("x_1", "x_2"),

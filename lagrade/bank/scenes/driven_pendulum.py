@@ -18,7 +18,7 @@ SCENE = Scene(
     title="Pendulum with an oscillating support",
     statement=(
         "The support of a simple pendulum (bob of mass m, massless rod of length l) is driven "
-        "up and down so that its height is a cos(omega t). Use the angle {theta} between the "
+        "up and down so that its height is {a} cos(omega t). Use the angle {theta} between the "
         "rod and the {angle_from}. Is h conserved?"
     ),
     coordinates=("theta",),

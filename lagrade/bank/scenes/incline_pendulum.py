@@ -31,9 +31,7 @@ SCENE = Scene(
         "A block of mass M slides without friction down a fixed incline of angle alpha. From the "
         "block hangs a pendulum of length l with a bob of mass m, swinging in the vertical plane "
         "of the incline's slope. Use the distance {s} the block has slid down the incline and "
-        "the pendulum's angle {phi}, measured from the {angle_from} (from the downward vertical, "
-        "positive towards the top of the incline; or downwards from the horizontal that points "
-        "to the top of the incline)."
+        "the pendulum's angle {phi}, measured {angle_from}."
     ),
     coordinates=("s", "phi"),
     parameters=(
@@ -51,6 +49,12 @@ SCENE = Scene(
     ),
     renames={"s": ("s", "q", "x"), "phi": ("phi", "theta", "psi")},
     options={"angle_from": ("vertical", "horizontal")},
+    wording={
+        "angle_from": {
+            "vertical": "from the downward vertical, positive towards the top of the incline",
+            "horizontal": "downwards from the horizontal that points to the top of the incline",
+        }
+    },
     quantities=(
         Quantity(
             "steady_angle",

@@ -1,0 +1,103 @@
+"""The last step of a figure, done on the rendered artists rather than guessed from scene units:
+move each label off the labels and bodies before it, then widen the limits until every artist
+is inside the frame, and repeat until nothing moves (a label is 12 pt whatever the scene's size,
+so only the renderer knows where it ends)."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterable, Sequence
+from typing import Any
+
+import numpy as np
+
+#: Pixels a label keeps from what it must not touch, and the rings it is tried on when moved.
+_GAP = 2.0
+_RINGS = tuple(range(4, 96, 4))
+_DIRECTIONS = tuple((math.cos(a), math.sin(a)) for a in np.linspace(0, 2 * math.pi, 16, False))
+
+
+def labels(ax: Any) -> list[Any]:
+    """The texts that show something (arrow annotations carry an empty text)."""
+    return [t for t in ax.texts if t.get_visible() and t.get_text().strip()]
+
+
+def extent(artist: Any, renderer: Any) -> Any:
+    """An artist's box on the canvas, unclipped; an annotation's is its arrow's."""
+    patch = getattr(artist, "arrow_patch", None)
+    if patch is not None and not artist.get_text().strip():
+        artist.update_positions(renderer)  # the arrow's path is laid out only when drawn
+        return patch.get_window_extent(renderer)
+    return artist.get_window_extent(renderer)
+
+
+def drawn(ax: Any) -> list[Any]:
+    """Every artist on the axes that puts ink on the page."""
+    return [a for a in (*ax.lines, *ax.patches, *ax.texts, *ax.collections) if a.get_visible()]
+
+
+def _free(box: Any, taken: Iterable[Any], frame: Any) -> bool:
+    inside = box.x0 >= frame.x0 and box.y0 >= frame.y0 and box.x1 <= frame.x1 and box.y1 <= frame.y1
+    return inside and not any(box.overlaps(t) for t in taken)
+
+
+def _declutter(ax: Any, renderer: Any, obstacles: Sequence[Any]) -> bool:
+    """Move each label, in drawing order, to the nearest free place; True when one moved."""
+    frame = ax.get_window_extent(renderer)
+    taken = [o.get_window_extent(renderer).padded(_GAP) for o in obstacles]
+    moved = False
+    for text in labels(ax):
+        box = text.get_window_extent(renderer).padded(_GAP)
+        if not _free(box, taken, frame):
+            for ring in _RINGS:
+                shift = next(
+                    (
+                        (ring * dx, ring * dy)
+                        for dx, dy in _DIRECTIONS
+                        if _free(box.translated(ring * dx, ring * dy), taken, frame)
+                    ),
+                    None,
+                )
+                if shift is not None:
+                    x, y = ax.transData.transform(text.get_position())
+                    text.set_position(
+                        ax.transData.inverted().transform((x + shift[0], y + shift[1]))
+                    )
+                    box = box.translated(*shift)
+                    moved = True
+                    break
+        taken.append(box)
+    return moved
+
+
+def _fit(ax: Any, renderer: Any) -> bool:
+    """Widen the limits so that every artist is inside the axes' box; True when they grew."""
+    ax.apply_aspect()
+    frame = ax.get_window_extent(renderer).padded(-3)
+    boxes = [extent(a, renderer) for a in drawn(ax)]
+    boxes = [b for b in boxes if np.all(np.isfinite(b.get_points())) and b.width + b.height > 0]
+    x0 = min(b.x0 for b in boxes)
+    y0 = min(b.y0 for b in boxes)
+    x1 = max(b.x1 for b in boxes)
+    y1 = max(b.y1 for b in boxes)
+    if x0 >= frame.x0 and y0 >= frame.y0 and x1 <= frame.x1 and y1 <= frame.y1:
+        return False
+    to_data = ax.transData.inverted()
+    (dx0, dy0), (dx1, dy1) = to_data.transform([(x0, y0), (x1, y1)])
+    (lx0, lx1), (ly0, ly1) = ax.get_xlim(), ax.get_ylim()
+    pad = 0.04 * max(lx1 - lx0, ly1 - ly0)
+    ax.set_xlim(min(lx0, dx0 - pad), max(lx1, dx1 + pad))
+    ax.set_ylim(min(ly0, dy0 - pad), max(ly1, dy1 + pad))
+    ax.apply_aspect()
+    return True
+
+
+def settle(fig: Any, ax: Any, obstacles: Sequence[Any], rounds: int = 8) -> None:
+    """Declutter and fit in turns until neither changes anything."""
+    renderer = fig.canvas.get_renderer()
+    ax.apply_aspect()
+    for _ in range(rounds):
+        moved = _declutter(ax, renderer, obstacles)
+        grew = _fit(ax, renderer)
+        if not moved and not grew:
+            return

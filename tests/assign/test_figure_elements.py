@@ -1,0 +1,177 @@
+"""Figures hold up for every scene and every presentation: each body, and each spring, rope,
+pulley, wall, surface, rod or bar the statement names, is drawn; everything is inside the frame;
+no label sits on another label or on a body. Measured on the laid-out matplotlib artists."""
+
+from __future__ import annotations
+
+import itertools
+import re
+
+import numpy as np
+import pytest
+
+from lagrade.assign.figures import HINTS, FigureHint, compose
+from lagrade.assign.figures.layout import drawn, extent, labels
+from lagrade.bank import get_scene, scene_ids
+from lagrade.mechanics.scene import RigidBody, SceneVariant
+
+#: What a statement's noun obliges the figure to draw (any of these element kinds). A table
+#: seen from above (the two pucks, the rotating frame) is the page itself, so it is not here.
+NOUNS = {
+    "spring": {"spring"},
+    "string": {"rope"},
+    "rope": {"rope"},
+    "pulley": {"pulley"},
+    "wall": {"wall"},
+    "floor": {"surface", "track"},
+    "incline": {"surface", "track"},
+    "track": {"track", "surface"},
+    "hoop": {"track"},
+    "cone": {"track", "surface"},
+    "rod": {"rod", "track"},
+    "ladder": {"bar"},
+}
+
+
+def presentations(scene_id: str) -> list[SceneVariant]:
+    """Every option combination, and every name a coordinate can take (cycled alongside)."""
+    scene = get_scene(scene_id)
+    keys = sorted(scene.options)
+    combos = list(itertools.product(*(scene.options[k] for k in keys))) or [()]
+    longest = max((len(c) for c in scene.renames.values()), default=1)
+    out = []
+    for i in range(max(len(combos), longest)):
+        names = {c: choices[i % len(choices)] for c, choices in scene.renames.items()}
+        options = dict(zip(keys, combos[i % len(combos)], strict=True))
+        out.append(SceneVariant(scene, names=names, options=options))
+    return out
+
+
+CASES = [
+    pytest.param(v, id=f"{sid}-{i}")
+    for sid in scene_ids()
+    for i, v in enumerate(presentations(sid))
+]
+
+
+@pytest.fixture(scope="module")
+def composed():
+    cache: dict = {}
+
+    def get(variant: SceneVariant):
+        key = id(variant)
+        if key not in cache:
+            cache[key] = compose(variant)
+        return cache[key]
+
+    yield get
+    for c in cache.values():
+        c.figure.clear()
+
+
+@pytest.mark.parametrize("variant", CASES)
+def test_every_body_and_named_fixture_is_drawn(variant: SceneVariant, composed) -> None:
+    figure = composed(variant)
+    drawn_kinds = {e.kind for e in figure.elements if e.artists}
+    bodies = {e.name for e in figure.elements if e.kind in ("body", "bar") and e.artists}
+    assert {b.name for b in variant.bodies} <= bodies
+    words = set(re.findall(r"[a-z]+", variant.statement().lower()))
+    missing = {
+        noun: kinds for noun, kinds in NOUNS.items() if noun in words and not kinds & drawn_kinds
+    }
+    assert missing == {}, f"the statement names {sorted(missing)} but the figure draws none"
+    declared = HINTS.get(variant.scene.id, FigureHint()).fixtures(variant.namespace)
+    for f in declared:
+        assert any(e.kind == f.kind and e.artists for e in figure.elements), f.kind
+    marked = {e.name for e in figure.elements if e.kind in ("mark", "rod") and e.artists}
+    canonical = dict(zip(variant.coordinates, variant.scene.coordinates, strict=True))
+    for name in variant.coordinates:
+        assert name in marked or canonical[name] in marked, f"coordinate {name} is not marked"
+
+
+@pytest.mark.parametrize("variant", CASES)
+def test_everything_is_inside_the_frame(variant: SceneVariant, composed) -> None:
+    figure = composed(variant)
+    renderer = figure.figure.canvas.get_renderer()
+    frame = figure.figure.bbox
+    outside = []
+    for artist in drawn(figure.axes):
+        box = extent(artist, renderer)
+        if box.width + box.height == 0:
+            continue
+        if (
+            box.x0 < frame.x0 - 1
+            or box.y0 < frame.y0 - 1
+            or box.x1 > frame.x1 + 1
+            or box.y1 > frame.y1 + 1
+        ):
+            outside.append(
+                (type(artist).__name__, getattr(artist, "get_text", lambda: "")(), box.bounds)
+            )
+    assert outside == []
+
+
+@pytest.mark.parametrize("variant", CASES)
+def test_no_label_overlaps_a_label_or_a_body(variant: SceneVariant, composed) -> None:
+    from matplotlib.patches import Circle
+
+    figure = composed(variant)
+    renderer = figure.figure.canvas.get_renderer()
+    texts = [(t.get_text(), t.get_window_extent(renderer)) for t in labels(figure.axes)]
+    clashes = [
+        (a, b)
+        for (a, box_a), (b, box_b) in itertools.combinations(texts, 2)
+        if box_a.overlaps(box_b)
+    ]
+    discs = [
+        a.get_window_extent(renderer)
+        for e in figure.elements
+        if e.kind == "body"
+        for a in e.artists
+        if isinstance(a, Circle)
+    ]
+    clashes += [(t, "a body") for t, box in texts for d in discs if box.overlaps(d)]
+    assert clashes == []
+
+
+def _distance(point, a, b) -> float:
+    ab, ap = b - a, point - a
+    t = min(1.0, max(0.0, float(ab @ ap) / float(ab @ ab or 1.0)))
+    return float(np.hypot(*(ap - t * ab)))
+
+
+@pytest.mark.parametrize("variant", CASES)
+def test_no_wall_or_surface_cuts_through_a_body(variant: SceneVariant, composed) -> None:
+    """A body rests on a surface or against a wall; it never lies across one (the old rolling
+    cylinder's incline, traced through its centre, ran through its middle). A point mass may ride
+    a track drawn through it, as a bead on a wire; a rigid body has a size and may not."""
+    from matplotlib.lines import Line2D
+    from matplotlib.patches import Circle, Polygon
+
+    figure = composed(variant)
+    rigid = {b.name for b in variant.bodies if isinstance(b, RigidBody)}
+    discs = [
+        (np.array(a.center), a.radius, e.name in rigid)
+        for e in figure.elements
+        if e.kind == "body"
+        for a in e.artists
+        if isinstance(a, Circle)
+    ]
+    cuts = []
+    for e in figure.elements:
+        if e.kind not in ("surface", "wall", "track"):
+            continue
+        for artist in e.artists:
+            if isinstance(artist, Line2D):
+                pts = np.asarray(artist.get_xydata(), dtype=float)
+            elif isinstance(artist, Polygon):
+                pts = np.asarray(artist.get_xy(), dtype=float)
+            else:
+                continue
+            for centre, radius, sized in discs:
+                if e.kind == "track" and not sized:
+                    continue
+                for a, b in zip(pts[:-1], pts[1:], strict=True):
+                    if _distance(centre, a, b) < 0.97 * radius:
+                        cuts.append((e.kind, e.name))
+    assert cuts == []
