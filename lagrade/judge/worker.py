@@ -2,11 +2,14 @@
 `check()` API and `grade` alike.
 
 The rule. A part gets its time limit once its question is prepared (preparing, the instructor's
-side, has its own budget). The limit is enforced twice: inside the worker an alarm interrupts
-Python-level work (`time_limit`: the part's verdict is `timeout` and the worker keeps its caches),
-and the parent kills a worker that has not answered `GRACE` seconds after that (SIGKILL stops
-sympy or numpy stuck in C code); the item in hand then gets `timeout`, a fresh worker takes the
-rest. A worker moves the parent's deadline for the item in hand with `deadline(seconds)`.
+side, has its own budget per question, `Budget`; work of that kind that a check does on demand,
+such as deriving the mistake catalogue for a wrong answer, runs `set_aside` from the student's
+clock and is charged to the question's budget). The limit is enforced twice: inside the worker an
+alarm interrupts Python-level work (`time_limit`: the part's verdict is `timeout` and the worker
+keeps its caches), and the parent kills a worker that has not answered `GRACE` seconds after that
+(SIGKILL stops sympy or numpy stuck in C code); the item in hand then gets `timeout`, a fresh
+worker takes the rest. A worker moves the parent's deadline for the item in hand with
+`deadline(seconds)`.
 
 Workers are forked and persistent: what the parent derived before the pool started is shared,
 what a worker derives stays for its next items, and a worker is replaced after `Limits.recycle`
@@ -34,11 +37,78 @@ _FORK = mp.get_context("fork")
 
 #: Seconds past a part's time limit before the parent kills the worker (the alarm comes first).
 GRACE = 2.0
+#: Seconds of instructor-side work a question may take in one process (deriving its reference,
+#: sample points and, for wrong answers, its mistake catalogue): its `Budget`.
+PREPARE_LIMIT = 60.0
 
 
 class PartTimeout(BaseException):
     """A part's time limit ran out (raised by the alarm inside the process doing the work). A
     BaseException, like KeyboardInterrupt, so that no `except Exception` on the way swallows it."""
+
+
+class PreparationTimeout(PartTimeout):
+    """A question's preparation budget ran out (in `set_aside` work): the question, not the
+    answer, is what took too long."""
+
+
+@dataclass
+class Budget:
+    """The seconds of instructor-side work a question may still take, and what it has spent. One
+    per question and process: once `left` is used up, every later answer to the question gets
+    the same timeout at once instead of trying again."""
+
+    left: float
+    spent: float = 0.0
+
+    @property
+    def exhausted(self) -> bool:
+        return self.left <= 0
+
+
+_aside = False  # inside set_aside: nested instructor work is charged by the outer one
+
+
+@contextmanager
+def set_aside(budget: Budget, timed: bool | None = None):
+    """Run the block as the question's work, not the student's: a running part clock stops and
+    the question's remaining budget applies instead (PreparationTimeout when it runs out), then
+    the part clock goes on with the time it had left. The time is charged to `budget`.
+    `timed`: whether to enforce the budget (default: only when a part clock is running, so that
+    an untimed in-process check stays untimed)."""
+    global _aside
+    if _aside:
+        yield
+        return
+    remaining = signal.getitimer(signal.ITIMER_REAL)[0]
+    if timed is None:
+        timed = remaining > 0
+    if timed and budget.exhausted:
+        raise PreparationTimeout
+    previous = None
+    if timed:
+
+        def ring(signum, frame):
+            raise PreparationTimeout
+
+        previous = signal.signal(signal.SIGALRM, ring)
+        signal.setitimer(signal.ITIMER_REAL, budget.left)
+        deadline(budget.left + GRACE)
+    _aside = True
+    start = time.perf_counter()
+    try:
+        yield
+    finally:
+        _aside = False
+        elapsed = time.perf_counter() - start
+        budget.left -= elapsed
+        budget.spent += elapsed
+        if timed:
+            signal.setitimer(signal.ITIMER_REAL, 0)
+            signal.signal(signal.SIGALRM, previous)
+            if remaining > 0:
+                signal.setitimer(signal.ITIMER_REAL, remaining)
+                deadline(remaining + GRACE)
 
 
 @contextmanager
