@@ -181,9 +181,25 @@ def _limited(request: Mapping[str, Any]) -> Verdict:
     return check_request(body, limit)
 
 
+def _question_of(item: Any) -> str:
+    """A request's question, for sending all answers to one question to one worker (which
+    derives it once) and distinct questions to distinct workers."""
+    request, _limit = item
+    problem = request.get("problem") if isinstance(request, Mapping) else None
+    try:
+        return json.dumps(problem, sort_keys=True, separators=(",", ":"))
+    except (TypeError, ValueError):
+        return ""
+
+
 def check_pool(jobs: int = 1) -> Pool:
     """Workers for checking requests (what `run_batch` uses when it is given none)."""
-    return Pool(_limited, jobs=jobs, limits=Limits(seconds=PREPARE_LIMIT + GRACE))
+    return Pool(
+        _limited,
+        jobs=jobs,
+        limits=Limits(seconds=PREPARE_LIMIT + GRACE),
+        affinity=_question_of,
+    )
 
 
 _shared: Pool | None = None
