@@ -22,10 +22,9 @@ from typing import Protocol, TypeVar, Union
 import numpy as np
 import sympy as sp
 
+import lagrade.judge.keepers as keepers
 from lagrade.judge.compiled import Compiled
 from lagrade.judge.derivatives import euler_lagrange_values
-from lagrade.judge.equivalence import lagrangians_match
-from lagrade.judge.evaluate import UnsupportedExpression
 from lagrade.judge.lazylist import LazyList
 from lagrade.judge.matching import (
     SKIPPED,
@@ -52,7 +51,7 @@ from lagrade.judge.mutations import (
     swap_sin_cos,
     velocities_in,
 )
-from lagrade.judge.rows import equation_rows, in_span
+from lagrade.judge.rows import equation_rows
 from lagrade.judge.sampling import Points
 from lagrade.judge.worker import Budget, set_aside
 from lagrade.mechanics.lagrange import Jet, LagrangianSystem
@@ -326,7 +325,7 @@ class Catalogue:
         for m in mutants:
             try:
                 with np.errstate(all="ignore"):
-                    if test(self._compiled(m)):
+                    if test(self.compiled(m)):
                         return m
             except SKIPPED:
                 continue
@@ -384,7 +383,7 @@ class Catalogue:
             "el-stack",
             mutants,
             points,
-            lambda m: self._el_values(self._compiled(m), points),
+            lambda m: self.el_values(self.compiled(m), points),
             lambda Eb, Sb: lagrangian_arrays(Eb, Sb, points.group),
         )
 
@@ -395,7 +394,7 @@ class Catalogue:
             "value-stack",
             mutants,
             points,
-            lambda m: full(self._compiled(m).values(points.env), points.n),
+            lambda m: full(self.compiled(m).values(points.env), points.n),
             lambda b, sb: (b, sb),
         )
 
@@ -410,7 +409,7 @@ class Catalogue:
 
         def evaluate(pair):
             i, m = pair
-            rows = equation_rows([self._compiled(m)], p.jets, points.env)
+            rows = equation_rows([self.compiled(m)], p.jets, points.env)
             R = ref.coef.astype(float).copy()
             Rs = ref.size.astype(float).copy()
             R[:, i, :] = rows.coef[:, 0, :]
@@ -420,98 +419,21 @@ class Catalogue:
         return stacked(p.cached, "row-stack", pairs, points, evaluate, span_arrays)
 
     # --- helpers ----------------------------------------------------------------------------------
-    def _compiled(self, m: Mutant) -> Compiled:
+    def compiled(self, m: Mutant) -> Compiled:
         cache = self.__dict__.setdefault("_compiled_cache", {})
         if id(m) not in cache:
             cache[id(m)] = (m, Compiled.of(m.expr))
         return cache[id(m)][1]
 
-    def _el_values(self, mut: Compiled, points: Points):
+    def el_values(self, mut: Compiled, points: Points):
         return self.problem.cached(
             f"el:{id(mut)}",
             points,
             lambda: euler_lagrange_values(mut, self.problem.jets, points.env),
         )
 
-    # --- keeping the mutants the part's test tells apart ------------------------------------------
-    def _fingerprint(self, compiled: Compiled, mode: str, points: Points) -> np.ndarray | None:
-        """What the part's test sees of an answer: E(L) normalised (L is judged up to a factor),
-        plain values, or values up to a constant per parameter group (V)."""
-        if mode == "el":
-            v = self._el_values(compiled, points)[0].ravel()
-            norm = np.linalg.norm(v)
-            return None if norm == 0 else v / norm * np.sign(v[np.argmax(np.abs(v))])
-        v = np.broadcast_to(np.asarray(compiled.values(points.env)[0], float), (points.n,))
-        if mode == "offset":
-            v = v - v[np.searchsorted(points.group, points.group)]
-        return v
-
     def _keeper(self, mode: str, reference_of: Callable[[], Compiled]) -> Callable[[Mutant], bool]:
-        """The filter that drops mutants that change nothing the part's test sees, and
-        duplicates (the first, most specific, wins), by fingerprint at the part's points; it
-        sees the mutants in catalogue order and remembers the ones it kept."""
-        part = {"el": "lagrangian", "plain": "momenta", "offset": "V"}[mode]
-        seen: list[np.ndarray | None] = []
-
-        def keep(m: Mutant) -> bool:
-            points = self.problem.points(part)
-            reference = reference_of()
-            with np.errstate(all="ignore"):
-                if not seen:
-                    seen.append(self._fingerprint(reference, mode, points))
-                try:
-                    fp = self._fingerprint(self._compiled(m), mode, points)
-                except (UnsupportedExpression, ValueError, ZeroDivisionError):
-                    return False
-                if fp is None or not np.all(np.isfinite(fp)):
-                    return False
-                if mode == "el" and self._same_dynamics(m, reference, points):
-                    return False  # e.g. ½θ̇² for ½Iθ̇²: a parameter factor, the same motion
-                if any(o is not None and _close(fp, o) for o in seen):
-                    return False
-                seen.append(fp)
-                return True
-
-        return keep
-
-    def _same_dynamics(self, m: Mutant, reference: Compiled, points) -> bool:
-        """A 'mistake' whose Euler–Lagrange equations are a multiple of the reference's is no
-        mistake: the Lagrangian check accepts it, so the catalogue must not name it."""
-        match = lagrangians_match(self._compiled(m), reference, self.problem.jets, points)
-        return bool(match.outcome.equal) and all(c > 0 for c in match.factors)
+        return keepers.keeper(self, mode, reference_of)
 
     def _row_keeper(self) -> Callable[[tuple[int, Mutant]], bool]:
-        """`_keeper` for row mutants: a mutated row that still follows from the right equations
-        changes nothing, and rows equal up to sign are duplicates."""
-        p = self.problem
-        seen: list[tuple[int, np.ndarray]] = []
-        state: dict = {}
-
-        def keep(pair: tuple[int, Mutant]) -> bool:
-            i, m = pair
-            points = p.points("eom")
-            if "ref" not in state:
-                state["ref"] = equation_rows(p.euler_lagrange, p.jets, points.env)
-            try:
-                rows = equation_rows([self._compiled(m)], p.jets, points.env)
-            except (UnsupportedExpression, ValueError, ZeroDivisionError):
-                return False
-            r, s = in_span(rows, state["ref"], 0)
-            if np.all(np.abs(r) <= 1e-8 * s):
-                return False  # the mutated row is still a consequence of the right equations
-            fp = rows.coef[:, 0, :].ravel()
-            norm = np.linalg.norm(fp)
-            if not np.isfinite(norm) or norm == 0:
-                return False
-            fp = fp / norm
-            if any(min(np.linalg.norm(fp - o), np.linalg.norm(fp + o)) < 1e-8 for _, o in seen):
-                return False
-            seen.append((i, fp))
-            return True
-
-        return keep
-
-
-def _close(a: np.ndarray, b: np.ndarray) -> bool:
-    scale = max(np.max(np.abs(a)), np.max(np.abs(b)), 1e-300)
-    return a.shape == b.shape and float(np.max(np.abs(a - b))) <= 1e-9 * scale
+        return keepers.row_keeper(self)
