@@ -250,16 +250,19 @@ def iter_equation_mutants(
         )
     for m in lagrangian_mutants:
         if m.kind == "sign_of_V" or m.kind in KINETIC_KINDS:
+            # E is linear in L: E(L_mut) = E(L) + E(L_mut − L), and L_mut − L is a term or
+            # two, so only that is differentiated. Both sides expanded, the row is the very
+            # expression E(L_mut) expands to (tests/grading/test_diagnose.py holds that).
             try:
-                rows = LagrangianSystem(m.expr, jets).euler_lagrange
+                change = LagrangianSystem(sp.expand(m.expr - system.L), jets).euler_lagrange
             except Exception:  # noqa: BLE001 - a mutant we cannot differentiate is skipped
                 continue
-            for i, row in enumerate(rows):
-                if sp.expand(row - E[i]) != 0:
+            for i, delta in enumerate(change):
+                if delta != 0:
                     msg = m.message.replace(
                         "your L", f"the L behind your equation for {jets[i].name}"
                     )
-                    yield (i, Mutant(m.kind, msg, row))
+                    yield (i, Mutant(m.kind, msg, sp.expand(E[i] + delta)))
     for i, j in enumerate(jets):
         for m in iter_term_mutants(E[i], f"your equation for {j.name}", parameters):
             yield (i, m)
