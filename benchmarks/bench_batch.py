@@ -15,6 +15,7 @@ Timed, each from a cold start, on the same request file:
                       `solve` for the accelerations of equations of motion and of conserved
                       quantities; `--reference-limit` seconds per request (SIGALRM)
 
+Each command runs `--repeat` times from cold, interleaved; the median wall time is reported.
 Reported per run: wall time, requests/s, the share of preparation (`prepare_ms` over the time
 spent in the worker), p99 of the per-request time the results report, peak RSS of the largest
 process. The results of the baseline are compared with this tree's (verdicts, and every field but
@@ -29,6 +30,7 @@ import argparse
 import json
 import os
 import signal
+import statistics
 import subprocess
 import sys
 import tempfile
@@ -61,6 +63,7 @@ def run_cli(tree: Path, requests: Path, out: Path, jobs: int) -> tuple[float, fl
     done = subprocess.run(
         [sys.executable, "-c", _MEASURE, *command],
         env=env,
+        cwd=requests.parent,  # not this tree: `python -m` would import lagrade from the cwd
         capture_output=True,
         text=True,
         check=True,
@@ -225,6 +228,9 @@ def main() -> None:
     parser.add_argument("--reference-limit", type=float, default=2.0, help="seconds per request")
     parser.add_argument("--no-reference", action="store_true", help="skip the sympy reference")
     parser.add_argument("--seed", type=int, default=13)
+    parser.add_argument(
+        "--repeat", type=int, default=3, help="cold runs of each command (the median is shown)"
+    )
     args = parser.parse_args()
 
     t0 = time.perf_counter()
@@ -248,12 +254,18 @@ def main() -> None:
         runs = [("lagrade --jobs 1", ROOT, 1), ("lagrade --jobs 2", ROOT, 2)]
         if args.baseline:
             runs.append(("baseline --jobs 1", args.baseline.resolve(), 1))
-        for label, tree, jobs in runs:
-            out = Path(tmp) / f"out-{jobs}-{len(rows)}.jsonl"
-            wall, rss = run_cli(tree, path, out, jobs)
-            results[label] = [json.loads(line) for line in out.read_text().splitlines()]
+        walls: dict[str, list[tuple[float, float]]] = {label: [] for label, _t, _j in runs}
+        for round_ in range(args.repeat):  # interleaved, so that a busy moment hits all alike
+            for label, tree, jobs in runs:
+                out = Path(tmp) / f"out-{jobs}-{len(walls[label])}-{label[0]}.jsonl"
+                walls[label].append(run_cli(tree, path, out, jobs))
+                if round_ == 0:
+                    results[label] = [json.loads(line) for line in out.read_text().splitlines()]
+                print(f"  ran {label}: {walls[label][-1][0]:.2f} s")
+        for label, _tree, _jobs in runs:
+            wall = statistics.median(w for w, _rss in walls[label])
+            rss = max(r for _w, r in walls[label])
             rows.append(summarise(label, results[label], wall, rss))
-            print(f"  ran {label}: {wall:.2f} s")
     ref = None
     if not args.no_reference:
         wall, verdicts, late = run_reference(requests, args.reference_limit)
