@@ -147,11 +147,12 @@ def check_request(request: Mapping[str, Any], limit: float | None = None) -> Ver
         spent = budget.spent
         if budget.exhausted:
             return _preparation_timeout(part, budget, spent)
-        try:
-            with set_aside(budget, timed=limit is not None):
-                prepare(problem, part)
-        except PartTimeout:
-            return _preparation_timeout(part, budget, spent)
+        if (problem.key, part) not in _prepared:
+            try:
+                with set_aside(budget, timed=limit is not None):
+                    prepare(problem, part)
+            except PartTimeout:
+                return _preparation_timeout(part, budget, spent)
         if limit is not None:
             deadline(limit + GRACE)
         start = time.perf_counter()

@@ -93,7 +93,8 @@ def set_aside(budget: Budget, timed: bool | None = None):
 
         previous = signal.signal(signal.SIGALRM, ring)
         signal.setitimer(signal.ITIMER_REAL, budget.left)
-        deadline(budget.left + GRACE)
+        if remaining > 0:  # before any part clock, the item's first deadline covers the budget
+            deadline(budget.left + GRACE)
     _aside = True
     start = time.perf_counter()
     try:
