@@ -11,7 +11,7 @@ def _problem(spec):
 
 
 def test_a_right_answer_builds_no_mistake_catalogue():
-    spec = {"scene": "wedge", "seed": 11}
+    spec = {"scene": "wedge", "seed": 9011}  # a question no other test asks
     problem = _problem(spec)
     answer = key_answer(problem.variant, "lagrangian")
     verdict = check_request({"problem": spec, "part": "lagrangian", "answer": answer}, 2.0)
@@ -20,7 +20,7 @@ def test_a_right_answer_builds_no_mistake_catalogue():
 
 
 def test_a_wrong_answer_builds_the_catalogue_only_up_to_its_match():
-    spec = {"scene": "double_pendulum"}
+    spec = {"scene": "double_pendulum", "seed": 9013}
     problem = _problem(spec)
     T, V = problem.catalogue.split.T, problem.catalogue.split.V
     verdict = check_request({"problem": spec, "part": "lagrangian", "answer": plain(T + V)}, 2.0)
@@ -31,7 +31,7 @@ def test_a_wrong_answer_builds_the_catalogue_only_up_to_its_match():
 
 
 def test_a_question_whose_budget_ran_out_times_out_at_once_for_later_answers():
-    spec = {"scene": "wedge", "seed": 7}
+    spec = {"scene": "wedge", "seed": 9017}
     problem = _problem(spec)
     problem.budget.left = 0.0
     verdict = check_request({"problem": spec, "part": "eom", "answer": ["q_ddot = 0"]}, 2.0)
@@ -42,7 +42,7 @@ def test_a_question_whose_budget_ran_out_times_out_at_once_for_later_answers():
 
 
 def test_results_report_prepare_ms_beside_ms():
-    spec = {"expression": "g*sin(alpha)", "parameters": {"g": "positive", "alpha": "(0, 1)"}}
+    spec = {"expression": "g*sin(alpha)", "parameters": {"g": "positive", "alpha": "(0, 0.9)"}}
     first = check_request({"problem": spec, "part": "expression", "answer": "g sin(alpha)"}, 2.0)
     again = check_request({"problem": spec, "part": "expression", "answer": "sin(alpha) g"}, 2.0)
     assert list(first.to_dict())[5:7] == ["ms", "prepare_ms"]
