@@ -17,7 +17,7 @@ import time
 from pathlib import Path
 
 from lagrade.assign.generate import generate
-from lagrade.cli.demo import write_submissions
+from lagrade.cli.demo_class import write_submissions
 from lagrade.grading.batch import grade
 
 ASSIGNMENT = """\

@@ -1,5 +1,9 @@
 """`lagrade check`: one answer from the command line, or `--batch REQUESTS.jsonl` for many (one
-result line per request, in order). The judging itself is `lagrade.judge.check`."""
+result line per request, in order). The judging itself is `lagrade.judge.check`.
+
+The judge (sympy, numpy) is imported when a check runs, not when the command line is built:
+`lagrade --help` and `lagrade parse` must not pay for it. So the part names and the default
+time limit are repeated here, and a test holds them equal to the judge's."""
 
 from __future__ import annotations
 
@@ -7,15 +11,30 @@ import argparse
 import json
 import sys
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import lagrade.untrusted as untrusted
 from lagrade.errors import RequestError
-from lagrade.grading.atomic import write_text
-from lagrade.judge.check import DEFAULT_TIME_LIMIT, check, run_batch
-from lagrade.judge.parts import PARTS
-from lagrade.judge.problem import build_problem
-from lagrade.judge.verdict import Verdict
+
+if TYPE_CHECKING:
+    from lagrade.judge.verdict import Verdict
+
+#: `lagrade.judge.parts.PARTS`, by name (tests/cli/test_startup.py pins the two equal).
+PART_NAMES = (
+    "dof",
+    "coordinates",
+    "transformation",
+    "lagrangian",
+    "T",
+    "V",
+    "eom",
+    "momenta",
+    "cyclic",
+    "conserved",
+    "expression",
+)
+#: `lagrade.judge.check.DEFAULT_TIME_LIMIT` (pinned equal by the same test).
+DEFAULT_TIME_LIMIT = 2.0
 
 
 def check_batch_file(
@@ -27,6 +46,9 @@ def check_batch_file(
 ) -> tuple[int, str]:
     """`lagrade check --batch`: results to `out` (written whole or not at all) or, without it,
     as the returned text. Returns (exit status, text)."""
+    from lagrade.grading.atomic import write_text
+    from lagrade.judge.check import run_batch
+
     if str(requests) == "-":
         data = sys.stdin.buffer.read()
     else:
@@ -78,7 +100,7 @@ def add_check_arguments(parser: argparse.ArgumentParser) -> None:
         default="",
         help="name=domain pairs, e.g. m=positive,alpha=(0, pi/2); a bare name is positive",
     )
-    parser.add_argument("--part", choices=tuple(PARTS), help="the part the answer is for")
+    parser.add_argument("--part", choices=PART_NAMES, help="the part the answer is for")
     parser.add_argument(
         "--answer",
         action="append",
@@ -163,6 +185,9 @@ def run_check_command(args: argparse.Namespace) -> tuple[int, str]:
     """`lagrade check`: (exit status, text to print). Exit 0 when the answer is correct (or a
     batch ran to its end), 1 when it is not; a malformed request raises RequestError (the CLI
     prints it and exits 2)."""
+    from lagrade.judge.check import check
+    from lagrade.judge.problem import build_problem
+
     if args.batch:
         return check_batch_file(
             args.batch, args.out, time_limit=args.time_limit, jobs=max(1, args.jobs)

@@ -5,8 +5,6 @@ from __future__ import annotations
 
 import argparse
 
-from lagrade.mechanics.lagrange import DDOT, DOT
-
 
 def preview_command(
     text: str,
@@ -23,6 +21,7 @@ def preview_command(
     A malformed vocabulary (a coordinate name that is not a name) raises RequestError.
     """
     from lagrade.errors import ParseError
+    from lagrade.mechanics.lagrange import DDOT, DOT
     from lagrade.notation.parse import Vocabulary, parse_answer
 
     vocabulary = Vocabulary.from_names(coordinates, list(parameters), allow_primes=allow_primes)

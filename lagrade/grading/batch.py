@@ -112,7 +112,7 @@ def warm_up(manifest: dict) -> None:
                     continue
                 seen.add(key)
                 asked = question(spec)
-                prepare(asked, part["part"])
+                prepare(asked, part["part"], diagnosis=True)
                 if part["part"] != "expression" and asked.variant is not None:
                     _warm_with_key(asked, part)
 

@@ -13,18 +13,19 @@ Mutations that do not change what is judged (dropping the constant m g h from L)
 
 from __future__ import annotations
 
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Iterator, Sequence
 from dataclasses import dataclass
 from functools import cached_property
-from typing import Protocol, TypeVar
+from itertools import chain
+from typing import Protocol, TypeVar, Union
 
 import numpy as np
 import sympy as sp
 
+import lagrade.judge.keepers as keepers
 from lagrade.judge.compiled import Compiled
 from lagrade.judge.derivatives import euler_lagrange_values
-from lagrade.judge.equivalence import lagrangians_match
-from lagrade.judge.evaluate import UnsupportedExpression
+from lagrade.judge.lazylist import LazyList
 from lagrade.judge.matching import (
     SKIPPED,
     Stack,
@@ -41,21 +42,25 @@ from lagrade.judge.mutations import (
     Mutant,
     body_mutants,
     conserved_mutants,
-    equation_mutants,
     expanded_terms,
     expression_mutants,
+    iter_equation_mutants,
+    iter_momentum_mutants,
+    iter_term_mutants,
     kinetic_mutants,
-    momentum_mutants,
     swap_sin_cos,
-    term_mutants,
     velocities_in,
 )
-from lagrade.judge.rows import equation_rows, in_span
+from lagrade.judge.rows import equation_rows
 from lagrade.judge.sampling import Points
+from lagrade.judge.worker import Budget, set_aside
 from lagrade.mechanics.lagrange import Jet, LagrangianSystem
 from lagrade.mechanics.scene import SceneVariant
 
 _T = TypeVar("_T")
+
+#: What a part's matching reads: a lazily built catalogue list, or a plain list of mutants.
+Mutants = Union[LazyList[Mutant], Sequence[Mutant]]  # noqa: UP007 - a runtime alias
 
 
 class Question(Protocol):
@@ -64,6 +69,7 @@ class Question(Protocol):
     jets: tuple[Jet, ...]
     parameters: dict[str, sp.Symbol]
     variant: SceneVariant | None
+    budget: Budget
 
     @property
     def system(self) -> LagrangianSystem: ...
@@ -91,8 +97,12 @@ class Split:
 
 
 class Catalogue:
-    """The mutations of one question, built on first use per part and kept when the part's test
-    tells them apart, and the matching of an answer against them."""
+    """The mutations of one question, built on demand per part — only when a wrong answer needs a
+    diagnosis, and then only as far as the first mutant that matches (`LazyList`) — and kept
+    when the part's test tells them apart; and the matching of an answer against them.
+
+    Building is the question's work, not the student's: it runs `set_aside` from the part's
+    clock, charged to the question's preparation budget (`Question.budget`)."""
 
     def __init__(self, problem: Question):
         self.problem = problem
@@ -113,7 +123,9 @@ class Catalogue:
 
     # --- Lagrangian ------------------------------------------------------------------------------
     @cached_property
-    def lagrangian_mutants(self) -> list[Mutant]:
+    def _lagrangian_early(self) -> list[Mutant]:
+        """The Lagrangian mutants of the whole-L and kinetic kinds, in catalogue order: every
+        mistake a momentum or an equation of motion inherits from L is among them."""
         T, V = self.split.T, self.split.V
         out = [
             Mutant("sign_of_V", "your L adds V instead of subtracting it (L = T − V)", T + V),
@@ -127,52 +139,123 @@ class Catalogue:
             Mutant(m.kind, m.message, m.expr - V)
             for m in kinetic_mutants(T, self.problem.jets, "your L")
         ]
-        out.append(
-            Mutant("sin_cos_swapped", "sin and cos are swapped in your L", swap_sin_cos(T - V))
-        )
-        out += term_mutants(T - V, "your L", self.parameters)
-        return self._distinct(out, "el", self.problem.L)
+        return out
+
+    def _lagrangian_late(self) -> Iterator[Mutant]:
+        T, V = self.split.T, self.split.V
+        yield Mutant("sin_cos_swapped", "sin and cos are swapped in your L", swap_sin_cos(T - V))
+        yield from iter_term_mutants(T - V, "your L", self.parameters)
+
+    @cached_property
+    def lagrangian(self) -> LazyList[Mutant]:
+        """The Lagrangian mutants, built on demand."""
+
+        def make():
+            source = chain(self._lagrangian_early, self._lagrangian_late())
+            return source, self._keeper("el", lambda: self.problem.L)
+
+        return LazyList(make)
+
+    @property
+    def lagrangian_mutants(self) -> list[Mutant]:
+        return self.lagrangian.all()
+
+    def _kept_early_lagrangian(self) -> Iterator[Mutant]:
+        """The kept Lagrangian mutants of `_lagrangian_early`, built as far as they are read."""
+        early = {id(m) for m in self._lagrangian_early}
+        for m in self.lagrangian:
+            if id(m) not in early:
+                return
+            yield m
 
     # --- T and V ----------------------------------------------------------------------------------
     @cached_property
+    def kinetic(self) -> LazyList[Mutant]:
+        def make():
+            T = self.split.T
+
+            def source():
+                yield Mutant("dropped_half_all", "the ½ is missing in your T", 2 * T)
+                yield from body_mutants(self.problem.variant, T, "your T")
+                yield from kinetic_mutants(T, self.problem.jets, "your T")
+                yield Mutant(
+                    "sin_cos_swapped", "sin and cos are swapped in your T", swap_sin_cos(T)
+                )
+                yield from iter_term_mutants(T, "your T", self.parameters)
+
+            return source(), self._keeper("plain", lambda: Compiled.of(T))
+
+        return LazyList(make)
+
+    @property
     def kinetic_mutants(self) -> list[Mutant]:
-        T = self.split.T
-        out = [Mutant("dropped_half_all", "the ½ is missing in your T", 2 * T)]
-        out += body_mutants(self.problem.variant, T, "your T")
-        out += kinetic_mutants(T, self.problem.jets, "your T")
-        out.append(Mutant("sin_cos_swapped", "sin and cos are swapped in your T", swap_sin_cos(T)))
-        out += term_mutants(T, "your T", self.parameters)
-        return self._distinct(out, "plain", Compiled.of(T))
+        return self.kinetic.all()
 
     @cached_property
+    def potential(self) -> LazyList[Mutant]:
+        def make():
+            V = self.split.V
+
+            def source():
+                yield Mutant(
+                    "sign_of_V", "your V has the wrong sign (height measured downwards?)", -V
+                )
+                yield Mutant(
+                    "sin_cos_swapped", "sin and cos are swapped in your V", swap_sin_cos(V)
+                )
+                yield from iter_term_mutants(V, "your V", self.parameters)
+
+            return source(), self._keeper("offset", lambda: Compiled.of(V))
+
+        return LazyList(make)
+
+    @property
     def potential_mutants(self) -> list[Mutant]:
-        V = self.split.V
-        out = [Mutant("sign_of_V", "your V has the wrong sign (height measured downwards?)", -V)]
-        out.append(Mutant("sin_cos_swapped", "sin and cos are swapped in your V", swap_sin_cos(V)))
-        out += term_mutants(V, "your V", self.parameters)
-        return self._distinct(out, "offset", Compiled.of(V))
+        return self.potential.all()
 
     # --- momenta, equations of motion, conserved quantities, a reference expression ------------
-    def momentum_mutants(self, k: int) -> list[Mutant]:
+    def momentum(self, k: int) -> LazyList[Mutant]:
+        """The mutants of p_k, built on demand."""
         cache = self.__dict__.setdefault("_momentum", {})
         if k not in cache:
             p = self.problem
-            out = momentum_mutants(p.system, p.jets, k, self.lagrangian_mutants, self.parameters)
-            reference = Compiled.of(p.system.generalized_momenta[k])
-            cache[k] = self._distinct(out, "plain", reference)
+
+            def make():
+                source = iter_momentum_mutants(
+                    p.system, p.jets, k, self._kept_early_lagrangian(), self.parameters
+                )
+                keep = self._keeper("plain", lambda: Compiled.of(p.system.generalized_momenta[k]))
+                return source, keep
+
+            cache[k] = LazyList(make)
         return cache[k]
 
+    def momentum_mutants(self, k: int) -> list[Mutant]:
+        return self.momentum(k).all()
+
     @cached_property
-    def row_mutants(self) -> list[tuple[int, Mutant]]:
-        """(row, mutant) pairs: row `row` of the EL equations replaced by the mutant."""
+    def rows(self) -> LazyList[tuple[int, Mutant]]:
+        """(row, mutant) pairs, built on demand: row `row` of the EL equations replaced by the
+        mutant."""
         p = self.problem
-        pairs = equation_mutants(p.system, p.jets, self.lagrangian_mutants, self.parameters)
-        return self._distinct_rows(pairs)
+
+        def make():
+            source = iter_equation_mutants(
+                p.system, p.jets, self._kept_early_lagrangian(), self.parameters
+            )
+            return source, self._row_keeper()
+
+        return LazyList(make)
+
+    @property
+    def row_mutants(self) -> list[tuple[int, Mutant]]:
+        return self.rows.all()
 
     @cached_property
     def conserved_mutants(self) -> list[Mutant]:
         p = self.problem
-        return conserved_mutants(p.system, p.jets, self.split.T, self.split.V)
+        with set_aside(p.budget):
+            return conserved_mutants(p.system, p.jets, self.split.T, self.split.V)
 
     @cached_property
     def expression_mutants(self) -> list[Mutant]:
@@ -180,10 +263,11 @@ class Catalogue:
         return expression_mutants(self.problem.reference_expression.expr)
 
     # --- matching ---------------------------------------------------------------------------------
-    # A wrong answer is tested against every mutant of its part, so each match tests all of
-    # them at once: the mutants' values at the points are stacked once per set of points, and
-    # a few array operations per answer find the first mutant that matches (the catalogue's
-    # order puts the most specific first). The tests are those of the one-at-a-time loop.
+    # A wrong answer is tested against the mutants of its part a chunk at a time: the mutants'
+    # values at the points are stacked once per chunk and set of points, and a few array
+    # operations per answer find the first mutant that matches (the catalogue's order puts the
+    # most specific first). Later chunks are built only when the earlier ones have no match.
+    # The tests are those of the one-at-a-time loop.
 
     def match_lagrangian(
         self,
@@ -196,37 +280,43 @@ class Catalogue:
         E(answer) and its size at the points, when the verdict has computed them already."""
         if answer_el is None:
             answer_el = euler_lagrange_values(answer, self.problem.jets, points.env)
-        stack = self._el_stack(points)
-        return None if stack is None else first_lagrangian(stack, answer_el)
+        return self._first(
+            self.lagrangian,
+            lambda chunk: self._el_stack(chunk, points),
+            lambda stack: first_lagrangian(stack, answer_el),
+        )
 
-    def match_plain(
-        self, mutants: Sequence[Mutant], answer: Compiled, points: Points
-    ) -> Mutant | None:
+    def match_plain(self, mutants: Mutants, answer: Compiled, points: Points) -> Mutant | None:
         """The first mutant with the answer's values at the points."""
         with np.errstate(all="ignore"):
             values = full(answer.values(points.env), points.n)
-        stack = self._value_stack(mutants, points)
-        return None if stack is None else first_plain(stack, values)
+        return self._first(
+            mutants,
+            lambda chunk: self._value_stack(chunk, points),
+            lambda stack: first_plain(stack, values),
+        )
 
-    def match_offset(
-        self, mutants: Sequence[Mutant], answer: Compiled, points: Points
-    ) -> Mutant | None:
+    def match_offset(self, mutants: Mutants, answer: Compiled, points: Points) -> Mutant | None:
         """The first mutant the answer equals up to a constant per parameter group (V, a
         conserved quantity)."""
         with np.errstate(all="ignore"):
             values = full(answer.values(points.env), points.n)
-        stack = self._value_stack(mutants, points)
-        return None if stack is None else first_offset(stack, values, points)
+        return self._first(
+            mutants,
+            lambda chunk: self._value_stack(chunk, points),
+            lambda stack: first_offset(stack, values, points),
+        )
 
     def match_row(self, student: Compiled, points: Points) -> Mutant | None:
         """The mutation whose mutated system has the student's equation in its span."""
         p = self.problem
         with np.errstate(all="ignore"):
             s = equation_rows([student], p.jets, points.env)
-        stack = self._row_stack(points)
-        if stack is None:
-            return None
-        found = first_row(stack, s)
+        found = self._first(
+            self.rows,
+            lambda chunk: self._row_stack(chunk, points),
+            lambda stack: first_row(stack, s),
+        )
         return None if found is None else found[1]
 
     def match(self, mutants: Sequence[Mutant], test: Callable[[Compiled], bool]) -> Mutant | None:
@@ -235,40 +325,65 @@ class Catalogue:
         for m in mutants:
             try:
                 with np.errstate(all="ignore"):
-                    if test(self._compiled(m)):
+                    if test(self.compiled(m)):
                         return m
             except SKIPPED:
                 continue
         return None
 
+    def _first(self, mutants: Mutants, stack_of: Callable, test: Callable):
+        """The first candidate `test` finds in the stacks of `mutants`, chunk by chunk. Building
+        a chunk and its stack is the question's work (set aside from the part's clock)."""
+        budget = self.problem.budget
+        if not isinstance(mutants, LazyList):
+            with set_aside(budget):
+                stack = stack_of(mutants)
+            return None if stack is None else test(stack)
+        chunks = mutants.chunks()
+        while True:
+            with set_aside(budget):
+                chunk = next(chunks, None)
+                stack = None if chunk is None else stack_of(chunk)
+            if chunk is None:
+                return None
+            if stack is not None:
+                found = test(stack)
+                if found is not None:
+                    return found
+
     def warm(self, part: str, points: Points) -> None:
-        """Build the stacks that `part`'s matching uses at `points`, so that the first wrong
-        answer to a question pays no more than the others (called when a question is prepared)."""
-        if part == "lagrangian":
-            self._el_stack(points)
-        elif part == "T":
-            self._value_stack(self.kinetic_mutants, points)
-        elif part == "V":
-            self._value_stack(self.potential_mutants, points)
-        elif part == "momenta":
-            for k in range(len(self.problem.jets)):
-                self._value_stack(self.momentum_mutants(k), points)
-        elif part == "eom":
-            self._row_stack(points)
-        elif part == "conserved":
-            self._value_stack(self.conserved_mutants, points)
-        elif part == "expression":
-            self._value_stack(self.expression_mutants, points)
+        """Build every mutant `part`'s matching uses and their stacks at `points`, so that a
+        process forked afterwards (`lagrade grade` warms its parent) shares them."""
+        p = self.problem
+        which: dict[str, Callable[[], list]] = {
+            "lagrangian": lambda: [(self.lagrangian, self._el_stack)],
+            "T": lambda: [(self.kinetic, self._value_stack)],
+            "V": lambda: [(self.potential, self._value_stack)],
+            "momenta": lambda: [(self.momentum(k), self._value_stack) for k in range(len(p.jets))],
+            "eom": lambda: [(self.rows, self._row_stack)],
+            "conserved": lambda: [(self.conserved_mutants, self._value_stack)],
+            "expression": lambda: [(self.expression_mutants, self._value_stack)],
+        }
+        if part not in which:
+            return
+        with set_aside(p.budget):
+            for mutants, stack_of in which[part]():
+                if isinstance(mutants, LazyList):
+                    mutants.all()
+                    for chunk in mutants.chunks():
+                        stack_of(chunk, points)
+                else:
+                    stack_of(mutants, points)
 
     # --- stacks of mutant values, per set of points ----------------------------------------------
-    def _el_stack(self, points: Points) -> Stack | None:
+    def _el_stack(self, mutants: Sequence[Mutant], points: Points) -> Stack | None:
         """The Lagrangian mutants' E, its size, and what c needs (`lagrangian_arrays`)."""
         return stacked(
             self.problem.cached,
             "el-stack",
-            self.lagrangian_mutants,
+            mutants,
             points,
-            lambda m: self._el_values(self._compiled(m), points),
+            lambda m: self.el_values(self.compiled(m), points),
             lambda Eb, Sb: lagrangian_arrays(Eb, Sb, points.group),
         )
 
@@ -279,11 +394,11 @@ class Catalogue:
             "value-stack",
             mutants,
             points,
-            lambda m: full(self._compiled(m).values(points.env), points.n),
+            lambda m: full(self.compiled(m).values(points.env), points.n),
             lambda b, sb: (b, sb),
         )
 
-    def _row_stack(self, points: Points) -> Stack | None:
+    def _row_stack(self, pairs: Sequence[tuple[int, Mutant]], points: Points) -> Stack | None:
         """Per row mutant, the reference rows with its row in place of row i, at every point,
         reduced to what the span test needs (`span_arrays`)."""
         p = self.problem
@@ -294,96 +409,31 @@ class Catalogue:
 
         def evaluate(pair):
             i, m = pair
-            rows = equation_rows([self._compiled(m)], p.jets, points.env)
+            rows = equation_rows([self.compiled(m)], p.jets, points.env)
             R = ref.coef.astype(float).copy()
             Rs = ref.size.astype(float).copy()
             R[:, i, :] = rows.coef[:, 0, :]
             Rs[:, i] = rows.size[:, 0]
             return R, Rs
 
-        return stacked(p.cached, "row-stack", self.row_mutants, points, evaluate, span_arrays)
+        return stacked(p.cached, "row-stack", pairs, points, evaluate, span_arrays)
 
     # --- helpers ----------------------------------------------------------------------------------
-    def _compiled(self, m: Mutant) -> Compiled:
+    def compiled(self, m: Mutant) -> Compiled:
         cache = self.__dict__.setdefault("_compiled_cache", {})
         if id(m) not in cache:
             cache[id(m)] = (m, Compiled.of(m.expr))
         return cache[id(m)][1]
 
-    def _el_values(self, mut: Compiled, points: Points):
+    def el_values(self, mut: Compiled, points: Points):
         return self.problem.cached(
             f"el:{id(mut)}",
             points,
             lambda: euler_lagrange_values(mut, self.problem.jets, points.env),
         )
 
-    # --- keeping the mutants the part's test tells apart ------------------------------------------
-    def _fingerprint(self, compiled: Compiled, mode: str, points: Points) -> np.ndarray | None:
-        """What the part's test sees of an answer: E(L) normalised (L is judged up to a factor),
-        plain values, or values up to a constant per parameter group (V)."""
-        if mode == "el":
-            v = self._el_values(compiled, points)[0].ravel()
-            norm = np.linalg.norm(v)
-            return None if norm == 0 else v / norm * np.sign(v[np.argmax(np.abs(v))])
-        v = np.broadcast_to(np.asarray(compiled.values(points.env)[0], float), (points.n,))
-        if mode == "offset":
-            v = v - v[np.searchsorted(points.group, points.group)]
-        return v
+    def _keeper(self, mode: str, reference_of: Callable[[], Compiled]) -> Callable[[Mutant], bool]:
+        return keepers.keeper(self, mode, reference_of)
 
-    def _distinct(self, mutants: list[Mutant], mode: str, reference: Compiled) -> list[Mutant]:
-        """Drop mutants that change nothing the part's test sees, and duplicates (the first,
-        most specific, wins), by fingerprint at the part's points."""
-        part = {"el": "lagrangian", "plain": "momenta", "offset": "V"}[mode]
-        points = self.problem.points(part)
-        with np.errstate(all="ignore"):
-            seen = [self._fingerprint(reference, mode, points)]
-            kept = []
-            for m in mutants:
-                try:
-                    fp = self._fingerprint(self._compiled(m), mode, points)
-                except (UnsupportedExpression, ValueError, ZeroDivisionError):
-                    continue
-                if fp is None or not np.all(np.isfinite(fp)):
-                    continue
-                if mode == "el" and self._same_dynamics(m, reference, points):
-                    continue  # e.g. ½θ̇² for ½Iθ̇²: a parameter factor, the same motion
-                if any(o is not None and _close(fp, o) for o in seen):
-                    continue
-                seen.append(fp)
-                kept.append(m)
-        return kept
-
-    def _same_dynamics(self, m: Mutant, reference: Compiled, points) -> bool:
-        """A 'mistake' whose Euler–Lagrange equations are a multiple of the reference's is no
-        mistake: the Lagrangian check accepts it, so the catalogue must not name it."""
-        match = lagrangians_match(self._compiled(m), reference, self.problem.jets, points)
-        return bool(match.outcome.equal) and all(c > 0 for c in match.factors)
-
-    def _distinct_rows(self, pairs: list[tuple[int, Mutant]]) -> list[tuple[int, Mutant]]:
-        p = self.problem
-        points = p.points("eom")
-        ref = equation_rows(p.euler_lagrange, p.jets, points.env)
-        kept, seen = [], []
-        for i, m in pairs:
-            try:
-                rows = equation_rows([self._compiled(m)], p.jets, points.env)
-            except (UnsupportedExpression, ValueError, ZeroDivisionError):
-                continue
-            r, s = in_span(rows, ref, 0)
-            if np.all(np.abs(r) <= 1e-8 * s):
-                continue  # the mutated row is still a consequence of the right equations
-            fp = rows.coef[:, 0, :].ravel()
-            norm = np.linalg.norm(fp)
-            if not np.isfinite(norm) or norm == 0:
-                continue
-            fp = fp / norm
-            if any(min(np.linalg.norm(fp - o), np.linalg.norm(fp + o)) < 1e-8 for _, o in seen):
-                continue
-            seen.append((i, fp))
-            kept.append((i, m))
-        return kept
-
-
-def _close(a: np.ndarray, b: np.ndarray) -> bool:
-    scale = max(np.max(np.abs(a)), np.max(np.abs(b)), 1e-300)
-    return a.shape == b.shape and float(np.max(np.abs(a - b))) <= 1e-9 * scale
+    def _row_keeper(self) -> Callable[[tuple[int, Mutant]], bool]:
+        return keepers.row_keeper(self)

@@ -3,14 +3,15 @@
 
 A request:  {"id": …, "problem": {…}, "part": "eom", "answer": "…" | ["…"], "given": {…},
              "time_limit": 2}
-A result:   {"id", "verdict", "score", "feedback", "interpreted", "method", "ms", …}
+A result:   {"id", "verdict", "score", "feedback", "interpreted", "method", "ms", "prepare_ms", …}
 verdict: correct | incorrect | invalid | timeout, and `error` (with the traceback on stderr)
 only for a bug of ours.
 
 Checks run in killable workers (`lagrade.judge.worker`) that keep every problem they have seen
 (variants, derivations, reference values at the sample points), so a batch of a thousand answers
 to a few questions derives each question once. Deriving a question is the instructor's side of
-the work and has its own budget (`PREPARE_LIMIT`); the student's answer then gets `time_limit`.
+the work and has its own budget per question (`PREPARE_LIMIT`, reported as `prepare_ms`); the
+student's answer then gets `time_limit` (reported as `ms`).
 """
 
 from __future__ import annotations
@@ -27,11 +28,21 @@ from lagrade.errors import LagradeError, ReferenceUndefined, RequestError, Unrea
 from lagrade.judge.parts import PARTS, run_checker
 from lagrade.judge.problem import Problem, build_problem, problem_key
 from lagrade.judge.verdict import Verdict
-from lagrade.judge.worker import GRACE, Limits, Outcome, PartTimeout, Pool, deadline, time_limit
+from lagrade.judge.worker import (
+    GRACE,
+    PREPARE_LIMIT,
+    Budget,
+    Limits,
+    Outcome,
+    PartTimeout,
+    Pool,
+    PreparationTimeout,
+    deadline,
+    set_aside,
+    time_limit,
+)
 
 DEFAULT_TIME_LIMIT = 2.0
-#: Seconds a worker may spend deriving a question (L, EL, sample points, mistake catalogue).
-PREPARE_LIMIT = 60.0
 MAX_TIME_LIMIT = 120.0
 _CACHE_SIZE = 256
 
@@ -62,26 +73,34 @@ def cached_problem(spec: Any, key: str | None = None) -> Problem:
     return found
 
 
-def prepare(problem: Problem, part: str) -> None:
-    """Derive what `part` needs before the student's clock starts: the reference, its sample
-    points and values, and the mistake catalogue the feedback draws on."""
+def prepare(problem: Problem, part: str, diagnosis: bool = False) -> None:
+    """Derive what judging `part` needs before the student's clock starts, and no more: the
+    sample points of the parts judged at points (drawing them needs the reference and, for
+    the parts of a Lagrangian, its Euler–Lagrange expressions; for `eom` and `conserved` the
+    mass matrix), the conserved quantities of `conserved`. `dof`, `coordinates` and `cyclic`
+    need no derivation; no part needs the solved accelerations.
+
+    The mistake catalogue is not built here: only a wrong answer needs it, and the checker
+    builds as much of it as that answer's diagnosis reads (charged to the question's budget,
+    not to the student's clock). `diagnosis=True` builds it whole now, for a parent process
+    whose forked workers then share it (`lagrade grade`)."""
     key = (problem.key, part)
-    if key in _prepared:
-        return
-    if part == "expression":
-        problem.catalogue.warm(part, problem.points("expression"))
-    elif part in PARTS and problem.lagrangian is not None:
-        system = problem.system
-        _ = system.euler_lagrange
-        if part in ("lagrangian", "momenta", "eom", "conserved", "T", "V", "transformation"):
-            problem.points(part)
-        if part == "conserved":
-            _ = system.conserved_quantities
-        if part in ("lagrangian", "momenta", "eom", "conserved") or (
+    if key not in _prepared:
+        if part == "expression":
+            problem.points("expression")
+        elif part in PARTS and problem.lagrangian is not None:
+            if part in ("lagrangian", "momenta", "eom", "conserved", "T", "V", "transformation"):
+                problem.points(part)
+            if part == "conserved":
+                _ = problem.system.conserved_quantities
+        _prepared.add(key)
+    if diagnosis:
+        if part == "expression":
+            problem.catalogue.warm(part, problem.points("expression"))
+        elif part in ("lagrangian", "momenta", "eom", "conserved") or (
             part in ("T", "V") and problem.variant is not None
-        ):  # the mistake catalogue, evaluated at the part's points
+        ):
             problem.catalogue.warm(part, problem.points(part))
-    _prepared.add(key)
 
 
 # --- one request ---------------------------------------------------------------------------------
@@ -117,27 +136,46 @@ def timeout_verdict(part: str, seconds: float, what: str = "judging the answer")
 
 def check_request(request: Mapping[str, Any], limit: float | None = None) -> Verdict:
     """Judge one request in this process: the body of a worker, and of `check` without a time
-    limit. A malformed request or problem raises RequestError (or another LagradeError)."""
+    limit. A malformed request or problem raises RequestError (or another LagradeError).
+
+    Two clocks: the question's preparation (`prepare`, and catalogue work a wrong answer sets
+    aside) is charged to the question's budget and reported as `prepare_ms`; the student's
+    part gets `limit` and is reported as `ms`. A question whose budget has run out gets the
+    same timeout at once for every later answer, so it holds a batch up once, not per answer."""
     spec, part, answer, given = _validate(request)
     try:
         problem = cached_problem(spec)
-        try:
-            with time_limit(None if limit is None else PREPARE_LIMIT):
-                prepare(problem, part)
-        except PartTimeout:
-            return timeout_verdict(part, PREPARE_LIMIT, "deriving the question")
+        budget = problem.budget
+        spent = budget.spent
+        if budget.exhausted:
+            return _preparation_timeout(part, budget, spent)
+        if (problem.key, part) not in _prepared:
+            try:
+                with set_aside(budget, timed=limit is not None):
+                    prepare(problem, part)
+            except PartTimeout:
+                return _preparation_timeout(part, budget, spent)
         if limit is not None:
             deadline(limit + GRACE)
         start = time.perf_counter()
+        before = budget.spent
         try:
             with time_limit(limit):
                 verdict = run_checker(problem, part, answer, given)
+        except PreparationTimeout:
+            return _preparation_timeout(part, budget, spent)
         except PartTimeout:
             return timeout_verdict(part, limit)
-        ms = (time.perf_counter() - start) * 1e3
+        ms = (time.perf_counter() - start - (budget.spent - before)) * 1e3
     except ReferenceUndefined as error:
         raise RequestError(f"the problem cannot be graded: {error}") from None
-    return Verdict(**{**verdict.__dict__, "ms": ms})
+    prepare_ms = (budget.spent - spent) * 1e3
+    return Verdict(**{**verdict.__dict__, "ms": ms, "prepare_ms": prepare_ms})
+
+
+def _preparation_timeout(part: str, budget: Budget, spent: float) -> Verdict:
+    verdict = timeout_verdict(part, PREPARE_LIMIT, "deriving the question")
+    return Verdict(**{**verdict.__dict__, "prepare_ms": (budget.spent - spent) * 1e3})
 
 
 def _limited(request: Mapping[str, Any]) -> Verdict:
@@ -146,9 +184,25 @@ def _limited(request: Mapping[str, Any]) -> Verdict:
     return check_request(body, limit)
 
 
+def _question_of(item: Any) -> str:
+    """A request's question, for sending all answers to one question to one worker (which
+    derives it once) and distinct questions to distinct workers."""
+    request, _limit = item
+    problem = request.get("problem") if isinstance(request, Mapping) else None
+    try:
+        return json.dumps(problem, sort_keys=True, separators=(",", ":"))
+    except (TypeError, ValueError):
+        return ""
+
+
 def check_pool(jobs: int = 1) -> Pool:
     """Workers for checking requests (what `run_batch` uses when it is given none)."""
-    return Pool(_limited, jobs=jobs, limits=Limits(seconds=PREPARE_LIMIT + GRACE))
+    return Pool(
+        _limited,
+        jobs=jobs,
+        limits=Limits(seconds=PREPARE_LIMIT + GRACE),
+        affinity=_question_of,
+    )
 
 
 _shared: Pool | None = None
@@ -211,6 +265,7 @@ def refused(request_id: Any, part: Any, message: str) -> dict[str, Any]:
         "interpreted": "",
         "method": "request",
         "ms": 0.0,
+        "prepare_ms": 0.0,
         "part": untrusted.bounded(part, 40) if isinstance(part, str) else "?",
         "witness": None,
         "follows_from_own_answer": False,

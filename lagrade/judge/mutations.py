@@ -4,7 +4,7 @@ students write for it, each with the sentence that names the mistake in the stud
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Sequence
+from collections.abc import Iterable, Iterator, Sequence
 from dataclasses import dataclass
 
 import sympy as sp
@@ -55,9 +55,16 @@ def _factors(term: sp.Expr, parameters: Iterable[sp.Symbol]) -> list[sp.Symbol]:
 def term_mutants(expr: sp.Expr, what: str, parameters: Sequence[sp.Symbol]) -> list[Mutant]:
     """Single-term mutations of expr: a term with the wrong sign, left out, with sin and cos
     swapped, twice or half its size, without one of its parameter factors."""
+    return list(iter_term_mutants(expr, what, parameters))
+
+
+def iter_term_mutants(
+    expr: sp.Expr, what: str, parameters: Sequence[sp.Symbol]
+) -> Iterator[Mutant]:
+    """`term_mutants`, one term at a time (the lazy catalogue stops at the first match)."""
     terms = expanded_terms(expr)
-    out: list[Mutant] = []
     for k, term in enumerate(terms):
+        out: list[Mutant] = []
         rest = sp.Add(*(terms[:k] + terms[k + 1 :]))
         shown = plain(term)
         out.append(
@@ -92,7 +99,7 @@ def term_mutants(expr: sp.Expr, what: str, parameters: Sequence[sp.Symbol]) -> l
                 rest + term / 2,
             )
         )
-    return out
+        yield from out
 
 
 def kinetic_mutants(T: sp.Expr, jets: Sequence[Jet], what: str) -> list[Mutant]:
@@ -161,37 +168,44 @@ def momentum_mutants(
 ) -> list[Mutant]:
     """Mistakes in p_k = ∂L/∂q̇_k: the momentum of another coordinate, ∂L/∂q_k instead, the
     momentum of a Lagrangian with a kinetic mistake (from `lagrangian_mutants`), single terms."""
+    return list(iter_momentum_mutants(system, jets, k, lagrangian_mutants, parameters))
+
+
+#: The kinds of Lagrangian mistakes that show in a momentum or an equation of motion as a whole
+#: (a term mistake of L is caught there by the momentum's or the row's own term mutations).
+KINETIC_KINDS = ("dropped_half", "missing_cross_term", "missing_driven_term", "dropped_half_all")
+
+
+def iter_momentum_mutants(
+    system: LagrangianSystem,
+    jets: Sequence[Jet],
+    k: int,
+    lagrangian_mutants: Iterable[Mutant],
+    parameters: Sequence[sp.Symbol],
+) -> Iterator[Mutant]:
+    """`momentum_mutants` one at a time, reading `lagrangian_mutants` only as far as needed."""
     name = jets[k].name
     what = f"your p_{name}"
     momenta = system.generalized_momenta
-    out: list[Mutant] = []
     for i, j in enumerate(jets):
         if i != k:
-            out.append(
+            yield (
                 Mutant(
                     "wrong_coordinate",
                     f"{what} is the momentum of {j.name} (∂L/∂{j.name}_dot), not of {name}",
                     momenta[i],
                 )
             )
-    out.append(
-        Mutant(
-            "force_not_momentum",
-            f"{what} is ∂L/∂{name}; the momentum is ∂L/∂{name}_dot",
-            sp.diff(system.L, jets[k].q),
-        )
+    yield Mutant(
+        "force_not_momentum",
+        f"{what} is ∂L/∂{name}; the momentum is ∂L/∂{name}_dot",
+        sp.diff(system.L, jets[k].q),
     )
     for m in lagrangian_mutants:
-        if m.kind in (
-            "dropped_half",
-            "missing_cross_term",
-            "missing_driven_term",
-            "dropped_half_all",
-        ):
+        if m.kind in KINETIC_KINDS:
             pk = sp.expand(sp.diff(m.expr, jets[k].dot))
-            out.append(Mutant(m.kind, _momentum_message(m, what, momenta[k], pk), pk))
-    out += term_mutants(momenta[k], what, parameters)
-    return out
+            yield Mutant(m.kind, _momentum_message(m, what, momenta[k], pk), pk)
+    yield from iter_term_mutants(momenta[k], what, parameters)
 
 
 def _momentum_message(m: Mutant, what: str, right: sp.Expr, wrong: sp.Expr) -> str:
@@ -210,44 +224,48 @@ def equation_mutants(
     """(row, mutant) pairs, row `row` of the Euler–Lagrange equations replaced by the mutant:
     the sign of Lagrange's equation flipped, the equations of a Lagrangian with a mistake (from
     `lagrangian_mutants`), single terms of a row."""
+    return list(iter_equation_mutants(system, jets, lagrangian_mutants, parameters))
+
+
+def iter_equation_mutants(
+    system: LagrangianSystem,
+    jets: Sequence[Jet],
+    lagrangian_mutants: Iterable[Mutant],
+    parameters: Sequence[sp.Symbol],
+) -> Iterator[tuple[int, Mutant]]:
+    """`equation_mutants` one at a time, reading `lagrangian_mutants` only as far as needed
+    (deriving a mutant's equations is the costly step)."""
     E = system.euler_lagrange
-    out: list[tuple[int, Mutant]] = []
     for i, j in enumerate(jets):
         what = f"the equation for {j.name}"
         flipped = sp.expand(E[i] + 2 * sp.diff(system.L, j.q))  # D_t p + ∂L/∂q
-        out.append(
-            (
-                i,
-                Mutant(
-                    "el_sign",
-                    f"{what} has d/dt(∂L/∂{j.name}_dot) + ∂L/∂{j.name}; Lagrange's "
-                    "equation has a minus sign",
-                    flipped,
-                ),
-            )
+        yield (
+            i,
+            Mutant(
+                "el_sign",
+                f"{what} has d/dt(∂L/∂{j.name}_dot) + ∂L/∂{j.name}; Lagrange's "
+                "equation has a minus sign",
+                flipped,
+            ),
         )
     for m in lagrangian_mutants:
-        if m.kind in (
-            "sign_of_V",
-            "dropped_half",
-            "missing_cross_term",
-            "missing_driven_term",
-            "dropped_half_all",
-        ):
+        if m.kind == "sign_of_V" or m.kind in KINETIC_KINDS:
+            # E is linear in L: E(L_mut) = E(L) + E(L_mut − L), and L_mut − L is a term or
+            # two, so only that is differentiated. Both sides expanded, the row is the very
+            # expression E(L_mut) expands to (tests/grading/test_diagnose.py holds that).
             try:
-                rows = LagrangianSystem(m.expr, jets).euler_lagrange
+                change = LagrangianSystem(sp.expand(m.expr - system.L), jets).euler_lagrange
             except Exception:  # noqa: BLE001 - a mutant we cannot differentiate is skipped
                 continue
-            for i, row in enumerate(rows):
-                if sp.expand(row - E[i]) != 0:
+            for i, delta in enumerate(change):
+                if delta != 0:
                     msg = m.message.replace(
                         "your L", f"the L behind your equation for {jets[i].name}"
                     )
-                    out.append((i, Mutant(m.kind, msg, row)))
+                    yield (i, Mutant(m.kind, msg, sp.expand(E[i] + delta)))
     for i, j in enumerate(jets):
-        for m in term_mutants(E[i], f"your equation for {j.name}", parameters):
-            out.append((i, m))
-    return out
+        for m in iter_term_mutants(E[i], f"your equation for {j.name}", parameters):
+            yield (i, m)
 
 
 def conserved_mutants(

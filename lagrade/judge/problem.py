@@ -15,7 +15,7 @@ from __future__ import annotations
 import json
 import re
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from functools import cached_property
 from typing import Any
 
@@ -27,6 +27,7 @@ from lagrade.errors import LagradeError, ParseError, RequestError
 from lagrade.judge.catalogue import Catalogue
 from lagrade.judge.compiled import Compiled, finite_mask
 from lagrade.judge.sampling import Points, Space, seed_for
+from lagrade.judge.worker import PREPARE_LIMIT, Budget
 from lagrade.mechanics.domains import Domain
 from lagrade.mechanics.lagrange import Jet, LagrangianSystem, jet, t
 from lagrade.mechanics.scene import SceneVariant
@@ -60,6 +61,8 @@ class Problem:
     variant: SceneVariant | None = None
     coordinate_domains: dict[str, tuple[float, float]] | None = None
     unit: str = ""  # the unit of a scene quantity (a numeric answer may carry it)
+    #: What deriving this question may still take (its preparation budget), and has taken.
+    budget: Budget = field(default_factory=lambda: Budget(PREPARE_LIMIT))
 
     # --- names -------------------------------------------------------------------------------
     @property

@@ -15,7 +15,12 @@ STATUSES = ("correct", "incorrect", "invalid", "timeout", "error")  # error: a b
 class Verdict:
     """The judgement of one answer part: status (correct | incorrect | invalid | timeout), score
     in [0, 1], feedback sentences, the parser's echo of what was read, the method that decided,
-    the time it took, and when wrong a point where the answer and the reference differ."""
+    the time it took, and when wrong a point where the answer and the reference differ.
+
+    Two times, so that no benchmark can hide either: `ms`, the student's part (reading and
+    judging the answer, under its time limit), and `prepare_ms`, the question's part that this
+    request paid for (deriving the reference and sample points on first use, the mistake
+    catalogue as far as a wrong answer's diagnosis needed it; 0 when all was cached)."""
 
     part: str
     status: str
@@ -27,6 +32,7 @@ class Verdict:
     witness: Mapping[str, float] | None = None
     follows_from_own_answer: bool = False
     mistakes: tuple[str, ...] = field(default=())
+    prepare_ms: float = 0.0
 
     def __post_init__(self) -> None:
         assert self.status in STATUSES, self.status
@@ -48,6 +54,7 @@ class Verdict:
             "interpreted": self.interpreted,
             "method": self.method,
             "ms": round(self.ms, 3),
+            "prepare_ms": round(self.prepare_ms, 3),
             "part": self.part,
             "witness": dict(self.witness) if self.witness else None,
             "follows_from_own_answer": self.follows_from_own_answer,

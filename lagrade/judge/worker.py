@@ -2,11 +2,14 @@
 `check()` API and `grade` alike.
 
 The rule. A part gets its time limit once its question is prepared (preparing, the instructor's
-side, has its own budget). The limit is enforced twice: inside the worker an alarm interrupts
-Python-level work (`time_limit`: the part's verdict is `timeout` and the worker keeps its caches),
-and the parent kills a worker that has not answered `GRACE` seconds after that (SIGKILL stops
-sympy or numpy stuck in C code); the item in hand then gets `timeout`, a fresh worker takes the
-rest. A worker moves the parent's deadline for the item in hand with `deadline(seconds)`.
+side, has its own budget per question, `Budget`; work of that kind that a check does on demand,
+such as deriving the mistake catalogue for a wrong answer, runs `set_aside` from the student's
+clock and is charged to the question's budget). The limit is enforced twice: inside the worker an
+alarm interrupts Python-level work (`time_limit`: the part's verdict is `timeout` and the worker
+keeps its caches), and the parent kills a worker that has not answered `GRACE` seconds after that
+(SIGKILL stops sympy or numpy stuck in C code); the item in hand then gets `timeout`, a fresh
+worker takes the rest. A worker moves the parent's deadline for the item in hand with
+`deadline(seconds)`.
 
 Workers are forked and persistent: what the parent derived before the pool started is shared,
 what a worker derives stays for its next items, and a worker is replaced after `Limits.recycle`
@@ -22,7 +25,7 @@ import signal
 import time
 import traceback
 from collections import deque
-from collections.abc import Callable, Iterable, Iterator
+from collections.abc import Callable, Hashable, Iterable, Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass
 from multiprocessing.connection import Connection, wait
@@ -34,11 +37,79 @@ _FORK = mp.get_context("fork")
 
 #: Seconds past a part's time limit before the parent kills the worker (the alarm comes first).
 GRACE = 2.0
+#: Seconds of instructor-side work a question may take in one process (deriving its reference,
+#: sample points and, for wrong answers, its mistake catalogue): its `Budget`.
+PREPARE_LIMIT = 60.0
 
 
 class PartTimeout(BaseException):
     """A part's time limit ran out (raised by the alarm inside the process doing the work). A
     BaseException, like KeyboardInterrupt, so that no `except Exception` on the way swallows it."""
+
+
+class PreparationTimeout(PartTimeout):
+    """A question's preparation budget ran out (in `set_aside` work): the question, not the
+    answer, is what took too long."""
+
+
+@dataclass
+class Budget:
+    """The seconds of instructor-side work a question may still take, and what it has spent. One
+    per question and process: once `left` is used up, every later answer to the question gets
+    the same timeout at once instead of trying again."""
+
+    left: float
+    spent: float = 0.0
+
+    @property
+    def exhausted(self) -> bool:
+        return self.left <= 0
+
+
+_aside = False  # inside set_aside: nested instructor work is charged by the outer one
+
+
+@contextmanager
+def set_aside(budget: Budget, timed: bool | None = None):
+    """Run the block as the question's work, not the student's: a running part clock stops and
+    the question's remaining budget applies instead (PreparationTimeout when it runs out), then
+    the part clock goes on with the time it had left. The time is charged to `budget`.
+    `timed`: whether to enforce the budget (default: only when a part clock is running, so that
+    an untimed in-process check stays untimed)."""
+    global _aside
+    if _aside:
+        yield
+        return
+    remaining = signal.getitimer(signal.ITIMER_REAL)[0]
+    if timed is None:
+        timed = remaining > 0
+    if timed and budget.exhausted:
+        raise PreparationTimeout
+    previous = None
+    if timed:
+
+        def ring(signum, frame):
+            raise PreparationTimeout
+
+        previous = signal.signal(signal.SIGALRM, ring)
+        signal.setitimer(signal.ITIMER_REAL, budget.left)
+        if remaining > 0:  # before any part clock, the item's first deadline covers the budget
+            deadline(budget.left + GRACE)
+    _aside = True
+    start = time.perf_counter()
+    try:
+        yield
+    finally:
+        _aside = False
+        elapsed = time.perf_counter() - start
+        budget.left -= elapsed
+        budget.spent += elapsed
+        if timed:
+            signal.setitimer(signal.ITIMER_REAL, 0)
+            signal.signal(signal.SIGALRM, previous)
+            if remaining > 0:
+                signal.setitimer(signal.ITIMER_REAL, remaining)
+                deadline(remaining + GRACE)
 
 
 @contextmanager
@@ -139,6 +210,7 @@ def _serve(conn: Connection, work: Callable[[Any], Any], limits: Limits) -> None
 class _Worker:
     process: Any
     conn: Connection
+    slot: int = 0
     served: int = 0
     key: Any = None
     since: float = 0.0
@@ -148,22 +220,35 @@ class _Worker:
 class Pool:
     """`jobs` persistent forked workers running `work(item)`; `run` yields one Outcome per item.
     `work` and everything the parent holds when a worker is forked are inherited, not pickled;
-    items and results cross a pipe."""
+    items and results cross a pipe.
+
+    With `affinity` (a function of an item), items of the same affinity go to the worker slot
+    that has had one before while there are other items for the idle workers: a worker's caches
+    (a question derived once) serve all the answers to that question, and distinct questions
+    are spread over the workers. A worker that finds only items owned by busy workers takes
+    the first of them (a question with many answers is then shared)."""
 
     def __init__(
-        self, work: Callable[[Any], Any], *, jobs: int = 1, limits: Limits | None = None
+        self,
+        work: Callable[[Any], Any],
+        *,
+        jobs: int = 1,
+        limits: Limits | None = None,
+        affinity: Callable[[Any], Hashable] | None = None,
     ) -> None:
         self.work = work
         self.jobs = max(1, int(jobs))
         self.limits = limits or Limits()
-        self._idle: list[_Worker] = []
+        self.affinity = affinity
+        self._idle: dict[int, _Worker] = {}
+        self._owners: dict[Hashable, set[int]] = {}
 
-    def _fork(self) -> _Worker:
+    def _fork(self, slot: int) -> _Worker:
         parent, child = _FORK.Pipe()
         process = _FORK.Process(target=_serve, args=(child, self.work, self.limits), daemon=True)
         process.start()
         child.close()
-        return _Worker(process, parent)
+        return _Worker(process, parent, slot)
 
     def _retire(self, worker: _Worker, kill: bool = False) -> None:
         if not kill and worker.process.is_alive():
@@ -177,29 +262,51 @@ class Pool:
         worker.process.join(2.0)
         worker.conn.close()
 
+    def _take(self, slot: int, pending: dict) -> tuple[int, Any, Any]:
+        """The next (position, key, item) for the worker in `slot`: the first pending item whose
+        affinity is its own or no one's, else the first pending item."""
+        chosen = None
+        for group in pending:
+            owners = self._owners.get(group)
+            if not owners or slot in owners:
+                chosen = group
+                break
+        if chosen is None:
+            chosen = next(iter(pending))
+        queue = pending[chosen]
+        entry = queue.popleft()
+        if not queue:
+            del pending[chosen]
+        if self.affinity is not None:
+            self._owners.setdefault(chosen, set()).add(slot)
+        return entry
+
     def run(self, items: Iterable[tuple[Any, Any]], *, in_order: bool = False) -> Iterator[Outcome]:
         """An Outcome for each (key, item): as each finishes, or in input order (`in_order`)."""
-        pending = deque(items)
+        pending: dict[Hashable, deque] = {}  # by affinity, in order of each group's first item
+        for position, (key, item) in enumerate(items):
+            group = position if self.affinity is None else self.affinity(item)
+            pending.setdefault(group, deque()).append((position, key, item))
         busy: dict[Connection, _Worker] = {}
         held: dict[int, Outcome] = {}
-        position = 0
         next_out = 0
         try:
             while pending or busy:
                 while pending and len(busy) < self.jobs:
-                    key, item = pending.popleft()
-                    worker = self._idle.pop() if self._idle else self._fork()
+                    taken = {w.slot for w in busy.values()}
+                    slot = next(s for s in range(self.jobs) if s not in taken)
+                    position, key, item = self._take(slot, pending)
+                    worker = self._idle.pop(slot, None) or self._fork(slot)
                     try:
                         worker.conn.send(item)
                     except OSError:  # it died while idle: a fresh one takes the item
                         self._retire(worker, kill=True)
-                        worker = self._fork()
+                        worker = self._fork(slot)
                         worker.conn.send(item)
                     now = time.monotonic()
                     worker.key, worker.since, worker.until = (key, position), now, now
                     worker.until += self.limits.seconds
                     busy[worker.conn] = worker
-                    position += 1
                 soonest = min(w.until for w in busy.values())
                 for conn in wait(list(busy), timeout=max(0.0, soonest - time.monotonic())):
                     worker = busy[conn]
@@ -250,7 +357,7 @@ class Pool:
         if worker.served >= self.limits.recycle:
             self._retire(worker)
         else:
-            self._idle.append(worker)
+            self._idle[worker.slot] = worker
         if status == "ok":
             return Outcome(key, "ok", value=value, seconds=elapsed)
         if status == "refused":
@@ -259,7 +366,7 @@ class Pool:
 
     def close(self) -> None:
         while self._idle:
-            self._retire(self._idle.pop())
+            self._retire(self._idle.popitem()[1])
 
     def __enter__(self) -> Pool:
         return self

@@ -9,7 +9,7 @@ from pathlib import Path
 import pytest
 
 from lagrade.assign.generate import generate
-from lagrade.cli.demo import write_submissions
+from lagrade.cli.demo_class import write_submissions
 
 ASSIGNMENT = """\
 title = "Batch test"

@@ -302,3 +302,35 @@ def test_matching_skips_mutants_that_cannot_be_evaluated_and_follows_the_list():
     mutants[1] = Mutant("thrice", "thrice T", 3 * T)
     assert cat.match_plain(mutants, Compiled.of(2 * T), points) is None
     assert cat.match_plain(mutants, Compiled.of(3 * T), points) is mutants[1]
+
+
+def test_the_equations_of_a_mistaken_lagrangian_are_derived_from_the_change_alone():
+    """The catalogue forms E(L_mut) as E(L) + E(L_mut − L); that must be the very expression
+    that differentiating L_mut whole gives, so that the rows (and the feedback) are unchanged."""
+    from lagrade.bank.registry import scene_ids
+    from lagrade.judge.mutations import KINETIC_KINDS, iter_equation_mutants
+    from lagrade.mechanics.lagrange import LagrangianSystem
+
+    checked = 0
+    for sid in scene_ids():
+        problem = build_problem({"scene": sid, "seed": 1})
+        system, jets = problem.system, problem.jets
+        early = [
+            m
+            for m in problem.catalogue._lagrangian_early
+            if m.kind == "sign_of_V" or m.kind in KINETIC_KINDS
+        ]
+        whole = []
+        for m in early:
+            rows = LagrangianSystem(m.expr, jets).euler_lagrange
+            for i, row in enumerate(rows):
+                if sp.expand(row - system.euler_lagrange[i]) != 0:
+                    whole.append((i, m.kind, row))
+        derived = [
+            (i, m.kind, m.expr)
+            for i, m in iter_equation_mutants(system, jets, early, [])
+            if m.kind == "sign_of_V" or m.kind in KINETIC_KINDS
+        ]
+        assert derived == whole, sid
+        checked += len(whole)
+    assert checked > 50

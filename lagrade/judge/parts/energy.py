@@ -181,7 +181,7 @@ def check_kinetic(problem: Problem, answer: Any, given: Mapping | None) -> Verdi
     out = expressions_equal(answer_c, problem.kinetic, points)
     if out.equal:
         return Verdict("T", "correct", 1.0, (), got.echo, method_name(out))
-    mutant = problem.catalogue.match_plain(problem.catalogue.kinetic_mutants, answer_c, points)
+    mutant = problem.catalogue.match_plain(problem.catalogue.kinetic, answer_c, points)
     return incorrect(
         "T",
         got,
@@ -206,7 +206,7 @@ def check_potential(problem: Problem, answer: Any, given: Mapping | None) -> Ver
                 "that is fine.",
             )
         return Verdict("V", "correct", 1.0, notes, got.echo, method_name(out))
-    mutant = problem.catalogue.match_offset(problem.catalogue.potential_mutants, answer_c, points)
+    mutant = problem.catalogue.match_offset(problem.catalogue.potential, answer_c, points)
     return incorrect(
         "V",
         got,

@@ -1,0 +1,118 @@
+"""Which of a question's mutants the catalogue keeps: those the part's test can tell from the
+right answer and from every mutant kept before them (the first, most specific, wins), decided by
+fingerprint at the part's sample points. A filter sees the mutants in catalogue order and
+remembers what it kept, so a lazily built catalogue keeps exactly what a whole one keeps."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from typing import Any, Protocol
+
+import numpy as np
+
+from lagrade.judge.compiled import Compiled
+from lagrade.judge.equivalence import lagrangians_match
+from lagrade.judge.evaluate import UnsupportedExpression
+from lagrade.judge.mutations import Mutant
+from lagrade.judge.rows import equation_rows, in_span
+from lagrade.judge.sampling import Points
+
+
+class Catalogue(Protocol):
+    """What the filters use of their catalogue (`lagrade.judge.catalogue.Catalogue`)."""
+
+    problem: Any
+
+    def compiled(self, m: Mutant) -> Compiled: ...
+
+    def el_values(self, mut: Compiled, points: Points) -> tuple[np.ndarray, np.ndarray]: ...
+
+
+def fingerprint(
+    catalogue: Catalogue, compiled: Compiled, mode: str, points: Points
+) -> np.ndarray | None:
+    """What the part's test sees of an answer: E(L) normalised (L is judged up to a factor),
+    plain values, or values up to a constant per parameter group (V)."""
+    if mode == "el":
+        v = catalogue.el_values(compiled, points)[0].ravel()
+        norm = np.linalg.norm(v)
+        return None if norm == 0 else v / norm * np.sign(v[np.argmax(np.abs(v))])
+    v = np.broadcast_to(np.asarray(compiled.values(points.env)[0], float), (points.n,))
+    if mode == "offset":
+        v = v - v[np.searchsorted(points.group, points.group)]
+    return v
+
+
+def keeper(
+    catalogue: Catalogue, mode: str, reference_of: Callable[[], Compiled]
+) -> Callable[[Mutant], bool]:
+    """The filter that drops mutants that change nothing the part's test sees, and
+    duplicates (the first, most specific, wins), by fingerprint at the part's points; it
+    sees the mutants in catalogue order and remembers the ones it kept."""
+    part = {"el": "lagrangian", "plain": "momenta", "offset": "V"}[mode]
+    seen: list[np.ndarray | None] = []
+
+    def keep(m: Mutant) -> bool:
+        points = catalogue.problem.points(part)
+        reference = reference_of()
+        with np.errstate(all="ignore"):
+            if not seen:
+                seen.append(fingerprint(catalogue, reference, mode, points))
+            try:
+                fp = fingerprint(catalogue, catalogue.compiled(m), mode, points)
+            except (UnsupportedExpression, ValueError, ZeroDivisionError):
+                return False
+            if fp is None or not np.all(np.isfinite(fp)):
+                return False
+            if mode == "el" and same_dynamics(catalogue, m, reference, points):
+                return False  # e.g. ½θ̇² for ½Iθ̇²: a parameter factor, the same motion
+            if any(o is not None and _close(fp, o) for o in seen):
+                return False
+            seen.append(fp)
+            return True
+
+    return keep
+
+
+def same_dynamics(catalogue: Catalogue, m: Mutant, reference: Compiled, points: Points) -> bool:
+    """A 'mistake' whose Euler–Lagrange equations are a multiple of the reference's is no
+    mistake: the Lagrangian check accepts it, so the catalogue must not name it."""
+    match = lagrangians_match(catalogue.compiled(m), reference, catalogue.problem.jets, points)
+    return bool(match.outcome.equal) and all(c > 0 for c in match.factors)
+
+
+def row_keeper(catalogue: Catalogue) -> Callable[[tuple[int, Mutant]], bool]:
+    """`keeper` for row mutants: a mutated row that still follows from the right equations
+    changes nothing, and rows equal up to sign are duplicates."""
+    p = catalogue.problem
+    seen: list[tuple[int, np.ndarray]] = []
+    state: dict = {}
+
+    def keep(pair: tuple[int, Mutant]) -> bool:
+        i, m = pair
+        points = p.points("eom")
+        if "ref" not in state:
+            state["ref"] = equation_rows(p.euler_lagrange, p.jets, points.env)
+        try:
+            rows = equation_rows([catalogue.compiled(m)], p.jets, points.env)
+        except (UnsupportedExpression, ValueError, ZeroDivisionError):
+            return False
+        r, s = in_span(rows, state["ref"], 0)
+        if np.all(np.abs(r) <= 1e-8 * s):
+            return False  # the mutated row is still a consequence of the right equations
+        fp = rows.coef[:, 0, :].ravel()
+        norm = np.linalg.norm(fp)
+        if not np.isfinite(norm) or norm == 0:
+            return False
+        fp = fp / norm
+        if any(min(np.linalg.norm(fp - o), np.linalg.norm(fp + o)) < 1e-8 for _, o in seen):
+            return False
+        seen.append((i, fp))
+        return True
+
+    return keep
+
+
+def _close(a: np.ndarray, b: np.ndarray) -> bool:
+    scale = max(np.max(np.abs(a)), np.max(np.abs(b)), 1e-300)
+    return a.shape == b.shape and float(np.max(np.abs(a - b))) <= 1e-9 * scale

@@ -1,0 +1,55 @@
+"""Start-up stays light: `lagrade --help` (and building the command line for any command) loads
+neither sympy nor numpy, scipy or matplotlib; a command imports the layers it needs when it runs.
+The part names the command line offers without the judge are the judge's own."""
+
+import subprocess
+import sys
+
+HEAVY = ("sympy", "numpy", "scipy", "matplotlib", "mpmath", "jinja2")
+
+_PROBE = """
+import sys
+from lagrade.cli.main import main
+try:
+    main({argv!r})
+except SystemExit:
+    pass
+print("LOADED:" + ",".join(sorted({{m.split(".")[0] for m in sys.modules}} & set({heavy!r}))))
+"""
+
+
+def _loaded_by(argv: list[str]) -> list[str]:
+    code = _PROBE.format(argv=argv, heavy=HEAVY)
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    line = out.stdout.strip().splitlines()[-1]
+    assert line.startswith("LOADED:"), out.stdout
+    return [m for m in line.removeprefix("LOADED:").split(",") if m]
+
+
+def test_help_loads_nothing_heavy():
+    assert _loaded_by(["--help"]) == []
+
+
+def test_every_command_help_loads_nothing_heavy():
+    for command in ("bank", "parse", "check", "generate", "grade", "demo"):
+        assert _loaded_by([command, "--help"]) == [], command
+
+
+def test_parse_loads_sympy_but_not_numpy_or_the_judge():
+    code = (
+        "import sys\nfrom lagrade.cli.main import main\n"
+        "main(['parse', 'm g l cos(theta)', '--coordinates', 'theta', '--parameters', 'm,g,l'])\n"
+        "print(sorted(m for m in ('numpy', 'scipy', 'matplotlib', 'lagrade.judge') "
+        "if m in sys.modules), 'sympy' in sys.modules)"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert out.stdout.strip().splitlines()[-1] == "[] True"
+
+
+def test_the_command_lines_part_names_are_the_judges():
+    from lagrade.cli.check import DEFAULT_TIME_LIMIT, PART_NAMES
+    from lagrade.judge.check import DEFAULT_TIME_LIMIT as JUDGE_TIME_LIMIT
+    from lagrade.judge.parts import PARTS
+
+    assert PART_NAMES == tuple(PARTS)
+    assert DEFAULT_TIME_LIMIT == JUDGE_TIME_LIMIT
