@@ -81,6 +81,10 @@ def _product(factors: list, text: str) -> str:
     for k, factor in enumerate(factors):
         if factor.kind == "inv":
             pieces.append("/" + _at_least(factor.value, text, _POWER))
+        elif k == 0 and factor.kind == "neg" and factor.value.kind == "add":
+            # `(-(a + b))*c` is not `-(a + b)*c` once read: sympy distributes the sign over the
+            # sum in the first and not in the second, so the echo would read back differently.
+            pieces.append(f"({_render(factor, text)[0]})")
         elif k == 0:
             pieces.append(_at_least(factor, text, _SIGNED))
         else:

@@ -291,3 +291,10 @@ def test_grammar_shaped_text(text: str) -> None:
 @given(st.lists(GRAMMAR_PIECES, min_size=200, max_size=400).map("".join))
 def test_long_grammar_shaped_text(text: str) -> None:
     _bounded(text[:2000])
+
+
+def test_a_negated_sum_leading_a_product_reads_back():
+    """Found by the round-trip property: the echo `-(theta + theta_dot)*theta` read back as
+    -(theta*(theta + theta_dot)), a different tree from (-(theta + theta_dot))*theta."""
+    parsed = parse_answer("(-(theta + thetadot)) theta", VOCAB, latex=False)
+    _echo_reads_back(parsed)

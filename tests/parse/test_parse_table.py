@@ -517,7 +517,7 @@ def test_plain_echo_has_explicit_operators() -> None:
         (r"\frac{1}{2} m \dot{\theta}^2", "(1/2)*m*theta_dot^2"),
         ("x^-1 + sin^2(theta)", "x^(-1) + sin(theta)^2"),
         ("2^3^2", "2^(3^2)"),  # right-associative, shown
-        ("m*-g - -(m + M) g", "m*(-g) - -(m + M)*g"),
+        ("m*-g - -(m + M) g", "m*(-g) - (-(m + M))*g"),
         ("9.81e-3 m / (R g) / R^2", "9.81e-3*m/(R*g)/R^2"),  # numbers as written
         ("1E100 m + (2) g", "1E100*m + 2*g"),  # not 10^100 spelled out (too long to read back)
         ("diff(theta, t) + theta'' ", "theta_dot + theta_ddot"),
