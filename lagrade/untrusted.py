@@ -18,6 +18,7 @@ the record's `invalid` verdict or their own error.
 from __future__ import annotations
 
 import json
+import math
 import re
 import tomllib
 from collections.abc import Iterator
@@ -79,7 +80,12 @@ def load_json(text: str, what: str = "the record") -> Any:
     digits, no NaN or Infinity (not JSON), no lone surrogate in any string or key."""
     _check_nesting(text, what)
     try:
-        value = json.loads(text, parse_int=_bounded_int(what), parse_constant=_no_constant(what))
+        value = json.loads(
+            text,
+            parse_int=_bounded_int(what),
+            parse_float=_bounded_float(what),
+            parse_constant=_no_constant(what),
+        )
     except json.JSONDecodeError as error:
         raise UnreadableInput(
             f"{what} is not valid JSON: {error.msg} (line {error.lineno}, column {error.colno})"
@@ -162,6 +168,21 @@ def _bounded_int(what: str):
         if len(digits.lstrip("-")) > MAX_INT_DIGITS:
             raise UnreadableInput(f"{what} holds a number with more than {MAX_INT_DIGITS} digits")
         return int(digits)
+
+    return parse
+
+
+def _bounded_float(what: str):
+    """A float as JSON writes it, refused when it is past float range (1e400 would come back as
+    Infinity, which is not JSON) or longer than any number a record holds."""
+
+    def parse(digits: str) -> float:
+        value = float(digits)
+        if len(digits) > MAX_INT_DIGITS or not math.isfinite(value):
+            raise UnreadableInput(
+                f"{what} holds a number past the range of a float ({digits[:20]}…)"
+            )
+        return value
 
     return parse
 

@@ -9,6 +9,7 @@ import csv
 import functools
 import io
 import json
+import re
 from collections import Counter
 from collections.abc import Mapping, Sequence
 from pathlib import Path
@@ -125,13 +126,18 @@ def _roster_columns(manifest: Mapping[str, Any]) -> list[str]:
 
 #: What a spreadsheet reads as the start of a formula (OWASP's CSV injection list).
 _FORMULA_START = ("=", "+", "-", "@", "\t", "\r", "\n")
+_LINE_BREAKS = re.compile(r"[\r\n\v\f\x1c-\x1e\x85\u2028\u2029]+")
 
 
 def csv_cell(text: Any) -> str:
     """Text for a CSV cell that a spreadsheet shows and never runs: a cell that would start a
-    formula (`=HYPERLINK(…)`, `+cmd|…`, `@SUM(…)`) gets a leading apostrophe, OWASP's rule."""
+    formula (`=HYPERLINK(…)`, `+cmd|…`, `@SUM(…)`) gets a leading apostrophe, OWASP's rule;
+    line breaks of any kind become spaces."""
     text = str(text)
-    return "'" + text if text.startswith(_FORMULA_START) else text
+    if text.startswith(_FORMULA_START):
+        text = "'" + text
+    # One cell, one line: a lone CR is not quoted by csv.writer and would split the row.
+    return _LINE_BREAKS.sub(" ", text)
 
 
 def _num(x: float) -> str:

@@ -6,8 +6,12 @@ import re
 from collections.abc import Mapping
 from typing import Any
 
+import lagrade.untrusted as untrusted
 from lagrade.judge.problem import Problem
 from lagrade.judge.verdict import Verdict, invalid
+
+#: The longest whole number read as a count of degrees of freedom.
+MAX_DIGITS = 30
 
 
 def check_dof(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
@@ -15,6 +19,15 @@ def check_dof(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
     if isinstance(answer, bool) or not (isinstance(answer, int) or re.fullmatch(r"[+-]?\d+", text)):
         return invalid(
             "dof", "Write the number of degrees of freedom as a whole number, e.g. 2.", text
+        )
+    if len(text.lstrip("+-")) > MAX_DIGITS:  # int() of 4,300+ digits raises; no system needs it
+        return Verdict(
+            "dof",
+            "incorrect",
+            0.0,
+            ("That number is far too large to be a number of degrees of freedom.",),
+            untrusted.clip(text, 40),
+            "exact",
         )
     n = int(text if not isinstance(answer, int) else answer)
     if n == problem.dof:
