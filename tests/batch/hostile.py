@@ -98,6 +98,8 @@ def tree(folder: Path, skip: Path | None = None) -> dict[str, str]:
             continue
         for name in dirnames + filenames:
             path = here / name
+            if path == skip:
+                continue
             rel = str(path.relative_to(folder))
             if path.is_symlink():
                 found[rel] = "link:" + os.readlink(path)
