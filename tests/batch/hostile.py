@@ -69,11 +69,17 @@ def run_batch(
     return proc, (read_results(results) if results.exists() else [])
 
 
+def _not_json(constant: str) -> None:
+    raise ValueError(f"{constant} is not JSON (RFC 8259)")
+
+
 def read_results(path: Path) -> list[dict[str, Any]]:
-    text = path.read_bytes().decode("utf-8")  # strict: a lone surrogate or bad byte raises
+    """Result lines, read strictly: UTF-8 (a lone surrogate or bad byte raises), split on \\n
+    only, and JSON as RFC 8259 has it (NaN and Infinity, which Python writes, refused)."""
+    text = path.read_bytes().decode("utf-8")
     lines = text.split("\n")
     assert lines[-1] == "", "the results file does not end with a newline"
-    return [json.loads(line) for line in lines[:-1]]
+    return [json.loads(line, parse_constant=_not_json) for line in lines[:-1]]
 
 
 def records_of(data: bytes) -> list[bytes]:

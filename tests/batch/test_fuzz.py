@@ -116,8 +116,8 @@ def raw_control_in_string(draw, rid):
 @st.composite
 def huge_numbers(draw, rid):
     digits = b"9" * draw(st.sampled_from([101, 4300, 4301, 5000, 20_000]))
-    field = draw(st.sampled_from(["id", "time_limit", "answer", "seed"]))
-    values = {"id": str(rid).encode(), "time_limit": b"2", "answer": b'"1"', "seed": b"1"}
+    field = draw(st.sampled_from([b"id", b"time_limit", b"answer", b"seed"]))
+    values = {b"id": str(rid).encode(), b"time_limit": b"2", b"answer": b'"1"', b"seed": b"1"}
     values[field] = draw(st.sampled_from([digits, b"-" + digits, digits + b".5", b"1e99999"]))
     line = b'{"id": %(id)s, "time_limit": %(time_limit)s, "part": "dof", "answer": %(answer)s, '
     line += b'"problem": {"scene": "simple_pendulum", "seed": %(seed)s}}'
