@@ -98,6 +98,19 @@ def test_check_batch_exit_status_is_zero_with_invalid_lines_and_two_without_a_fi
     no_traceback(missing)
 
 
+@pytest.mark.parametrize(
+    "number", [b"1e400", b"-1e400", b"9" * 101 + b".5"], ids=["1e400", "-1e400", "101-digit float"]
+)
+def test_an_id_that_is_a_huge_float_gives_a_strict_json_result(tmp_path, number):
+    """Python reads 1e400 as inf and writes it back as `Infinity`, which is not JSON; a
+    101-digit float comes back as 1e+101, which is not the id the client sent."""
+    line = b'{"id": %s, "problem": %s, "part": "dof", "answer": "1"}' % (number, PROBLEM)
+    proc, results = run_batch(tmp_path, [request(1, "1"), line, request(3, "1")])
+    no_traceback(proc)
+    assert [results[0]["id"], results[2]["id"]] == [1, 3]
+    assert results[1]["id"] is None or json.dumps(results[1]["id"]).encode() == number
+
+
 # --- grade: a bad sheet is that student's `invalid`, the class is graded ------------------------
 
 
@@ -175,6 +188,19 @@ def test_gradebook_names_that_would_run_as_formulas_begin_with_a_quote(classroom
     for sid, name in names.items():
         assert name.startswith("'"), (sid, name)
         assert planted[sid].strip() in name, (sid, name)  # neutralised, not dropped
+
+
+def test_a_carriage_return_inside_a_name_does_not_split_its_gradebook_row(classroom):
+    """Python's csv module quotes a cell holding its line terminator (here \\n) but not a lone
+    \\r, which every CSV reader and spreadsheet takes for a line end."""
+    manifest_path = classroom / "class" / "manifest.json"
+    manifest = json.loads(manifest_path.read_text())
+    manifest["students"][4]["name"] = "Ann\rBob"
+    manifest_path.write_text(json.dumps(manifest))
+    no_traceback(grade(classroom))
+    rows = gradebook(classroom / "grades")
+    assert [r["id"] for r in rows] == list(HOSTILE_NAMES)
+    assert all(r["status"] in ("graded", "invalid") for r in rows), rows
 
 
 def test_gradebook_keeps_plain_names_as_they_are(classroom):
