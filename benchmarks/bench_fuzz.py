@@ -209,7 +209,9 @@ def run(requests: Path, results: Path, jobs: int, source: Path) -> dict:
     peak = {"total": 0, "parent": 0, "child": 0}
     with tempfile.TemporaryFile() as stderr:
         start = time.perf_counter()
-        proc = subprocess.Popen(command, env=env, stdout=subprocess.DEVNULL, stderr=stderr)
+        proc = subprocess.Popen(
+            command, cwd=requests.parent, env=env, stdout=subprocess.DEVNULL, stderr=stderr
+        )  # not run from a source tree: `python -m` would import the lagrade found there
         while proc.poll() is None:
             total, parent, child = rss_of_tree(proc.pid)
             peak = {

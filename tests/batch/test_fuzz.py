@@ -63,6 +63,7 @@ NASTY = [
     "θ",
     "0^theta",
     "9" * 50,
+    "9" * 5000,
     "=HYPERLINK(",
     "<script>",
     "\\",

@@ -78,6 +78,13 @@ def test_zero_to_the_power_of_a_coordinate_is_judged_not_an_internal_error(tmp_p
     no_traceback(proc)
 
 
+def test_a_5000_digit_dof_answer_is_judged_not_an_internal_error(tmp_path):
+    """`dof` reads the answer with int(), which refuses more than 4,300 digits (ValueError)."""
+    proc, results = run_batch(tmp_path, [request(1, "9" * 5000), request(2, "1")])
+    no_traceback(proc)
+    assert [r["verdict"] for r in results] in (["incorrect", "correct"], ["invalid", "correct"])
+
+
 def test_a_huge_answer_gives_a_bounded_result_line(tmp_path):
     """`interpreted` and `feedback` echo the answer; a 1 MB answer must not make a 1 MB line."""
     answer = "m*" * 500_000 + "g"
@@ -169,6 +176,13 @@ def test_a_5000_digit_integer_in_a_sheet_is_invalid_not_error(classroom, name):
     (classroom / "subs" / "s1.toml").unlink()
     (classroom / "subs" / name).write_bytes(BIG_NUMBER_SHEETS[name])
     assert_only_s1_invalid(classroom, grade(classroom))
+
+
+def test_a_5000_digit_dof_string_in_a_sheet_is_graded_not_error(classroom):
+    (classroom / "subs" / "s1.toml").write_text("[problem1]\ndof = '" + "9" * 5000 + "'\n")
+    proc = grade(classroom)
+    no_traceback(proc)
+    assert statuses(classroom)["s1"][0] in ("graded", "invalid")
 
 
 def test_gradebook_names_that_would_run_as_formulas_begin_with_a_quote(classroom):
