@@ -32,6 +32,8 @@ import time
 from collections import Counter
 from pathlib import Path
 
+from rss import tree_rss
+
 ROOT = Path(__file__).resolve().parent.parent
 
 SCENES = ["simple_pendulum", "harmonic_oscillator", "atwood", "hoop", "free_particle"]
@@ -173,33 +175,8 @@ def build(count: int, seed: int) -> tuple[bytes, list[tuple[int, bool]]]:
 
 def rss_of_tree(root: int) -> tuple[int, int, int]:
     """(total, parent, largest child) resident set in kB of `root` and its descendants."""
-    parents = {}
-    for entry in os.listdir("/proc"):
-        if entry.isdigit():
-            try:
-                with open(f"/proc/{entry}/stat", "rb") as f:
-                    stat = f.read()
-                parents[int(entry)] = int(stat.rsplit(b")", 1)[1].split()[1])
-            except (OSError, IndexError, ValueError):
-                pass
-    tree, frontier = [root], [root]
-    while frontier:
-        frontier = [p for p, pp in parents.items() if pp in frontier]
-        tree += frontier
-    sizes = {pid: vm_rss(pid) for pid in tree}
-    children = [kb for pid, kb in sizes.items() if pid != root]
-    return sum(sizes.values()), sizes[root], max(children, default=0)
-
-
-def vm_rss(pid: int) -> int:
-    try:
-        with open(f"/proc/{pid}/status") as f:
-            for line in f:
-                if line.startswith("VmRSS:"):
-                    return int(line.split()[1])
-    except OSError:
-        pass
-    return 0
+    parent, children = tree_rss(root)
+    return parent + sum(children.values()), parent, max(children.values(), default=0)
 
 
 def run(requests: Path, results: Path, jobs: int, source: Path) -> dict:
