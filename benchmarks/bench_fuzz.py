@@ -4,9 +4,9 @@ Most lines are valid requests to a few bank scenes and reference expressions who
 the key's, mutated (characters inserted, dropped or swapped; tokens of the grammar, LaTeX,
 lone surrogates, Unicode line separators, backticks, controls, huge numbers spliced in); the
 rest are malformed lines: truncated or garbage JSON, bytes that are not UTF-8, escaped lone
-surrogates, 5,000-digit ids and time limits, nesting up to 100,000 deep, JSON scalars, wrong
-field types, raw controls inside strings, CRLF endings and blank lines. The file is seeded, so
-a run is reproducible.
+surrogates, 5,000-digit ids and time limits, ids such as 1e400, nesting up to 100,000 deep,
+JSON scalars, wrong field types, raw controls inside strings, CRLF endings and blank lines. The
+file is seeded, so a run is reproducible.
 
 The command runs as a child process, and the tree it starts (the batch and its workers) is
 sampled from /proc for resident memory. Reported: requests, results, missing (and extra),
@@ -24,6 +24,7 @@ import argparse
 import json
 import os
 import random
+import re
 import resource
 import subprocess
 import sys
@@ -124,7 +125,7 @@ def malformed_line(rng: random.Random, rid: int) -> tuple[bytes, bool]:
     if kind == 3:
         return good.replace(b'"1"', b'"\\ud800"'), False
     if kind == 4:
-        digits = b"9" * rng.choice([101, 4301, 5000])
+        digits = rng.choice([b"9" * 101, b"9" * 4301, b"9" * 5000, b"9" * 101 + b".5", b"1e400"])
         field = rng.choice([b'"id": %d' % rid, b'"answer": "1"'])
         return good.replace(field, field.split(b":")[0] + b": " + digits), False
     if kind == 5:
@@ -258,6 +259,12 @@ def main() -> None:
     print(f"exit status {outcome['status']}; --jobs {args.jobs}")
     if outcome["status"] != 0 or "Traceback" in outcome["err"]:
         print("stderr ends:", outcome["err"].strip().splitlines()[-1:] or ["(empty)"])
+    kinds = Counter()  # the exception that ends each traceback on stderr
+    for block in outcome["err"].split("Traceback (most recent call last):")[1:]:
+        ends = [line for line in block.splitlines() if re.match(r"\w+(Error|Exception)\b", line)]
+        kinds[ends[-1][:90] if ends else "?"] += 1
+    for kind, n in kinds.most_common(5):
+        print(f"stderr: {n} × {kind}")
     print(f"requests        {len(expected)}")
     print(f"results         {counts['results']}")
     for name in ("missing", "extra", "misaligned", "not UTF-8", "not strict JSON"):
