@@ -1,4 +1,5 @@
-"""A generated class with synthetic submissions, shared by the batch tests (built once)."""
+"""Generated classes shared by the batch tests (each built once): one with synthetic
+submissions, and a small hostile one (formula-like names, a title full of markup)."""
 
 from __future__ import annotations
 
