@@ -26,6 +26,7 @@ sys.path.insert(0, str(ROOT))
 from bench_grade import ASSIGNMENT  # noqa: E402
 from rss import tree_rss  # noqa: E402
 
+import lagrade  # noqa: E402
 from lagrade.assign.generate import generate  # noqa: E402
 from lagrade.cli.demo import write_submissions  # noqa: E402
 from lagrade.grading.batch import grade  # noqa: E402
@@ -49,7 +50,10 @@ def main() -> None:
     generate(root / "assignment.toml", root / "roster.csv", 5, root / "out", formats=("md",))
     manifest = json.loads((root / "out" / "manifest.json").read_text())
     write_submissions(root / "subs", manifest, malformed=None, missing=None)
-    print(f"class of {args.students} generated in {time.perf_counter() - t0:.0f} s (not timed)")
+    print(
+        f"class of {args.students} generated in {time.perf_counter() - t0:.0f} s (not timed); "
+        f"lagrade from {Path(lagrade.__file__).parent}"
+    )
 
     samples: list[tuple[int, float, int, dict[int, int]]] = []
     start = time.perf_counter()
