@@ -4,9 +4,10 @@ per request line, in order; one gradebook row per roster student; no `error`, no
 nothing written outside the output folder; every output valid UTF-8.
 
 Each example runs the real command in a child process (about a second), so the example counts
-are small and the database is off: the strategies aim at the known weak spots (lone surrogates,
-Unicode line separators, huge integers, deep nesting, bytes that are not UTF-8, wrong types)
-rather than relying on volume."""
+are small, the database is off and a failing example is reported whole, not shrunk (shrinking
+would rerun the command a hundred times): the strategies aim at the known weak spots (lone
+surrogates, Unicode line separators, huge integers, deep nesting, bytes that are not UTF-8,
+wrong types) rather than relying on volume, and each assertion names the line it is about."""
 
 from __future__ import annotations
 
@@ -15,7 +16,7 @@ import tempfile
 from pathlib import Path
 
 import pytest
-from hypothesis import HealthCheck, given, settings
+from hypothesis import HealthCheck, Phase, given, settings
 from hypothesis import strategies as st
 
 from tests.batch.conftest import HOSTILE_NAMES
@@ -37,6 +38,7 @@ FUZZ = settings(
     max_examples=15,
     deadline=None,
     database=None,
+    phases=[Phase.explicit, Phase.generate],  # no shrinking: it reruns the child process ~100×
     suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large],
 )
 
@@ -226,7 +228,7 @@ def test_check_batch_gives_one_result_per_request_line_in_order(lines, trailing_
         rid = 1000 + number  # each request its own id, so a shifted result shows
         line = line.replace(b'"id": 0,', b'"id": %d,' % rid, 1)
         records.append(line)
-        expected.append((rid, strict))
+        expected.append((rid, strict, line[:300]))
     data = b"\n".join(records) + (b"\n" if trailing_newline else b"")
     with tempfile.TemporaryDirectory() as folder:
         folder = Path(folder)
@@ -237,12 +239,12 @@ def test_check_batch_gives_one_result_per_request_line_in_order(lines, trailing_
         no_traceback(proc)
         assert proc.returncode == 0, proc.stderr[-2000:]
         results = read_results(folder / "results.jsonl")
-    assert len(results) == len(expected), [r["id"] for r in results]
-    for result, (rid, strict) in zip(results, expected, strict=True):
-        assert result["id"] == rid if strict else result["id"] in (rid, None), (result, rid)
-        assert result["verdict"] in ALLOWED, result
+    assert len(results) == len(expected), ([r["id"] for r in results], [e[0] for e in expected])
+    for result, (rid, strict, line) in zip(results, expected, strict=True):
+        assert result["id"] == rid if strict else result["id"] in (rid, None), (result, line)
+        assert result["verdict"] in ALLOWED, (result, line)
         if result["verdict"] == "invalid":
-            assert result["feedback"] and all(result["feedback"]), result
+            assert result["feedback"] and all(result["feedback"]), (result, line)
 
 
 # --- answer sheets: each strategy writes one student's submission into a folder -----------------
