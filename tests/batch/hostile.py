@@ -31,15 +31,23 @@ AD_HOC = {
 EXPRESSION = {"expression": "m*g*cos(theta)", "parameters": {"m": "positive", "theta": "(0, 1)"}}
 
 
+def command(*args: Any) -> list[str]:
+    """`python -m lagrade ARGS`; run it from outside a source tree, or `-m` imports that one."""
+    return [sys.executable, "-m", "lagrade", *map(str, args)]
+
+
+#: The environment of a child: the tree under test, and no .pyc files written into it.
+ENV = {**os.environ, "PYTHONPATH": str(SOURCE), "PYTHONDONTWRITEBYTECODE": "1"}
+
+
 def run_lagrade(
     *args: Any, cwd: Path, timeout: float = 300, preexec_fn: Callable[[], None] | None = None
 ) -> subprocess.CompletedProcess[bytes]:
     """`python -m lagrade ARGS` on the tree under test; stdout and stderr as bytes."""
-    env = {**os.environ, "PYTHONPATH": str(SOURCE), "PYTHONDONTWRITEBYTECODE": "1"}
     return subprocess.run(
-        [sys.executable, "-m", "lagrade", *map(str, args)],
+        command(*args),
         cwd=cwd,
-        env=env,
+        env=ENV,
         capture_output=True,
         timeout=timeout,
         preexec_fn=preexec_fn,

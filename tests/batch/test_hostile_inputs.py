@@ -10,13 +10,17 @@ import os
 import re
 import resource
 import signal
+import subprocess
+import time
 
 import pytest
 
 from tests.batch.conftest import HOSTILE_NAMES
 from tests.batch.hostile import (
     AD_HOC,
+    ENV,
     PENDULUM,
+    command,
     gradebook,
     no_traceback,
     request,
@@ -83,6 +87,23 @@ def test_a_5000_digit_dof_answer_is_judged_not_an_internal_error(tmp_path):
     proc, results = run_batch(tmp_path, [request(1, "9" * 5000), request(2, "1")])
     no_traceback(proc)
     assert [r["verdict"] for r in results] in (["incorrect", "correct"], ["invalid", "correct"])
+
+
+INSTRUCTOR_INPUT = {
+    "5000-digit domain bound": {**AD_HOC, "parameters": {"m": "(0, " + "9" * 5000 + ")"}},
+    "2000 coordinates": {**AD_HOC, "coordinates": ["theta"] + [f"q{i}" for i in range(1999)]},
+    "lone surrogate in a coordinate": {**AD_HOC, "coordinates": ["theta\ud800"]},
+}
+
+
+@pytest.mark.parametrize("problem", INSTRUCTOR_INPUT.values(), ids=INSTRUCTOR_INPUT.keys())
+def test_instructor_side_input_is_bounded_like_a_students(tmp_path, problem):
+    """An ad-hoc question is input too: past the limits it is `invalid` with a reason, not our
+    bug and not a minute spent deriving it."""
+    line = json.dumps({"id": 1, "problem": problem, "part": "lagrangian", "answer": "m"})
+    proc, results = run_batch(tmp_path, [line.encode(), request(2, "1")])
+    no_traceback(proc)
+    assert [r["verdict"] for r in results] == ["invalid", "correct"], results[0]["feedback"]
 
 
 def test_a_huge_answer_gives_a_bounded_result_line(tmp_path):
@@ -342,3 +363,21 @@ def test_grade_on_a_full_disk_exits_with_its_own_status_and_no_traceback(classro
     no_traceback(proc)
     assert proc.returncode not in (0, 1, 2), proc.returncode
     assert proc.stderr.strip()
+
+
+@pytest.mark.parametrize("delay", [0.1, 0.3, 0.6, 1.0])
+def test_ctrl_c_early_in_a_run_ends_it_quietly(classroom, delay):
+    """Ctrl-C while the command is still importing or warming up: status 130 (or killed by the
+    signal before Python handles it), and no traceback."""
+    run = subprocess.Popen(
+        command("grade", "class/manifest.json", "subs", "--out", "grades"),
+        cwd=classroom,
+        env=ENV,
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+    )
+    time.sleep(delay)
+    run.send_signal(signal.SIGINT)
+    _out, err = run.communicate(timeout=60)
+    assert b"Traceback" not in err, err.decode("utf-8", "replace")[-3000:]
+    assert run.returncode in (130, -signal.SIGINT, 0), run.returncode  # 0: it had finished
