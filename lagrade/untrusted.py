@@ -21,7 +21,7 @@ import json
 import math
 import re
 import tomllib
-from collections.abc import Iterator
+from collections.abc import Iterable, Iterator
 from typing import Any
 
 from lagrade.errors import UnreadableInput
@@ -45,11 +45,11 @@ SAFE_NAME_RULE = (
 _SURROGATE = re.compile("[\ud800-\udfff]")
 
 
-def split_records(data: bytes) -> Iterator[tuple[int, bytes]]:
-    """(line number, record) for every line of `data`, split on b"\\n" only; a trailing b"\\r"
-    is dropped (files saved on Windows)."""
-    for number, record in enumerate(data.split(b"\n"), 1):
-        yield number, record.removesuffix(b"\r")
+def split_records(stream: Iterable[bytes]) -> Iterator[tuple[int, bytes]]:
+    """(line number, record) for every line of a binary stream (an open file, or a list of
+    bytes lines), split on b"\n" only; a trailing b"\r" is dropped (files saved on Windows)."""
+    for number, line in enumerate(stream, 1):
+        yield number, line.removesuffix(b"\n").removesuffix(b"\r")
 
 
 def decode(data: bytes, what: str = "the text") -> str:

@@ -8,10 +8,12 @@ time limit are repeated here, and a test holds them equal to the judge's."""
 from __future__ import annotations
 
 import argparse
+import contextlib
 import json
 import sys
+from collections.abc import Iterator
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, BinaryIO
 
 import lagrade.untrusted as untrusted
 from lagrade.errors import RequestError
@@ -37,6 +39,11 @@ PART_NAMES = (
 DEFAULT_TIME_LIMIT = 2.0
 
 
+#: Request lines judged per round: the parent holds one round's requests and results at a time,
+#: so a batch of any size runs in bounded memory (a 39 MB file held ~500 MB when read whole).
+BATCH_CHUNK = 5_000
+
+
 def check_batch_file(
     requests: str | Path,
     out: str | Path | None = None,
@@ -45,32 +52,53 @@ def check_batch_file(
     jobs: int = 1,
 ) -> tuple[int, str]:
     """`lagrade check --batch`: results to `out` (written whole or not at all) or, without it,
-    as the returned text. Returns (exit status, text)."""
-    from lagrade.grading.atomic import write_text
-    from lagrade.judge.check import run_batch
+    to standard output as they come. Requests are read and judged a chunk at a time by one pool
+    of workers, so memory stays bounded whatever the batch's size. Returns (exit status, the
+    summary line to print: empty when the results went to standard output)."""
+    import lagrade.grading.atomic as atomic
+    from lagrade.judge.check import check_pool, run_batch
 
-    if str(requests) == "-":
-        data = sys.stdin.buffer.read()
-    else:
-        path = Path(requests)
-        try:
-            data = path.read_bytes()
-        except OSError as error:
-            raise RequestError(f"cannot read {path}: {error.strerror}") from None
-    records = (record for _number, record in untrusted.split_records(data))
+    source = sys.stdin.buffer if str(requests) == "-" else _open_requests(Path(requests))
     counts: dict[str, int] = {}
-    results = []
-    for result in run_batch(records, time_limit=time_limit, jobs=jobs):
-        counts[result["verdict"]] = counts.get(result["verdict"], 0) + 1
-        results.append(json.dumps(result, ensure_ascii=False))
-    body = "\n".join(results) + ("\n" if results else "")
-    summary = f"{len(results)} requests: " + ", ".join(
-        f"{v} {k}" for k, v in sorted(counts.items())
-    )
+    with contextlib.ExitStack() as stack:
+        stack.enter_context(source)
+        if out is not None:
+            sink = stack.enter_context(atomic.writing(Path(out)))
+        else:  # standard output: each result as soon as it is known, in order
+            sink = sys.stdout.buffer
+            sys.stdout.flush()
+        pool = stack.enter_context(check_pool(jobs))
+        for first_line, chunk in _chunks(source):
+            for result in run_batch(chunk, time_limit=time_limit, pool=pool, first_line=first_line):
+                counts[result["verdict"]] = counts.get(result["verdict"], 0) + 1
+                sink.write(json.dumps(result, ensure_ascii=False).encode("utf-8") + b"\n")
+            if out is None:
+                sink.flush()
     if out is None:
-        return 0, body.rstrip("\n")
-    write_text(Path(out), body)
+        return 0, ""
+    total = sum(counts.values())
+    summary = f"{total} requests: " + ", ".join(f"{v} {k}" for k, v in sorted(counts.items()))
     return 0, f"{summary}; results in {out}"
+
+
+def _open_requests(path: Path) -> BinaryIO:
+    try:
+        return path.open("rb")
+    except OSError as error:
+        raise RequestError(f"cannot read {path}: {error.strerror}") from None
+
+
+def _chunks(source: BinaryIO) -> Iterator[tuple[int, list[bytes]]]:
+    """(number of the first line, up to BATCH_CHUNK records of the stream)."""
+    chunk: list[bytes] = []
+    first = 1
+    for number, record in untrusted.split_records(source):
+        chunk.append(record)
+        if len(chunk) == BATCH_CHUNK:
+            yield first, chunk
+            first, chunk = number + 1, []
+    if chunk:
+        yield first, chunk
 
 
 # --- the command line -----------------------------------------------------------------------------

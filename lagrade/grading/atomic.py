@@ -53,6 +53,30 @@ def write_bytes(path: Path, data: bytes) -> None:
         raise
 
 
+@contextlib.contextmanager
+def writing(path: Path) -> Iterator[Any]:
+    """A binary file to stream into that appears at `path` only when the block ends normally
+    (write_bytes for output too large to hold in memory at once)."""
+    path = Path(path)
+    try:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        fd, tmp = tempfile.mkstemp(
+            prefix=f".{path.name}.{os.getpid()}.", suffix=".tmp", dir=path.parent
+        )
+    except OSError as error:
+        raise OutputError(_cannot_write(path, error)) from None
+    try:
+        with os.fdopen(fd, "wb") as f:
+            yield f
+        os.replace(tmp, path)
+    except BaseException as error:
+        with contextlib.suppress(FileNotFoundError):
+            os.unlink(tmp)
+        if isinstance(error, OSError):
+            raise OutputError(_cannot_write(path, error)) from None
+        raise
+
+
 def write_text(path: Path, text: str) -> None:
     """Write text as UTF-8. A lone surrogate cannot be UTF-8: the readers refuse them, and
     should one come through anyway it is written as its escape (`\\udc80`), never a crash."""

@@ -306,6 +306,7 @@ def run_batch(
     time_limit: float = DEFAULT_TIME_LIMIT,
     jobs: int = 1,
     pool: Pool | None = None,
+    first_line: int = 1,
 ) -> Iterator[dict[str, Any]]:
     """One result per input record, in order (blank records are skipped). Records may be bytes
     (split on b"\n" only, see `lagrade.untrusted`): one that is not UTF-8, not JSON, or past
@@ -313,7 +314,7 @@ def run_batch(
     answers: dict[int, dict[str, Any]] = {}  # lines settled without a worker, by position
     work = []
     ids: list[tuple[Any, Any]] = []
-    for number, line in enumerate(lines, 1):
+    for number, line in enumerate(lines, first_line):
         if not line.strip():
             continue
         position = len(ids)

@@ -160,3 +160,23 @@ def test_single_form_of_the_command():
     assert status == 1 and "incorrect" in text
     with pytest.raises(RequestError):
         run_check_command(_args("--part", "dof", "--answer", "1"))
+
+
+def test_batch_in_chunks_keeps_order_and_line_numbers(tmp_path, monkeypatch):
+    """A batch is judged a chunk at a time (bounded memory); results stay one per line, in
+    order, and a bad line is named by its number in the whole file, not in its chunk."""
+    import lagrade.cli.check as cli_check
+
+    monkeypatch.setattr(cli_check, "BATCH_CHUNK", 3)
+    good = '{"id": %d, "problem": {"scene": "hoop"}, "part": "dof", "answer": "1"}'
+    lines = [(good % i).encode() for i in range(1, 8)]
+    lines[4] = b'{"id": 5, "answer": "\xff"}'  # line 5, in the second chunk
+    requests = tmp_path / "r.jsonl"
+    requests.write_bytes(b"\n".join(lines) + b"\n")
+    out = tmp_path / "out.jsonl"
+    status, text = check_batch_file(requests, out)
+    results = [json.loads(line) for line in out.read_text().splitlines()]
+    assert status == 0 and "7 requests" in text
+    assert [r["id"] for r in results] == [1, 2, 3, 4, None, 6, 7]
+    assert results[4]["verdict"] == "invalid" and "line 5 " in results[4]["feedback"][0]
+    assert all(r["verdict"] == "correct" for k, r in enumerate(results) if k != 4)
