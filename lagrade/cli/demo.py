@@ -22,6 +22,7 @@ import sympy as sp
 import lagrade.grading.atomic as atomic
 from lagrade.assign.generate import generate
 from lagrade.assign.solution import latex_symbol_names
+from lagrade.cli.grade import summary_table
 from lagrade.grading.batch import BatchSummary, grade, question
 from lagrade.grading.manifest import student_variant
 from lagrade.judge.key import key_answer
@@ -330,20 +331,6 @@ def run_demo(folder: Path, *, jobs: int = 2, progress=None) -> tuple[BatchSummar
         "summary": summary.out_dir / "summary.md",
         "score chart": summary.out_dir / "scores.png",
     }
-
-
-def summary_table(summary: BatchSummary) -> str:
-    """A plain-text table of every student's status and score, and the totals."""
-    lines = [f"{'student':8} {'name':28} {'status':8} {'score':>12}  reason"]
-    for r in summary.results:
-        score = f"{r['score']:g} / {r['max_score']:g}"
-        lines.append(
-            f"{r['student']['id']:8} {r['student']['name'][:28]:28} {r['status']:8} "
-            f"{score:>12}  {r['reason'][:60]}"
-        )
-    counts = ", ".join(f"{k} {v}" for k, v in summary.counts.items() if v)
-    lines.append(f"\n{len(summary.results)} students: {counts}")
-    return "\n".join(lines)
 
 
 def run(args: argparse.Namespace) -> int:
