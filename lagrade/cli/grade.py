@@ -24,8 +24,7 @@ def summary_table(summary: BatchSummary) -> str:
             f"{score:>12}  {r['reason'][:60]}"
         )
     if summary.stray:
-        lines.append("
-not graded (no roster student's sheet):")
+        lines.append("\nnot graded (no roster student's sheet):")
         shown = list(summary.stray.items())[:SHOWN_STRAY]
         lines += [f"  {name!r}: {why}" for name, why in shown]
         if len(summary.stray) > SHOWN_STRAY:
