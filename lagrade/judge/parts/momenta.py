@@ -95,7 +95,7 @@ def check_momenta(problem: Problem, answer: Any, given: Mapping | None) -> Verdi
             mistakes.append(mutant.kind)
         else:
             feedback.append(
-                f"p_{j.name} is not ∂L/∂{j.name}_dot{where_text(witness_point(points, out, ans))}."
+                f"p_{j.name} is not ∂L/∂{j.name}_dot{where_text(witness_point(points, out, ans), problem)}."
             )
     score = right / len(jets)
     status = "correct" if right == len(jets) else "incorrect"
