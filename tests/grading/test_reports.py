@@ -53,7 +53,10 @@ def test_success_rate_divides_by_answers_given():
 
 
 def test_mean_is_rounded_for_a_person():
-    results = [_result(s, x, [_part("dof", "correct")]) for s, x in zip("abc", (24.5, 24.6, 24.6))]
+    results = [
+        _result(s, x, [_part("dof", "correct")])
+        for s, x in zip("abc", (24.5, 24.6, 24.6), strict=True)
+    ]
     summary = report.class_summary(MANIFEST, results)
     assert summary["mean_score"] == 24.6
     assert "mean score 24.6 of 30" in report.summary_markdown(MANIFEST, summary)
@@ -61,7 +64,9 @@ def test_mean_is_rounded_for_a_person():
 
 def test_chart_has_whole_students_only():
     pytest.importorskip("matplotlib")
-    results = [_result(s, x, [_part("dof", "correct")]) for s, x in zip("abc", (3, 17, 25))]
+    results = [
+        _result(s, x, [_part("dof", "correct")]) for s, x in zip("abc", (3, 17, 25), strict=True)
+    ]
     _png, svg = report.score_chart(results, 30.0)
     groups = re.findall(r'<g id="ytick_\d+">.*?<text [^>]*>([^<]*)</text>', svg.decode(), re.S)
     assert len(groups) >= 2, "the y axis has labelled ticks"

@@ -102,7 +102,9 @@ def judge_lagrangian(
         mistakes = (mutant.kind,)
     witness = witness_point(points, out, answer)
     feedback.append(
-        "Your L does not give the equations of motion of this system" + where_text(witness, problem) + "."
+        "Your L does not give the equations of motion of this system"
+        + where_text(witness, problem)
+        + "."
     )
     return ("incorrect", 0.0, feedback, out, witness, mistakes)
 
