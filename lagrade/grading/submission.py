@@ -20,6 +20,8 @@ from lagrade.errors import UnreadableInput
 #: The largest answer sheet read; a real one is a few kilobytes.
 MAX_SHEET_BYTES = 1024 * 1024
 SUFFIXES = (".toml", ".json")
+#: Stray files given a "did you mean" (a folder of ten thousand strays costs no more).
+MAX_SUGGESTED = 50
 #: Unknown keys reported one by one per problem; more are counted.
 MAX_KEY_WARNINGS = 10
 
@@ -71,10 +73,29 @@ def stray_files(folder: Path, student_ids: Iterable[str]) -> dict[str, str]:
                 f"{ids[stem]}.toml or {ids[stem]}.json"
             )
             continue
-        close = difflib.get_close_matches(stem, list(ids), n=1, cutoff=0.6)
-        hint = f" (did you mean {ids[close[0]]}?)" if close else ""
+        hint = _closest_ids(stem, ids) if len(stray) < MAX_SUGGESTED else ""
         stray[name] = f"belongs to no roster student{hint}; not read"
     return stray
+
+
+def _closest_ids(stem: str, ids: Mapping[str, str]) -> str:
+    """The hint ` (did you mean s005?)` naming the roster ids nearest `stem`, all of them when
+    several are equally near (s05 is as near to s005 as to s015): never a confident wrong
+    guess."""
+    matcher = difflib.SequenceMatcher(b=stem[:100])
+    scored = []
+    for i in ids:
+        matcher.set_seq1(i)
+        if matcher.real_quick_ratio() >= 0.6 and matcher.quick_ratio() >= 0.6:
+            scored.append((matcher.ratio(), i))
+    best = max((r for r, _ in scored), default=0.0)
+    if best < 0.6:
+        return ""
+    nearest = sorted(ids[i] for r, i in scored if r == best)
+    if len(nearest) > 3:
+        return ""
+    shown = nearest[0] if len(nearest) == 1 else ", ".join(nearest[:-1]) + " or " + nearest[-1]
+    return f" (did you mean {shown}?)"
 
 
 def meant_for(student_id: str, stray: Mapping[str, str]) -> list[str]:
@@ -211,12 +232,18 @@ def _unknown_keys(index: int, answers: Mapping[str, Any], valid: Sequence[str]) 
     for key in unknown[:MAX_KEY_WARNINGS]:
         shown = untrusted.bounded(key, 60)
         close = difflib.get_close_matches(key[:100].lower(), list(valid), n=1, cutoff=0.6)
-        if close:
-            lost = f", so {close[0]!r} counts as not answered" if close[0] not in answers else ""
-            hint = f"; did you mean {close[0]!r}?{lost}"
+        if close and close[0] not in answers:
+            text = (
+                f"[problem{index}] has no part {shown!r}: did you mean {close[0]!r}? That "
+                f"answer was not graded, and {close[0]!r} counts as not answered."
+            )
+        elif close:
+            text = f"[problem{index}] has no part {shown!r} (did you mean {close[0]!r}?); "
+            text += "that answer was not graded."
         else:
-            hint = f" (its parts are {', '.join(valid)})"
-        out.append(f"[problem{index}] has no part {shown!r}; that answer was not graded{hint}")
+            text = f"[problem{index}] has no part {shown!r}; that answer was not graded "
+            text += f"(its parts are {', '.join(valid)})."
+        out.append(text)
     if len(unknown) > MAX_KEY_WARNINGS:
         out.append(f"[problem{index}]: {len(unknown) - MAX_KEY_WARNINGS} more unknown keys")
     return out

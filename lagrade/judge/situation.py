@@ -94,14 +94,14 @@ def _join(parts: list[str]) -> str:
 
 def _angles(problem: Problem) -> frozenset[str]:
     """Coordinates that are angles: those the reference puts inside a trigonometric function
-    (θ in sin θ); a length never appears there."""
+    (θ in sin θ; a length never appears there) and those named by a Greek letter (Kepler's
+    polar angle φ, which L holds only as φ̇)."""
+    greek = {j.name for j in problem.jets if j.name.partition("_")[0] in _LETTER}
     reference = problem.lagrangian if problem.lagrangian is not None else problem.expression
-    if reference is None:
-        return frozenset()
     inside = set()
-    for f in reference.atoms(sp.sin, sp.cos, sp.tan):
+    for f in reference.atoms(sp.sin, sp.cos, sp.tan) if reference is not None else ():
         inside |= f.args[0].free_symbols
-    return frozenset(j.name for j in problem.jets if j.q in inside)
+    return frozenset(j.name for j in problem.jets if j.q in inside) | greek
 
 
 def _explicit_time(problem: Problem) -> bool:
