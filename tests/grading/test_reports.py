@@ -85,3 +85,15 @@ def test_html_feedback_keeps_the_caret_under_its_character(tmp_path):
     source, caret = block.group(1).split("\n")
     assert caret.strip() == "^"
     assert source[len(caret) - 1] == "("  # the bracket never closed, in monospace
+
+
+def test_markdown_feedback_keeps_the_caret_in_a_code_block(tmp_path):
+    verdict = check({"scene": "hoop"}, "lagrangian", "1/2 m R^2 theta_dot^2 + m g R cos(theta")
+    result = _result("s001", 0.0, [_part("lagrangian", verdict.status, (), verdict.feedback)])
+    report.write_student_outputs(tmp_path, MANIFEST, result)
+    md = (tmp_path / "feedback" / "s001.md").read_text()
+    block = re.search(r"```\n(.*?)\n```", md, flags=re.S)
+    assert block, md
+    source, caret = block.group(1).split("\n")
+    assert caret.strip() == "^" and source[len(caret) - 1] == "("
+    assert "| Missing ')'" in md  # the table keeps the message, not the collapsed caret
