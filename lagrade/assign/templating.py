@@ -100,6 +100,15 @@ def one_line(value: Any) -> str:
     return " ".join(str(value).split())
 
 
+def md_block(value: Any) -> str:
+    """A fenced Markdown code block holding `value` verbatim, lines and spacing kept (an
+    answer line with the caret under it): the fence is longer than any backtick run inside."""
+    text = str(value).rstrip("\n")
+    runs = re.findall(r"`+", text)
+    fence = "`" * max(3, max((len(r) for r in runs), default=0) + 1)
+    return f"{fence}\n{text}\n{fence}"
+
+
 def environment(templates_dir: str | Path | None = None) -> jinja2.Environment:
     """The strict jinja2 environment: an instructor's folder first, then the shipped templates."""
     import lagrade.assign.templates as shipped
@@ -128,5 +137,6 @@ def environment(templates_dir: str | Path | None = None) -> jinja2.Environment:
         literal=toml_literal,
         points=format_points,
         oneline=one_line,
+        mdblock=md_block,
     )
     return env

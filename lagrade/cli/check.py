@@ -254,7 +254,8 @@ def add_parser(commands: argparse._SubParsersAction) -> None:
         "(--expression). Exit 0 when correct (or when a --batch ran to its end), 1 otherwise.",
         epilog="examples:\n  lagrade check --scene wedge --part cyclic --answer x_M\n"
         '  lagrade check --scene hoop --part eom --answer "theta_ddot = omega^2 sin(theta) '
-        'cos(theta) - g/R sin(theta)"\n  lagrade check --batch requests.jsonl --out results.jsonl',
+        'cos(theta) - (g/R) sin(theta)"\n'
+        "  lagrade check --batch requests.jsonl --out results.jsonl",
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
     add_check_arguments(check)

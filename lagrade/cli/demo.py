@@ -7,24 +7,8 @@ from __future__ import annotations
 
 import argparse
 from pathlib import Path
-from typing import TYPE_CHECKING
 
-if TYPE_CHECKING:
-    from lagrade.grading.batch import BatchSummary
-
-
-def summary_table(summary: BatchSummary) -> str:
-    """A plain-text table of every student's status and score, and the totals."""
-    lines = [f"{'student':8} {'name':28} {'status':8} {'score':>12}  reason"]
-    for r in summary.results:
-        score = f"{r['score']:g} / {r['max_score']:g}"
-        lines.append(
-            f"{r['student']['id']:8} {r['student']['name'][:28]:28} {r['status']:8} "
-            f"{score:>12}  {r['reason'][:60]}"
-        )
-    counts = ", ".join(f"{k} {v}" for k, v in summary.counts.items() if v)
-    lines.append(f"\n{len(summary.results)} students: {counts}")
-    return "\n".join(lines)
+from lagrade.cli.grade import summary_table
 
 
 def run(args: argparse.Namespace) -> int:

@@ -4,6 +4,34 @@ from __future__ import annotations
 
 import argparse
 from pathlib import Path
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from lagrade.grading.batch import BatchSummary
+
+#: Stray files named one by one in the printed summary; summary.md lists them all.
+SHOWN_STRAY = 20
+
+
+def summary_table(summary: BatchSummary) -> str:
+    """A plain-text table of every student's status and score, the files of the submissions
+    folder that were not graded, and the totals (printed by `grade` and by `demo`)."""
+    lines = [f"{'student':8} {'name':28} {'status':8} {'score':>12}  reason"]
+    for r in summary.results:
+        score = f"{r['score']:g} / {r['max_score']:g}"
+        lines.append(
+            f"{r['student']['id']:8} {r['student']['name'][:28]:28} {r['status']:8} "
+            f"{score:>12}  {r['reason'][:60]}"
+        )
+    if summary.stray:
+        lines.append("\nnot graded (no roster student's sheet):")
+        shown = list(summary.stray.items())[:SHOWN_STRAY]
+        lines += [f"  {name!r}: {why}" for name, why in shown]
+        if len(summary.stray) > SHOWN_STRAY:
+            lines.append(f"  … and {len(summary.stray) - SHOWN_STRAY} more (see summary.md)")
+    counts = ", ".join(f"{k} {v}" for k, v in summary.counts.items() if v)
+    lines.append(f"\n{len(summary.results)} students: {counts}")
+    return "\n".join(lines)
 
 
 def run(args: argparse.Namespace) -> int:
@@ -19,8 +47,7 @@ def run(args: argparse.Namespace) -> int:
             part_time_limit=args.part_time_limit,
             progress=bar,
         )
-    counts = ", ".join(f"{k} {v}" for k, v in summary.counts.items() if v)
-    print(f"{len(summary.results)} students: {counts} ({summary.reused} unchanged, reused)")
+    print(summary_table(summary) + f" ({summary.reused} unchanged, reused)")
     print(f"gradebook: {summary.out_dir / 'gradebook.csv'}")
     print(f"summary:   {summary.out_dir / 'summary.md'}")
     return 0 if summary.all_graded else 1

@@ -48,6 +48,8 @@ class BatchSummary:
     counts: dict[str, int]
     reused: int
     results: list[dict[str, Any]] = field(repr=False)
+    #: Files in the submissions folder that are no roster student's sheet: name → why.
+    stray: dict[str, str] = field(default_factory=dict)
 
     @property
     def all_graded(self) -> bool:
@@ -215,7 +217,8 @@ def grade_student(manifest: Mapping, rubric: Rubric, task: Mapping[str, Any]) ->
     when the worker is forked, only the small task crosses the pipe)."""
     student = task["student"]
     problems = manifest["problems"]
-    sheet = read_sheet(Path(task["path"]), student["id"], len(problems))
+    keys = {p["index"]: [part["key"] for part in p["parts"]] for p in problems}
+    sheet = read_sheet(Path(task["path"]), student["id"], len(problems), keys)
     base = {"warnings": list(sheet.warnings) + ([task["note"]] if task.get("note") else [])}
     if not sheet.readable:
         return {**base, "status": "invalid", "reason": sheet.reason, "problems": []}
@@ -260,13 +263,16 @@ def _problem_result(problem: Mapping, entry: Mapping, parts: list[dict]) -> dict
 # --- the batch ----------------------------------------------------------------------------------
 
 
-def _fingerprint(path: Path | None, student: Mapping, rubric: Rubric, version: str) -> str:
+def _fingerprint(
+    path: Path | None, student: Mapping, rubric: Rubric, version: str, missing: str = ""
+) -> str:
     """What a result depends on: the submission's bytes (streamed, whatever their size), the
-    student's variant, the rubric and the grader's version."""
+    student's variant, the rubric and the grader's version; for a missing sheet, the reason
+    (it names a misnamed file, which can come or go)."""
     h = hashlib.sha256()
     h.update(json.dumps([student, rubric.as_dict(), version], sort_keys=True).encode())
     if path is None:
-        h.update(b"\x00<missing>")
+        h.update(b"\x00<missing>" + missing.encode())
         return h.hexdigest()
     h.update(b"\x00")
     submission.feed_digest(h, path)
@@ -341,20 +347,18 @@ def _grade_into(
     results: dict[str, dict[str, Any]] = {}
     tasks = []
     reused = 0
+    stray = submission.stray_files(submissions, (s["id"] for s in students))
     for student in students:
         path, note = find_submission(submissions, student["id"])
-        fingerprint = _fingerprint(path, student, rubric, version)
+        missing = _missing_reason(student["id"], stray) if path is None else ""
+        fingerprint = _fingerprint(path, student, rubric, version, missing)
         previous = report.read_student_result(out, student["id"])
         if previous is not None and previous.get("fingerprint") == fingerprint:
             results[student["id"]] = _held(previous)
             reused += 1
             continue
         if path is None:
-            outcome = {
-                "status": "missing",
-                "reason": "no answer sheet was submitted",
-                "problems": [],
-            }
+            outcome = {"status": "missing", "reason": missing, "problems": []}
             results[student["id"]] = _store(
                 out, manifest, _finish(student, manifest, outcome, fingerprint, version)
             )
@@ -396,9 +400,20 @@ def _grade_into(
                 progress(done, len(students), student["id"])
 
     ordered = [results[s["id"]] for s in students]
-    report.write_class_reports(out, manifest, ordered)
+    report.write_class_reports(out, manifest, ordered, stray)
     counts = {s: sum(1 for r in ordered if r["status"] == s) for s in STATUSES}
-    return BatchSummary(out, counts, reused, ordered)
+    return BatchSummary(out, counts, reused, ordered, stray)
+
+
+def _missing_reason(student_id: str, stray: Mapping[str, str]) -> str:
+    """Why a student has no result, naming a file that seems meant as their sheet."""
+    files = submission.meant_for(student_id, stray)
+    if not files:
+        return "no answer sheet was submitted"
+    return (
+        f"no answer sheet was submitted; {', '.join(files)} looks like one but is not read "
+        f"(name it {student_id}.toml or {student_id}.json)"
+    )
 
 
 def _outcome_result(outcome: Outcome, out: Path, student_id: str) -> dict[str, Any]:

@@ -145,10 +145,12 @@ def _num(x: float) -> str:
 
 
 def class_summary(
-    manifest: Mapping[str, Any], results: Sequence[Mapping[str, Any]]
+    manifest: Mapping[str, Any],
+    results: Sequence[Mapping[str, Any]],
+    stray: Mapping[str, str] | None = None,
 ) -> dict[str, Any]:
-    """Success rate per part (over students whose sheets were graded), the most common named
-    mistakes per problem, and the statuses."""
+    """Success rate per part (correct over answers given: a blank part is no attempt), the most
+    common named mistakes per problem, and the statuses."""
     graded = [r for r in results if r["problems"]]
     problems = []
     for problem in manifest["problems"]:
@@ -170,7 +172,9 @@ def class_summary(
                     "key": part["key"],
                     "answered": len(verdicts) - blank,
                     "correct": correct,
-                    "success_rate": round(correct / len(verdicts), 4) if verdicts else None,
+                    "success_rate": round(correct / (len(verdicts) - blank), 4)
+                    if len(verdicts) > blank
+                    else None,
                 }
             )
             for v in verdicts:
@@ -198,9 +202,10 @@ def class_summary(
     return {
         "students": len(results),
         "statuses": dict(sorted(Counter(r["status"] for r in results).items())),
-        "mean_score": round(sum(scores) / len(scores), 4) if scores else 0.0,
+        "mean_score": round(sum(scores) / len(scores), 1) if scores else 0.0,
         "max_score": results[0]["max_score"] if results else 0.0,
         "problems": problems,
+        "stray_files": dict(sorted((stray or {}).items())),
     }
 
 
@@ -211,13 +216,16 @@ def summary_markdown(manifest: Mapping[str, Any], summary: Mapping[str, Any]) ->
         + ", ".join(f"{k} {v}" for k, v in summary["statuses"].items())
         + f"; mean score {summary['mean_score']:g} of {summary['max_score']:g}."
     )
+    if summary.get("stray_files"):
+        lines += ["", "Files in the submissions folder that were not graded:", ""]
+        lines += [f"- {md_code(n)}: {md_escape(why)}" for n, why in summary["stray_files"].items()]
     lines += ["", "![score distribution](scores.svg)", ""]
     for problem in summary["problems"]:
         lines += [
             f"## Problem {problem['index']}: {md_escape(problem['title'])} "
             f"({md_escape(problem['scene'])})",
             "",
-            "| part | answered | correct | success rate |",
+            "| part | answered | correct | success rate (of answers) |",
             "| --- | --- | --- | --- |",
         ]
         for p in problem["parts"]:
@@ -243,6 +251,7 @@ def score_chart(
 
         matplotlib.use("Agg", force=False)
         from matplotlib.figure import Figure
+        from matplotlib.ticker import MaxNLocator
     except ImportError:
         return None
     scores = [r["score"] for r in results if r["status"] != "missing"]
@@ -253,6 +262,7 @@ def score_chart(
         ax.hist(scores, bins=bins, range=(0, max_score or 1), color="#4c72b0", edgecolor="white")
         ax.set_xlabel("score")
         ax.set_ylabel("students")
+        ax.yaxis.set_major_locator(MaxNLocator(integer=True))  # no half students
         ax.set_title(f"Score distribution ({len(scores)} submissions)")
         fig.tight_layout()
         png, svg = io.BytesIO(), io.BytesIO()
@@ -262,11 +272,15 @@ def score_chart(
 
 
 def write_class_reports(
-    out: Path, manifest: Mapping[str, Any], results: Sequence[Mapping[str, Any]]
+    out: Path,
+    manifest: Mapping[str, Any],
+    results: Sequence[Mapping[str, Any]],
+    stray: Mapping[str, str] | None = None,
 ) -> None:
-    """gradebook.csv, summary.json, summary.md and the score chart."""
+    """gradebook.csv, summary.json, summary.md and the score chart; `stray` lists the files
+    of the submissions folder that are no student's sheet (name → why)."""
     atomic.write_text(out / "gradebook.csv", gradebook_csv(manifest, results))
-    summary = class_summary(manifest, results)
+    summary = class_summary(manifest, results, stray)
     atomic.write_json(out / "summary.json", summary)
     atomic.write_text(out / "summary.md", summary_markdown(manifest, summary))
     chart = score_chart(results, summary["max_score"])

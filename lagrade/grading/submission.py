@@ -4,10 +4,12 @@ clear reason, never an exception that stops the batch."""
 
 from __future__ import annotations
 
+import difflib
 import errno
 import hashlib
 import os
 import stat
+from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -18,6 +20,10 @@ from lagrade.errors import UnreadableInput
 #: The largest answer sheet read; a real one is a few kilobytes.
 MAX_SHEET_BYTES = 1024 * 1024
 SUFFIXES = (".toml", ".json")
+#: Stray files given a "did you mean" (a folder of ten thousand strays costs no more).
+MAX_SUGGESTED = 50
+#: Unknown keys reported one by one per problem; more are counted.
+MAX_KEY_WARNINGS = 10
 
 
 @dataclass(frozen=True)
@@ -49,8 +55,63 @@ def find_submission(folder: Path, student_id: str) -> tuple[Path | None, str]:
     return (matches[0] if matches else None), ""
 
 
-def read_sheet(path: Path, student_id: str, problem_count: int) -> Sheet:
-    """Read and validate an answer sheet, never raising over its content."""
+def stray_files(folder: Path, student_ids: Iterable[str]) -> dict[str, str]:
+    """Every entry of `folder` that no roster student's sheet is, by name, with a sentence
+    for the instructor (who it seems meant for, or the closest roster id). Hidden entries
+    (`.DS_Store`, an editor's swap file) are skipped. Entries are listed, never opened."""
+    ids = {i.lower(): i for i in student_ids}
+    sheets = {i + s for i in ids for s in SUFFIXES}
+    stray = {}
+    for entry in sorted(folder.iterdir()):
+        name = untrusted.bounded(entry.name, 200)  # any bytes can name a file
+        if name.startswith(".") or name.lower() in sheets:
+            continue
+        stem = name.split(".", 1)[0].lower()
+        if stem in ids:
+            stray[name] = (
+                f"looks meant for {ids[stem]} but is not read: an answer sheet is named "
+                f"{ids[stem]}.toml or {ids[stem]}.json"
+            )
+            continue
+        hint = _closest_ids(stem, ids) if len(stray) < MAX_SUGGESTED else ""
+        stray[name] = f"belongs to no roster student{hint}; not read"
+    return stray
+
+
+def _closest_ids(stem: str, ids: Mapping[str, str]) -> str:
+    """The hint ` (did you mean s005?)` naming the roster ids nearest `stem`, all of them when
+    several are equally near (s05 is as near to s005 as to s015): never a confident wrong
+    guess."""
+    matcher = difflib.SequenceMatcher(b=stem[:100])
+    scored = []
+    for i in ids:
+        matcher.set_seq1(i)
+        if matcher.real_quick_ratio() >= 0.6 and matcher.quick_ratio() >= 0.6:
+            scored.append((matcher.ratio(), i))
+    best = max((r for r, _ in scored), default=0.0)
+    if best < 0.6:
+        return ""
+    nearest = sorted(ids[i] for r, i in scored if r == best)
+    if len(nearest) > 3:
+        return ""
+    shown = nearest[0] if len(nearest) == 1 else ", ".join(nearest[:-1]) + " or " + nearest[-1]
+    return f" (did you mean {shown}?)"
+
+
+def meant_for(student_id: str, stray: Mapping[str, str]) -> list[str]:
+    """The stray files whose name is this student's id with another suffix (`s005.txt`)."""
+    return [n for n in stray if n.split(".", 1)[0].lower() == student_id.lower()]
+
+
+def read_sheet(
+    path: Path,
+    student_id: str,
+    problem_count: int,
+    keys: Mapping[int, Sequence[str]] | None = None,
+) -> Sheet:
+    """Read and validate an answer sheet, never raising over its content. `keys[k]` are the
+    part keys of problem k; a key the problem does not have is reported as a warning, with
+    the closest valid key (a misspelled `lagrangain` must not silently read as "not answered")."""
     data, reason = _read_regular_file(path)
     if reason:
         return _bad(path, "", reason)
@@ -69,7 +130,7 @@ def read_sheet(path: Path, student_id: str, problem_count: int) -> Sheet:
         return _bad(path, digest, str(error))
     if not isinstance(raw, dict):
         return _bad(path, digest, "the answer sheet must be a table of problems")
-    return _structure(path, digest, raw, student_id, problem_count)
+    return _structure(path, digest, raw, student_id, problem_count, keys or {})
 
 
 def feed_digest(digest: Any, path: Path) -> None:
@@ -129,7 +190,14 @@ def _read_regular_file(path: Path) -> tuple[bytes, str]:
     return data, ""
 
 
-def _structure(path: Path, digest: str, raw: dict, student_id: str, problem_count: int) -> Sheet:
+def _structure(
+    path: Path,
+    digest: str,
+    raw: dict,
+    student_id: str,
+    problem_count: int,
+    keys: Mapping[int, Sequence[str]],
+) -> Sheet:
     warnings = []
     declared = raw.get("student_id")
     if declared is not None and str(declared).lower() != student_id.lower():
@@ -144,6 +212,8 @@ def _structure(path: Path, digest: str, raw: dict, student_id: str, problem_coun
             warnings.append(f"[problem{index}] is not a table; its answers were ignored")
             table = {}
         answers[index] = {str(k): _answer_value(v) for k, v in table.items()}
+        if index in keys:
+            warnings += _unknown_keys(index, answers[index], keys[index])
     extra = sorted(
         k
         for k in raw
@@ -152,6 +222,31 @@ def _structure(path: Path, digest: str, raw: dict, student_id: str, problem_coun
     if extra:
         warnings.append(f"ignored tables that the assignment does not have: {', '.join(extra)}")
     return Sheet(path, digest, answers, "", tuple(warnings))
+
+
+def _unknown_keys(index: int, answers: Mapping[str, Any], valid: Sequence[str]) -> list[str]:
+    """A warning per key of [problem<index>] that names no part, with the closest valid key
+    (at most MAX_KEY_WARNINGS of them: a sheet of ten thousand made-up keys gets a count)."""
+    unknown = [k for k in answers if k not in valid]
+    out = []
+    for key in unknown[:MAX_KEY_WARNINGS]:
+        shown = untrusted.bounded(key, 60)
+        close = difflib.get_close_matches(key[:100].lower(), list(valid), n=1, cutoff=0.6)
+        if close and close[0] not in answers:
+            text = (
+                f"[problem{index}] has no part {shown!r}: did you mean {close[0]!r}? That "
+                f"answer was not graded, and {close[0]!r} counts as not answered."
+            )
+        elif close:
+            text = f"[problem{index}] has no part {shown!r} (did you mean {close[0]!r}?); "
+            text += "that answer was not graded."
+        else:
+            text = f"[problem{index}] has no part {shown!r}; that answer was not graded "
+            text += f"(its parts are {', '.join(valid)})."
+        out.append(text)
+    if len(unknown) > MAX_KEY_WARNINGS:
+        out.append(f"[problem{index}]: {len(unknown) - MAX_KEY_WARNINGS} more unknown keys")
+    return out
 
 
 def _answer_value(value: Any) -> Any:

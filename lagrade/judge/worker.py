@@ -180,6 +180,9 @@ def _serve(conn: Connection, work: Callable[[Any], Any], limits: Limits) -> None
     global _parent
     _parent = conn
     signal.signal(signal.SIGINT, signal.SIG_IGN)  # the parent handles Ctrl-C and kills us
+    # The parent stops us with SIGTERM: die quietly, not through the CLI's handler (inherited
+    # by the fork), which would raise KeyboardInterrupt and print a traceback from the child.
+    signal.signal(signal.SIGTERM, signal.SIG_DFL)
     try:
         ceiling = _address_space_in_use() + limits.memory_mib * 1024 * 1024
         resource.setrlimit(resource.RLIMIT_AS, (ceiling, ceiling))

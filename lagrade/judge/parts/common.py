@@ -16,6 +16,7 @@ from lagrade.judge.mutations import Mutant
 from lagrade.judge.parts.reading import Read
 from lagrade.judge.problem import Problem
 from lagrade.judge.sampling import Points
+from lagrade.judge.situation import situation
 from lagrade.judge.verdict import Verdict
 
 
@@ -52,10 +53,12 @@ def witness_point(
     return points.point(outcome.where, syms)
 
 
-def where_text(witness: Mapping[str, float] | None) -> str:
+def where_text(witness: Mapping[str, float] | None, problem: Problem | None = None) -> str:
+    """Where a wrong answer shows, as a situation: " (for example at θ = 0.3 rad with the
+    system at rest)" (see `lagrade.judge.situation`); nothing without a point."""
     if not witness:
         return ""
-    return " (for example at " + ", ".join(f"{k} = {v:g}" for k, v in witness.items()) + ")"
+    return f" (for example {situation(witness, problem)})"
 
 
 def method_name(*outcomes: Outcome) -> str:
@@ -94,11 +97,12 @@ def incorrect(
     sentence: str,
     witness: Mapping[str, float] | None,
     method: str,
+    problem: Problem | None = None,
 ) -> Verdict:
     """A wrong single-expression answer: the named mistake (when the catalogue knows it),
     then what is wrong, with a point where it shows."""
     feedback = [as_sentence(mutant.message)] if mutant is not None else []
-    feedback.append(sentence + where_text(witness) + ".")
+    feedback.append(sentence + where_text(witness, problem) + ".")
     mistakes = (mutant.kind,) if mutant is not None else ()
     return Verdict(
         part,

@@ -131,7 +131,7 @@ def check_conserved(problem: Problem, answer: Any, given: Mapping | None) -> Ver
             else:
                 feedback.append(
                     f"{label} is not conserved: its time derivative along the motion "
-                    f"is not zero{where_text(witness_point(points, out, Q))}."
+                    f"is not zero{where_text(witness_point(points, out, Q), problem)}."
                 )
     rank = _gradient_rank(right_grads)
     n_right = len(right_grads)
@@ -142,7 +142,7 @@ def check_conserved(problem: Problem, answer: Any, given: Mapping | None) -> Ver
         fraction = n_right / listed if listed else 0.0
         score = fraction * min(1.0, rank / key_rank)
         if rank < key_rank:
-            names = ", ".join(key)
+            names = ", ".join(_named(problem, name) for name in key)
             noun = "quantity" if key_rank == 1 else "quantities"
             feedback.append(
                 f"This system has {key_rank} independent conserved {noun} "
@@ -200,3 +200,15 @@ def _gradient_rank(grads: Sequence[np.ndarray]) -> int:
     if not np.all(np.isfinite(coef)):
         coef = np.nan_to_num(coef)
     return row_rank(coef, list(range(len(grads))))
+
+
+def _named(problem: Problem, name: str) -> str:
+    """A key quantity as the feedback names it: `h` is "the energy function h", or just "the
+    energy function" when h is also a parameter (the wedge's height); a momentum whose name
+    clashes with a parameter is called the momentum conjugate to its coordinate."""
+    clash = name in problem.parameters
+    if name == "h":
+        return "the energy function" if clash else "the energy function h"
+    if clash and name.startswith("p_"):
+        return f"the momentum conjugate to {name[2:]}"
+    return name

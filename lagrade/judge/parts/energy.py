@@ -102,7 +102,9 @@ def judge_lagrangian(
         mistakes = (mutant.kind,)
     witness = witness_point(points, out, answer)
     feedback.append(
-        "Your L does not give the equations of motion of this system" + where_text(witness) + "."
+        "Your L does not give the equations of motion of this system"
+        + where_text(witness, problem)
+        + "."
     )
     return ("incorrect", 0.0, feedback, out, witness, mistakes)
 
@@ -189,6 +191,7 @@ def check_kinetic(problem: Problem, answer: Any, given: Mapping | None) -> Verdi
         "Your T is not the kinetic energy of this system",
         witness_point(points, out, answer_c),
         method_name(out),
+        problem,
     )
 
 
@@ -214,4 +217,5 @@ def check_potential(problem: Problem, answer: Any, given: Mapping | None) -> Ver
         "Your V is not the potential energy of this system (up to a constant)",
         witness_point(points, out, answer_c),
         method_name(out),
+        problem,
     )

@@ -81,7 +81,7 @@ def check_eom(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
         else:
             feedback.append(
                 f"{label} does not follow from the Euler–Lagrange equations of this "
-                f"system{where_text(witness_point(points, out, compiled[k]))}."
+                f"system{where_text(witness_point(points, out), problem)}."
             )
     rank = row_rank(rows.coef.astype(float), right)
     follows = False

@@ -108,4 +108,5 @@ def check_expression(problem: Problem, answer: Any, given: Mapping | None) -> Ve
         "Your answer is not equal to the expected expression",
         witness_point(points, out, ans, ref),
         out.method if decided is not None else method_name(out),
+        problem,
     )

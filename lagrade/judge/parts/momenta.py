@@ -94,9 +94,8 @@ def check_momenta(problem: Problem, answer: Any, given: Mapping | None) -> Verdi
             feedback.append(as_sentence(mutant.message))
             mistakes.append(mutant.kind)
         else:
-            feedback.append(
-                f"p_{j.name} is not ∂L/∂{j.name}_dot{where_text(witness_point(points, out, ans))}."
-            )
+            where = where_text(witness_point(points, out, ans), problem)
+            feedback.append(f"p_{j.name} is not ∂L/∂{j.name}_dot{where}.")
     score = right / len(jets)
     status = "correct" if right == len(jets) else "incorrect"
     follows = status != "correct" and any_wrong and follows_all and own is not None

@@ -110,7 +110,7 @@ def check_transformation(problem: Problem, answer: Any, given: Mapping | None) -
     n = len(problem.jets)
     feedback, mistakes = [], []
     for shown, w in failures:
-        feedback.append(f"Your positions violate the constraint {shown}{where_text(w)}.")
+        feedback.append(f"Your positions violate the constraint {shown}{where_text(w, problem)}.")
         mistakes.append("violates_constraint")
     if rank < n:
         feedback.append(

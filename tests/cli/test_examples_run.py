@@ -1,0 +1,120 @@
+"""Every example command we print — in each `--help` epilog and in the README's command table
+and round trip — is accepted by the tool itself: exit status 0 or 1, never 2 (usage or bad
+input). An example the tool refuses teaches the wrong thing on the first try."""
+
+from __future__ import annotations
+
+import re
+import shlex
+import shutil
+from pathlib import Path
+
+import pytest
+
+from lagrade.cli.main import EXIT_BAD_INPUT, build_parser, main
+
+ROOT = Path(__file__).resolve().parents[2]
+
+#: The README table's placeholders, as an instructor would fill them in.
+PLACEHOLDERS = {
+    "SCENE": "wedge",
+    '"TEXT"': '"1/2 m R^2 theta_dot^2"',
+    '"…"': '"x_M_ddot = 0"',
+    "ASSIGNMENT.toml": "examples/assignment.toml",
+    "roster.csv": "examples/roster.csv",
+    "S": "2025",
+    "DIR/manifest.json": "ps3/manifest.json",
+    "DIR": "ps3",
+    "SUBMISSIONS": "submissions/",
+    "REQUESTS.jsonl": "requests.jsonl",
+    "RESULTS.jsonl": "results.jsonl",
+}
+#: Runs a whole synthetic class (minutes); `lagrade demo` has its own end-to-end test.
+SLOW = {"demo"}
+#: Generating PDF needs TeX Live, which a test machine may lack (exit 3, environment).
+NEEDS_TEX = "pdf"
+
+
+def _epilog_examples() -> list[str]:
+    parser = build_parser()
+    texts = [parser.epilog or ""]
+    for action in parser._subparsers._group_actions:  # the registered commands
+        texts += [sub.epilog or "" for sub in action.choices.values()]
+        for sub in action.choices.values():  # `bank list`, `bank show`
+            for inner in getattr(sub, "_subparsers", None) and sub._subparsers._group_actions or []:
+                texts += [s.epilog or "" for s in inner.choices.values()]
+    found = []
+    for text in texts:
+        for line in text.splitlines():
+            line = line.strip().removeprefix("example:").removeprefix("examples:").strip()
+            if line.startswith("lagrade "):
+                found.append(line)
+    return found
+
+
+def _readme_examples() -> list[str]:
+    readme = (ROOT / "README.md").read_text(encoding="utf-8")
+    found = []
+    for template in re.findall(r"^\| `(lagrade [^`]*)` \|", readme, flags=re.M):
+        command = re.sub(r"\s*\[[^\]]*\]", "", template.replace("\\|", "|"))
+        words = [PLACEHOLDERS.get(w, w) for w in shlex.split(command, posix=False)]
+        found.append(" ".join(words))
+    block = re.search(r"```sh\n(.*?)```", readme, flags=re.S)
+    found += [ln for ln in block.group(1).splitlines() if ln.startswith("lagrade ")]
+    return found
+
+
+EXAMPLES = sorted(set(_epilog_examples()) | set(_readme_examples()))
+
+
+def test_every_source_of_examples_is_read():
+    assert any(e.startswith("lagrade check --scene hoop") for e in EXAMPLES)  # check --help
+    assert any(e.startswith("lagrade grade ps3/manifest.json") for e in EXAMPLES)  # README
+    assert any(e.startswith("lagrade parse ") for e in EXAMPLES)  # the main --help
+
+
+@pytest.fixture(scope="module")
+def workdir(tmp_path_factory) -> Path:
+    """A folder holding what the examples name: examples/, a request file, an (empty)
+    submissions folder, and ps3/ once the generate example has run."""
+    root = tmp_path_factory.mktemp("examples")
+    shutil.copytree(ROOT / "examples", root / "examples")
+    (root / "submissions").mkdir()
+    (root / "requests.jsonl").write_text(
+        '{"id": 1, "problem": {"scene": "wedge"}, "part": "cyclic", "answer": ["x_M"]}\n'
+    )
+    return root
+
+
+def _ordered() -> list[str]:
+    """`generate` before `grade` (grading needs its manifest)."""
+    return sorted(EXAMPLES, key=lambda e: (" grade " in f"{e} ", e))
+
+
+@pytest.mark.parametrize("example", _ordered())
+def test_example_is_accepted(example, workdir, monkeypatch, capfd):
+    argv = shlex.split(example)[1:]
+    if argv[0] in SLOW:
+        pytest.skip(f"`lagrade {argv[0]}` runs for minutes")
+    if argv[0] == "generate":
+        formats = [a for a in argv if NEEDS_TEX in a.split(",")]
+        if formats and shutil.which("pdflatex") is None and shutil.which("lualatex") is None:
+            argv = [a if a not in formats else "md,html" for a in argv]
+        out = workdir / argv[argv.index("--out") + 1]
+        shutil.rmtree(out, ignore_errors=True)
+    if argv[0] == "grade" and not (workdir / "ps3" / "manifest.json").exists():
+        assert main(shlex.split(_generate_example())[1:] + ["--formats", "md"]) == 0
+    monkeypatch.chdir(workdir)
+    try:
+        status = main(argv)
+    except SystemExit as stop:  # argparse refusing the command line
+        status = stop.code
+    out, err = capfd.readouterr()
+    assert status in (0, 1), f"{example!r} exited {status}: {err}"
+    assert status != EXIT_BAD_INPUT and "Traceback" not in err, err
+    if argv[0] == "check" and "--answer" in argv:  # an example answer the parser refuses
+        assert ": invalid" not in out, out
+
+
+def _generate_example() -> str:
+    return next(e for e in EXAMPLES if e.startswith("lagrade generate") and "pdf" not in e)

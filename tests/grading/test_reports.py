@@ -1,0 +1,99 @@
+"""The class reports read right: a success rate over the answers given, a mean rounded for a
+person, a chart without half students; feedback pages that keep a caret under its character."""
+
+from __future__ import annotations
+
+import re
+
+import pytest
+
+from lagrade.grading import report
+from lagrade.judge.check import check
+
+
+def _part(key, verdict, mistakes=(), feedback=()):
+    return {
+        "key": key,
+        "part": key,
+        "verdict": verdict,
+        "points": 1.0 if verdict == "correct" else 0.0,
+        "max_points": 1.0,
+        "feedback": list(feedback),
+        "interpreted": "",
+        "method": "numeric",
+        "mistakes": list(mistakes),
+        "follows_from_own_answer": False,
+    }
+
+
+def _result(sid, score, parts, status="graded"):
+    problems = [{"index": 1, "scene": "hoop", "title": "Hoop", "score": score, "max_score": 30.0,
+                 "parts": parts}] if parts else []  # fmt: skip
+    return {"student": {"id": sid, "name": sid}, "status": status, "reason": "",
+            "warnings": [], "score": score, "max_score": 30.0, "problems": problems}  # fmt: skip
+
+
+MANIFEST = {
+    "assignment": {"title": "PS", "total_points": 30},
+    "problems": [{"index": 1, "scene": "hoop", "title": "Hoop", "parts": [{"key": "dof"}]}],
+    "students": [],
+}
+
+
+def test_success_rate_divides_by_answers_given():
+    results = [
+        _result("a", 24.5, [_part("dof", "correct")]),
+        _result("b", 24.6, [_part("dof", "incorrect", ("blank",), ("Not answered.",))]),
+        _result("c", 24.6, [_part("dof", "incorrect", ("blank",), ("Not answered.",))]),
+    ]
+    summary = report.class_summary(MANIFEST, results)
+    dof = summary["problems"][0]["parts"][0]
+    assert dof["answered"] == 1 and dof["correct"] == 1
+    assert dof["success_rate"] == 1.0  # 1 of the 1 answer given, not 1 of 3 students
+
+
+def test_mean_is_rounded_for_a_person():
+    results = [
+        _result(s, x, [_part("dof", "correct")])
+        for s, x in zip("abc", (24.5, 24.6, 24.6), strict=True)
+    ]
+    summary = report.class_summary(MANIFEST, results)
+    assert summary["mean_score"] == 24.6
+    assert "mean score 24.6 of 30" in report.summary_markdown(MANIFEST, summary)
+
+
+def test_chart_has_whole_students_only():
+    pytest.importorskip("matplotlib")
+    results = [
+        _result(s, x, [_part("dof", "correct")]) for s, x in zip("abc", (3, 17, 25), strict=True)
+    ]
+    _png, svg = report.score_chart(results, 30.0)
+    groups = re.findall(r'<g id="ytick_\d+">.*?<text [^>]*>([^<]*)</text>', svg.decode(), re.S)
+    assert len(groups) >= 2, "the y axis has labelled ticks"
+    assert all(re.fullmatch(r"\d+", t) for t in groups), groups  # 0, 1 — never 0.5
+
+
+def test_html_feedback_keeps_the_caret_under_its_character(tmp_path):
+    verdict = check({"scene": "hoop"}, "lagrangian", "1/2 m R^2 theta_dot^2 + m g R cos(theta")
+    assert "\n" in verdict.feedback[0]  # message, the answer line, the caret line
+    part = _part("lagrangian", verdict.status, (), verdict.feedback)
+    result = _result("s001", 0.0, [part])
+    report.write_student_outputs(tmp_path, MANIFEST, result)
+    html = (tmp_path / "feedback" / "s001.html").read_text()
+    block = re.search(r'<pre class="source">(.*?)</pre>', html, flags=re.S)
+    assert block, html
+    source, caret = block.group(1).split("\n")
+    assert caret.strip() == "^"
+    assert source[len(caret) - 1] == "("  # the bracket never closed, in monospace
+
+
+def test_markdown_feedback_keeps_the_caret_in_a_code_block(tmp_path):
+    verdict = check({"scene": "hoop"}, "lagrangian", "1/2 m R^2 theta_dot^2 + m g R cos(theta")
+    result = _result("s001", 0.0, [_part("lagrangian", verdict.status, (), verdict.feedback)])
+    report.write_student_outputs(tmp_path, MANIFEST, result)
+    md = (tmp_path / "feedback" / "s001.md").read_text()
+    block = re.search(r"```\n(.*?)\n```", md, flags=re.S)
+    assert block, md
+    source, caret = block.group(1).split("\n")
+    assert caret.strip() == "^" and source[len(caret) - 1] == "("
+    assert "| Missing ')'" in md  # the table keeps the message, not the collapsed caret
