@@ -46,9 +46,12 @@ def run(args: argparse.Namespace) -> int:
             jobs=args.jobs,
             part_time_limit=args.part_time_limit,
             progress=bar,
+            exports=tuple(dict.fromkeys(k for k in args.export if k != "csv")),
         )
     print(summary_table(summary) + f" ({summary.reused} unchanged, reused)")
     print(f"gradebook: {summary.out_dir / 'gradebook.csv'}")
+    for kind in dict.fromkeys(k for k in args.export if k != "csv"):
+        print(f"{kind + ':':10} {summary.out_dir / f'gradebook-{kind}.csv'}")
     print(f"summary:   {summary.out_dir / 'summary.md'}")
     return 0 if summary.all_graded else 1
 
@@ -73,5 +76,13 @@ def add_parser(commands: argparse._SubParsersAction) -> None:
         type=float,
         default=2.0,
         help="seconds allowed per answer part (default 2)",
+    )
+    grade.add_argument(
+        "--export",
+        action="append",
+        default=[],
+        choices=("canvas", "moodle", "csv"),
+        help="also write the gradebook as Canvas or Moodle import it (gradebook-canvas.csv, "
+        "gradebook-moodle.csv); repeat for both; csv is gradebook.csv, always written",
     )
     grade.set_defaults(run=run)

@@ -14,12 +14,13 @@ import functools
 import gc
 import hashlib
 import json
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
 import lagrade.grading.atomic as atomic
+import lagrade.grading.gradebooks as gradebooks
 import lagrade.grading.report as report
 import lagrade.grading.submission as submission
 from lagrade.assign.manifest import project_version
@@ -311,9 +312,11 @@ def grade(
     part_time_limit: float = 2.0,
     limits: Limits | None = None,
     progress: Callable[[int, int, str], None] | None = None,
+    exports: Sequence[str] = (),
 ) -> BatchSummary:
     """Grade every roster student's sheet in `submissions`; write results into `out_dir`
-    (default: `grades/` beside the manifest). See the module docstring for the guarantees."""
+    (default: `grades/` beside the manifest); `exports` adds LMS gradebooks ("canvas",
+    "moodle": `lagrade.grading.gradebooks`). See the module docstring for the guarantees."""
     manifest_path = Path(manifest_path)
     submissions = Path(submissions)
     if not submissions.is_dir():
@@ -324,7 +327,7 @@ def grade(
     with atomic.hold_folder(out):
         atomic.remove_stale_temporaries(out)
         return _grade_into(
-            out, manifest, rubric, submissions, jobs, part_time_limit, limits, progress
+            out, manifest, rubric, submissions, jobs, part_time_limit, limits, progress, exports
         )
 
 
@@ -337,6 +340,7 @@ def _grade_into(
     part_time_limit: float,
     limits: Limits | None,
     progress: Callable[[int, int, str], None] | None,
+    exports: Sequence[str] = (),
 ) -> BatchSummary:
     """The body of `grade`, run while this process holds the output folder."""
     version = project_version()
@@ -401,6 +405,9 @@ def _grade_into(
 
     ordered = [results[s["id"]] for s in students]
     report.write_class_reports(out, manifest, ordered, stray)
+    for kind in exports:  # LMS gradebooks, beside our own
+        gradebook = gradebooks.EXPORTS[kind](manifest, ordered)
+        atomic.write_text(out / gradebooks.export_file_name(kind), gradebook)
     counts = {s: sum(1 for r in ordered if r["status"] == s) for s in STATUSES}
     return BatchSummary(out, counts, reused, ordered, stray)
 

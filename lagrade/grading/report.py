@@ -87,7 +87,7 @@ def gradebook_csv(manifest: Mapping[str, Any], results: Sequence[Mapping[str, An
     buffer = io.StringIO()
     writer = csv.writer(buffer, lineterminator="\n")
     problems = manifest["problems"]
-    extra = _roster_columns(manifest)
+    extra = roster_columns(manifest)
     writer.writerow(
         ["id", "name", *(csv_cell(c) for c in extra), "status", "score", "max_score", "percent"]
         + [f"problem{p['index']}" for p in problems]
@@ -104,17 +104,17 @@ def gradebook_csv(manifest: Mapping[str, Any], results: Sequence[Mapping[str, An
                 csv_cell(r["student"]["name"]),
                 *(csv_cell(kept.get(c, "")) for c in extra),
                 r["status"],
-                _num(r["score"]),
-                _num(r["max_score"]),
+                format_number(r["score"]),
+                format_number(r["max_score"]),
                 f"{percent:.1f}",
             ]
-            + [_num(per_problem.get(p["index"], 0.0)) for p in problems]
+            + [format_number(per_problem.get(p["index"], 0.0)) for p in problems]
             + [csv_cell(r["reason"])]
         )
     return buffer.getvalue()
 
 
-def _roster_columns(manifest: Mapping[str, Any]) -> list[str]:
+def roster_columns(manifest: Mapping[str, Any]) -> list[str]:
     """The roster's extra columns, in the order they first appear."""
     columns: dict[str, None] = {}
     for student in manifest["students"]:
@@ -140,7 +140,8 @@ def csv_cell(text: Any) -> str:
     return _LINE_BREAKS.sub(" ", text)
 
 
-def _num(x: float) -> str:
+def format_number(x: float) -> str:
+    """A score as gradebooks print it: 3, 2.5, 0.333333."""
     return f"{x:g}"
 
 
