@@ -29,6 +29,7 @@ EPILOG = """examples:
   lagrade check --scene wedge --part cyclic --answer x_M
   lagrade generate examples/assignment.toml --roster examples/roster.csv --seed 2025 --out ps3
   lagrade grade ps3/manifest.json submissions/ --jobs 2
+  lagrade export prairielearn ps3/manifest.json --out pl-questions
   lagrade demo
 
 exit status: 0 success; 1 done, but an answer was not correct or students are missing or
@@ -47,9 +48,9 @@ def build_parser() -> argparse.ArgumentParser:
     commands = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
     # Each command module registers itself; imported here so that `import lagrade.cli.main`
     # stays cheap (the modules load what their command needs).
-    from lagrade.cli import bank, check, demo, generate, grade, parse
+    from lagrade.cli import bank, check, demo, export, generate, grade, parse
 
-    for command in (bank, parse, generate, check, grade, demo):
+    for command in (bank, parse, generate, check, grade, export, demo):
         command.add_parser(commands)
     return parser
 

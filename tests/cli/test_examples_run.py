@@ -87,8 +87,8 @@ def workdir(tmp_path_factory) -> Path:
 
 
 def _ordered() -> list[str]:
-    """`generate` before `grade` (grading needs its manifest)."""
-    return sorted(EXAMPLES, key=lambda e: (" grade " in f"{e} ", e))
+    """`generate` before `grade` and `export` (they need its manifest)."""
+    return sorted(EXAMPLES, key=lambda e: (" grade " in f"{e} " or " export " in f"{e} ", e))
 
 
 @pytest.mark.parametrize("example", _ordered())
@@ -102,9 +102,9 @@ def test_example_is_accepted(example, workdir, monkeypatch, capfd):
             argv = [a if a not in formats else "md,html" for a in argv]
         out = workdir / argv[argv.index("--out") + 1]
         shutil.rmtree(out, ignore_errors=True)
-    if argv[0] == "grade" and not (workdir / "ps3" / "manifest.json").exists():
-        assert main(shlex.split(_generate_example())[1:] + ["--formats", "md"]) == 0
     monkeypatch.chdir(workdir)
+    if argv[0] in ("grade", "export") and not (workdir / "ps3" / "manifest.json").exists():
+        assert main(shlex.split(_generate_example())[1:] + ["--formats", "md"]) == 0
     try:
         status = main(argv)
     except SystemExit as stop:  # argparse refusing the command line

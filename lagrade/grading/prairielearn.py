@@ -1,0 +1,230 @@
+"""PrairieLearn questions from an assignment: `lagrade export prairielearn`.
+
+One question folder per problem, in PrairieLearn's v3 format: `info.json` (uuid, title, topic,
+tags, type "v3"), `question.html` (the statement and figure rendered per variant, one
+`pl-string-input` per part) and `server.py`. The `server.py` holds the assignment text and the
+problem's pool of variant seeds, and calls back into lagrade, which must be installed in the
+course's Python environment:
+- `generate` draws the variant from the pool by PrairieLearn's `variant_seed`, so every variant
+  is one the bank reproduces and the assignment allows, and renders its statement;
+- `parse` reads every answer with the grader and turns an unreadable one into a format error
+  with the parser's message (PrairieLearn then charges no attempt), and shows how each readable
+  answer was read;
+- `grade` judges each part with the same checker `lagrade grade` uses (rubric, follow-through
+  from the student's own L) and writes a score and feedback per part.
+"""
+
+from __future__ import annotations
+
+import json
+import re
+import tomllib
+import uuid
+from collections.abc import Mapping, MutableMapping
+from pathlib import Path
+from typing import Any
+
+import lagrade.grading.atomic as atomic
+from lagrade.assign.assignment import Assignment, Problem, load_assignment, parse_assignment
+from lagrade.assign.templating import environment
+from lagrade.assign.variants import VariantChoice, build_pool
+from lagrade.assign.views import MULTILINE, problem_view
+from lagrade.errors import AssignmentError
+from lagrade.grading.batch import grade_part
+from lagrade.grading.rubric import Rubric, rubric_from_table
+
+#: Variants in a problem's pool when the assignment does not say (`variants = N`).
+DEFAULT_POOL = 50
+#: Seconds per part when PrairieLearn grades (its own worker limits the whole call too).
+PART_TIME_LIMIT = 5.0
+_NAMESPACE = uuid.UUID("6f1c2a4e-3d0b-5b7e-9a61-1a2b3c4d5e6f")
+
+
+def export_prairielearn(assignment_file: Path, seed: int, out: Path) -> list[Path]:
+    """Write one question folder per problem of the assignment into `out`; returns them."""
+    assignment_file = Path(assignment_file)
+    assignment = load_assignment(assignment_file)
+    text = assignment_file.read_text(encoding="utf-8")
+    folders = []
+    for problem in assignment.problems:
+        pool = build_pool(problem, seed, problem.variants or DEFAULT_POOL)
+        if not pool:
+            raise AssignmentError(f"problem {problem.index}: the bank offers no variant")
+        folder = Path(out) / _folder_name(assignment, problem)
+        atomic.write_json(folder / "info.json", _info(assignment, problem))
+        atomic.write_text(folder / "question.html", _question_html(problem))
+        atomic.write_text(folder / "server.py", _server_py(text, problem, pool))
+        folders.append(folder)
+    return folders
+
+
+def _folder_name(assignment: Assignment, problem: Problem) -> str:
+    slug = re.sub(r"[^a-z0-9]+", "-", assignment.title.lower()).strip("-")[:40] or "lagrade"
+    return f"{slug}-p{problem.index}-{problem.scene.id}"
+
+
+def _info(assignment: Assignment, problem: Problem) -> dict[str, Any]:
+    """info.json: the uuid is derived from the assignment's title and the problem, so that a
+    re-export updates the same PrairieLearn question instead of making a new one."""
+    name = f"{assignment.title}\x1f{problem.index}\x1f{problem.scene.id}"
+    return {
+        "uuid": str(uuid.uuid5(_NAMESPACE, name)),
+        "type": "v3",
+        "title": f"{problem.title or problem.scene.title}",
+        "topic": "Lagrangian mechanics",
+        "tags": ["lagrade", problem.scene.id],
+    }
+
+
+def _question_html(problem: Problem) -> str:
+    """PrairieLearn's mustache, not jinja: the statement comes rendered from `generate`."""
+    fields = []
+    for part in problem.parts:
+        several = part.part in MULTILINE
+        fields.append(
+            f"<p>{{{{params.prompts.{part.key}}}}}</p>\n"
+            f'<pl-string-input answers-name="{part.key}" label="{part.key}:" '
+            f'size="70" display="block" allow-blank="true" show-help-text="false" '
+            f'placeholder="{"several equations: separate them with ;" if several else ""}">'
+            "</pl-string-input>"
+        )
+    body = "\n".join(fields)
+    return (
+        "<pl-question-panel>\n{{{params.statement_html}}}\n</pl-question-panel>\n\n"
+        f"{body}\n\n"
+        "<pl-submission-panel>\n{{#feedback.read}}<p>Read as: {{feedback.read}}</p>"
+        "{{/feedback.read}}\n</pl-submission-panel>\n\n"
+        "<pl-answer-panel>\n{{{params.key_html}}}\n</pl-answer-panel>\n"
+    )
+
+
+_SERVER = '''"""PrairieLearn server for {title}, written by `lagrade export prairielearn`.
+Needs lagrade (https://pypi.org/project/lagrade/) in the course's Python environment."""
+
+from lagrade.grading import prairielearn as lagrade_pl
+
+ASSIGNMENT = {assignment!r}
+PROBLEM = {index!r}
+SEEDS = {seeds!r}
+
+
+def generate(data):
+    lagrade_pl.generate(data, ASSIGNMENT, PROBLEM, SEEDS)
+
+
+def parse(data):
+    lagrade_pl.parse(data, ASSIGNMENT, PROBLEM)
+
+
+def grade(data):
+    lagrade_pl.grade(data, ASSIGNMENT, PROBLEM)
+'''
+
+
+def _server_py(assignment_text: str, problem: Problem, pool: tuple[VariantChoice, ...]) -> str:
+    return _SERVER.format(
+        title=problem.title or problem.scene.title,
+        assignment=assignment_text,
+        index=problem.index,
+        seeds=[c.seed for c in pool],
+    )
+
+
+# --- the runtime: what server.py calls inside PrairieLearn --------------------------------------
+
+
+def generate(data: MutableMapping[str, Any], assignment: str, index: int, seeds: list) -> None:
+    """Draw the variant from the pool by PrairieLearn's seed; render its statement and key."""
+    problem, _rubric = _problem(assignment, index)
+    seed = seeds[int(data.get("variant_seed", 0)) % len(seeds)]
+    variant = problem.scene.variant(seed)
+    choice = VariantChoice(seed, dict(variant.names), dict(variant.options), dict(variant.values))
+    view = problem_view(problem, choice, f"p{index}")
+    env = environment()
+    params = data.setdefault("params", {})
+    params["seed"] = seed
+    params["statement_html"] = env.get_template("prairielearn_problem.html.j2").render(p=view)
+    params["prompts"] = {part["key"]: part["prompt"] for part in view["parts"]}
+    params["key_html"] = "<pre>" + _escape(view["solution"]["sheet"]) + "</pre>"
+    correct = data.setdefault("correct_answers", {})
+    for part in problem.parts:  # what pl-string-input shows as the answer; grading is ours
+        correct[part.key] = ""
+
+
+def parse(data: MutableMapping[str, Any], assignment: str, index: int) -> None:
+    """Refuse an unreadable answer with the parser's message (no attempt charged); say how each
+    readable answer was read."""
+    read = []
+    for key, result in _judge_all(data, assignment, index).items():
+        if result["verdict"] == "invalid":
+            data.setdefault("format_errors", {})[key] = " ".join(result["feedback"])
+        elif result["interpreted"]:
+            shown = result["interpreted"]
+            read.append(f"{key}: {'; '.join(shown) if isinstance(shown, list) else shown}")
+    if read:
+        data.setdefault("feedback", {})["read"] = " | ".join(read)
+
+
+def grade(data: MutableMapping[str, Any], assignment: str, index: int) -> None:
+    """A score and feedback per part, and the question's score weighted by points."""
+    results = _judge_all(data, assignment, index)
+    scores = data.setdefault("partial_scores", {})
+    total = sum(r["max_points"] for r in results.values()) or 1.0
+    for key, r in results.items():
+        scores[key] = {
+            "score": r["points"] / r["max_points"] if r["max_points"] else 0.0,
+            "weight": r["max_points"],
+            "feedback": " ".join(r["feedback"]) or r["verdict"],
+        }
+    data["score"] = sum(r["points"] for r in results.values()) / total
+
+
+def _judge_all(data: Mapping[str, Any], assignment: str, index: int) -> dict[str, dict]:
+    problem, rubric = _problem(assignment, index)
+    submitted = data.get("submitted_answers", {}) or {}
+    entry = {"scene": problem.scene.id, "seed": data["params"]["seed"]}
+    answers = {part.key: _answer(part.part, submitted.get(part.key)) for part in problem.parts}
+    lagrangian = next((answers[p.key] for p in problem.parts if p.part == "lagrangian"), None)
+    given = {"lagrangian": lagrangian} if isinstance(lagrangian, str) and lagrangian else {}
+    return {
+        part.key: grade_part(
+            entry,
+            {"key": part.key, "part": part.part, "points": part.points, "quantity": part.quantity},
+            answers[part.key],
+            given,
+            rubric,
+            PART_TIME_LIMIT,
+        )
+        for part in problem.parts
+    }
+
+
+def _answer(part: str, raw: Any) -> Any:
+    """The text of a pl-string-input; several equations are separated by `;`."""
+    text = "" if raw is None else str(raw)
+    if part in MULTILINE:
+        return [line.strip() for line in text.split(";") if line.strip()]
+    return text
+
+
+_problems: dict[tuple[str, int], tuple[Problem, Rubric]] = {}
+
+
+def _problem(assignment: str, index: int) -> tuple[Problem, Rubric]:
+    """The assignment's problem and rubric, parsed once per process."""
+    found = _problems.get((assignment, index))
+    if found is None:
+        table = tomllib.loads(assignment)
+        parsed = parse_assignment(table)
+        found = (parsed.problems[index - 1], rubric_from_table(table.get("rubric")))
+        _problems[(assignment, index)] = found
+    return found
+
+
+def _escape(text: str) -> str:
+    return text.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;")
+
+
+def info_json(folder: Path) -> dict[str, Any]:
+    """A question folder's info.json (for tests and for `lagrade export` to report)."""
+    return json.loads((Path(folder) / "info.json").read_text(encoding="utf-8"))

@@ -1,0 +1,134 @@
+"""`lagrade export prairielearn`: the question folders follow PrairieLearn's v3 format, and
+server.py honours PrairieLearn's contract when it is loaded and called the way PrairieLearn
+does (a module per question; generate, parse and grade mutate one `data` dictionary).
+
+What this cannot test without a PrairieLearn server: the rendering of question.html's mustache
+and elements, and PrairieLearn's own element grading before ours (we override partial_scores).
+"""
+
+from __future__ import annotations
+
+import importlib.util
+import json
+import uuid
+from pathlib import Path
+
+import pytest
+
+from lagrade.cli.main import main
+
+ASSIGNMENT = """\
+title = "PL export test"
+points = 1
+
+[[problems]]
+scene = "simple_pendulum"
+parts = ["dof", "lagrangian", "eom"]
+points = { lagrangian = 2 }
+"""
+
+
+@pytest.fixture(scope="module")
+def questions(tmp_path_factory) -> list[Path]:
+    root = tmp_path_factory.mktemp("pl")
+    (root / "assignment.toml").write_text(ASSIGNMENT)
+    assert (
+        main(
+            [
+                "export",
+                "prairielearn",
+                str(root / "assignment.toml"),
+                "--seed",
+                "3",
+                "--out",
+                str(root / "questions"),
+            ]
+        )
+        == 0
+    )
+    return sorted((root / "questions").iterdir())
+
+
+def load_server(folder: Path):
+    spec = importlib.util.spec_from_file_location(f"server_{folder.name}", folder / "server.py")
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def new_data(seed: int) -> dict:
+    return {"params": {}, "correct_answers": {}, "variant_seed": seed, "options": {}}
+
+
+def test_one_v3_question_per_problem_with_a_stable_uuid(questions, tmp_path):
+    (folder,) = questions
+    info = json.loads((folder / "info.json").read_text())
+    assert info["type"] == "v3" and info["topic"] and "simple_pendulum" in info["tags"]
+    uuid.UUID(info["uuid"])
+    html = (folder / "question.html").read_text()
+    for key in ("dof", "lagrangian", "eom"):
+        assert f'answers-name="{key}"' in html
+    (tmp_path / "a.toml").write_text(ASSIGNMENT)
+    main(
+        [
+            "export",
+            "prairielearn",
+            str(tmp_path / "a.toml"),
+            "--seed",
+            "3",
+            "--out",
+            str(tmp_path / "again"),
+        ]
+    )
+    again = json.loads(next((tmp_path / "again").iterdir()).joinpath("info.json").read_text())
+    assert again["uuid"] == info["uuid"]  # a re-export updates the same question
+
+
+def test_generate_draws_a_variant_and_renders_its_statement(questions):
+    server = load_server(questions[0])
+    data = new_data(12345)
+    server.generate(data)
+    assert data["params"]["seed"] in server.SEEDS
+    assert (
+        "<math" in data["params"]["statement_html"] and "<svg" in data["params"]["statement_html"]
+    )
+    other = new_data(12346)
+    server.generate(other)
+    assert set(data["params"]["prompts"]) == {"dof", "lagrangian", "eom"}
+
+
+def test_unreadable_answers_are_format_errors_and_right_answers_score_full(questions):
+    server = load_server(questions[0])
+    data = new_data(7)
+    server.generate(data)
+    from lagrade.bank.registry import get_scene
+    from lagrade.judge.key import key_answer
+
+    variant = get_scene("simple_pendulum").variant(data["params"]["seed"])
+    right = {
+        "dof": "1",
+        "lagrangian": key_answer(variant, "lagrangian"),
+        "eom": "; ".join(key_answer(variant, "eom")),
+    }
+    data["submitted_answers"] = {**right, "lagrangian": "1/2 m (l theta_dot^2"}
+    data["format_errors"] = {}
+    server.parse(data)
+    assert "lagrangian" in data["format_errors"] and "dof" not in data["format_errors"]
+
+    data = {**data, "submitted_answers": right, "format_errors": {}, "partial_scores": {}}
+    server.parse(data)
+    assert data["format_errors"] == {}
+    server.grade(data)
+    assert data["score"] == pytest.approx(1.0)
+    assert all(p["score"] == 1.0 for p in data["partial_scores"].values())
+
+    wrong = {**right, "lagrangian": right["lagrangian"] + " + m*g*l"}
+    data = {**data, "submitted_answers": wrong, "partial_scores": {}}
+    server.grade(data)
+    assert data["partial_scores"]["lagrangian"]["score"] == 1.0  # a constant changes nothing
+    wrong = {**right, "dof": "2"}
+    data = {**data, "submitted_answers": wrong, "partial_scores": {}}
+    server.grade(data)
+    assert data["partial_scores"]["dof"]["score"] == 0.0
+    assert data["score"] == pytest.approx(3 / 4)  # dof 1 point of 1 + 2 + 1
+    assert data["partial_scores"]["dof"]["feedback"]
