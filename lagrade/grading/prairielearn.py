@@ -82,7 +82,7 @@ def _question_html(problem: Problem) -> str:
     for part in problem.parts:
         several = part.part in MULTILINE
         fields.append(
-            f"<p>{{{{params.prompts.{part.key}}}}}</p>\n"
+            f"<p>{{{{{{params.prompts.{part.key}}}}}}}</p>\n"
             f'<pl-string-input answers-name="{part.key}" label="{part.key}:" '
             f'size="70" display="block" allow-blank="true" show-help-text="false" '
             f'placeholder="{"several equations: separate them with ;" if several else ""}">'
@@ -144,7 +144,7 @@ def generate(data: MutableMapping[str, Any], assignment: str, index: int, seeds:
     params = data.setdefault("params", {})
     params["seed"] = seed
     params["statement_html"] = env.get_template("prairielearn_problem.html.j2").render(p=view)
-    params["prompts"] = {part["key"]: part["prompt"] for part in view["parts"]}
+    params["prompts"] = {part["key"]: _prompt_html(part) for part in view["parts"]}
     params["key_html"] = "<pre>" + _escape(view["solution"]["sheet"]) + "</pre>"
     correct = data.setdefault("correct_answers", {})
     for part in problem.parts:  # what pl-string-input shows as the answer; grading is ours
@@ -219,6 +219,15 @@ def _problem(assignment: str, index: int) -> tuple[Problem, Rubric]:
         found = (parsed.problems[index - 1], rubric_from_table(table.get("rubric")))
         _problems[(assignment, index)] = found
     return found
+
+
+def _prompt_html(part: Mapping[str, Any]) -> str:
+    """A part's prompt and the names its answer may use, as HTML (escaped here)."""
+    lines = [_escape(part["prompt"])]
+    for group in part["symbols"]:
+        names = ", ".join(f"<code>{_escape(n)}</code>" for n in group["names"])
+        lines.append(f'<span class="small">{_escape(group["what"]).capitalize()}: {names}.</span>')
+    return "<br>".join(lines)
 
 
 def _escape(text: str) -> str:
