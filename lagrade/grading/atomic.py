@@ -30,29 +30,6 @@ LOCK_NAME = ".lagrade.lock"
 _TEMPORARY = re.compile(r"^\..+\.(\d+)\.[^.]+\.tmp$")
 
 
-def write_bytes(path: Path, data: bytes) -> None:
-    """Write `data` to `path` atomically (same-folder temp file, then os.replace). A full disk,
-    a read-only folder or a missing permission raises OutputError naming the file."""
-    path = Path(path)
-    try:
-        path.parent.mkdir(parents=True, exist_ok=True)
-        fd, tmp = tempfile.mkstemp(
-            prefix=f".{path.name}.{os.getpid()}.", suffix=".tmp", dir=path.parent
-        )
-    except OSError as error:
-        raise OutputError(_cannot_write(path, error)) from None
-    try:
-        with os.fdopen(fd, "wb") as f:
-            f.write(data)
-        os.replace(tmp, path)
-    except BaseException as error:
-        with contextlib.suppress(FileNotFoundError):
-            os.unlink(tmp)
-        if isinstance(error, OSError):
-            raise OutputError(_cannot_write(path, error)) from None
-        raise
-
-
 @contextlib.contextmanager
 def writing(path: Path) -> Iterator[Any]:
     """A binary file to stream into that appears at `path` only when the block ends normally
@@ -75,6 +52,13 @@ def writing(path: Path) -> Iterator[Any]:
         if isinstance(error, OSError):
             raise OutputError(_cannot_write(path, error)) from None
         raise
+
+
+def write_bytes(path: Path, data: bytes) -> None:
+    """Write `data` to `path` atomically (same-folder temp file, then os.replace). A full disk,
+    a read-only folder or a missing permission raises OutputError naming the file."""
+    with writing(path) as f:
+        f.write(data)
 
 
 def write_text(path: Path, text: str) -> None:
