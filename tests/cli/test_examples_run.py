@@ -28,6 +28,7 @@ PLACEHOLDERS = {
     "SUBMISSIONS": "submissions/",
     "REQUESTS.jsonl": "requests.jsonl",
     "RESULTS.jsonl": "results.jsonl",
+    "QUESTIONS": "pl-questions",
 }
 #: Runs a whole synthetic class (minutes); `lagrade demo` has its own end-to-end test.
 SLOW = {"demo"}
