@@ -24,7 +24,7 @@ import lagrade.grading.gradebooks as gradebooks
 import lagrade.grading.report as report
 import lagrade.grading.submission as submission
 from lagrade.assign.manifest import project_version
-from lagrade.assign.views import MULTILINE
+from lagrade.assign.views import MULTILINE, PROMPTS
 from lagrade.errors import AssignmentError, LagradeError
 from lagrade.grading.manifest import load_manifest, student_variant
 from lagrade.grading.rubric import Rubric, load_rubric
@@ -38,6 +38,10 @@ from lagrade.judge.worker import GRACE, Limits, Outcome, PartTimeout, Pool, dead
 
 #: Parts that can follow from the student's own Lagrangian.
 FOLLOW_L = frozenset({"eom", "momenta", "cyclic", "conserved"})
+#: The handout's prompt for `conserved` asks for "the conserved quantities" (all of them), so a
+#: graded sheet is judged for completeness too (`"all": true`); a `check` request is not unless
+#: it says so.
+ASKS_ALL_CONSERVED = "the conserved quantities" in PROMPTS["conserved"]
 STATUSES = ("graded", "missing", "invalid", "timeout", "error")
 
 
@@ -210,6 +214,8 @@ def _judge(entry, part, answer, given, rubric: Rubric) -> Verdict:
         value = [n.strip() for n in value]
         if [n.lower() for n in value] == ["none"]:
             value = []
+    if name == "conserved" and ASKS_ALL_CONSERVED:
+        given = {**given, "all": True}  # the handout asks for "the conserved quantities"
     return run_checker(problem, name, value, given if name in FOLLOW_L else None)
 
 

@@ -119,6 +119,8 @@ def _validate(request: Any) -> tuple[Any, str, Any, Mapping | None]:
     given = request.get("given")
     if given is not None and not isinstance(given, Mapping):
         raise RequestError('"given" must be an object such as {"lagrangian": "..."}')
+    if given is not None and "all" in given and not isinstance(given["all"], bool):
+        raise RequestError('"given": "all" must be true or false')
     return request["problem"], part, request["answer"], given
 
 

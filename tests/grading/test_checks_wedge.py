@@ -181,7 +181,8 @@ def test_conserved_momentum_and_energy():
     p_x = "p_x = (M + m) x_M_dot + m q_dot cos(alpha)"
     h = "h = " + T_TEXT + " - m g q sin(alpha)"
     assert judge(WEDGE, "conserved", [p_x, h]).status == "correct"
-    v = judge(WEDGE, "conserved", [p_x])
+    assert judge(WEDGE, "conserved", [p_x]).status == "correct"  # one true quantity alone
+    v = judge(WEDGE, "conserved", [p_x], given={"all": True})  # completeness asked for
     assert v.status == "incorrect" and v.score == 0.5 and "missing_conserved" in v.mistakes
     # any true conserved quantity: a combination of the two
     assert (

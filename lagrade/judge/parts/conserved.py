@@ -1,5 +1,8 @@
 """The `conserved` part: each quantity non-constant with D_t Q = 0 on the reference motion, the
-set independent; any true conserved quantity earns credit, not only the key's."""
+set independent; any true conserved quantity earns credit, not only the key's. Each quantity is
+judged on its own; completeness (all the system's independent conserved quantities) is asked for
+only by `given["all"] = True`, and then a missing one lowers the score, never the truth of what
+was given."""
 
 from __future__ import annotations
 
@@ -92,7 +95,9 @@ def check_conserved(problem: Problem, answer: Any, given: Mapping | None) -> Ver
     )
     own = own_lagrangian(problem, given)
     feedback, mistakes, outcomes = [], [], []
-    right_grads = []
+    right_grads: list[np.ndarray] = []
+    right_labels: list[str] = []
+    complete = bool(given and given.get("all") is True)
     witness = None
     follows_all, any_wrong = True, False
     for k, r in enumerate(reads):
@@ -115,6 +120,7 @@ def check_conserved(problem: Problem, answer: Any, given: Mapping | None) -> Ver
             mistakes.append("constant")
         elif out.equal:
             right_grads.append(grad)
+            right_labels.append(label)
         elif own is not None and _conserved_by_own(problem, own, Q, points):
             feedback.append(
                 f"{label} is conserved by the motion of your own Lagrangian, which is not "
@@ -133,21 +139,18 @@ def check_conserved(problem: Problem, answer: Any, given: Mapping | None) -> Ver
                     f"{label} is not conserved: its time derivative along the motion "
                     f"is not zero{where_text(witness_point(points, out, Q), problem)}."
                 )
-    rank = _gradient_rank(right_grads)
-    n_right = len(right_grads)
+    rank = _independent(problem, right_grads, right_labels, feedback, mistakes)
     listed = len(reads)
-    if key_rank == 0:
-        score = 1.0 if n_right == listed else (n_right / listed if listed else 1.0)
+    if listed == 0:  # "none": right only when the system has no conserved quantity
+        score = 1.0 if key_rank == 0 else 0.0
+        if key_rank:
+            feedback.append(_count_sentence(problem, key, key_rank, 0))
+            mistakes.append("missing_conserved")
     else:
-        fraction = n_right / listed if listed else 0.0
-        score = fraction * min(1.0, rank / key_rank)
-        if rank < key_rank:
-            names = ", ".join(_named(problem, name) for name in key)
-            noun = "quantity" if key_rank == 1 else "quantities"
-            feedback.append(
-                f"This system has {key_rank} independent conserved {noun} "
-                f"(for example {names}); you gave {rank}."
-            )
+        score = rank / listed  # each true, independent quantity counts once
+        if complete and rank < key_rank:
+            score *= rank / key_rank
+            feedback.append(_count_sentence(problem, key, key_rank, rank))
             mistakes.append("missing_conserved")
     status = "correct" if score >= 1.0 - 1e-12 and not feedback else "incorrect"
     if status == "correct":
@@ -190,6 +193,38 @@ def _conserved_by_own(problem: Problem, own: sp.Expr, Q: Compiled, points: Point
         return decide(residual).equal
     except (UnsupportedExpression, ValueError, ZeroDivisionError, np.linalg.LinAlgError):
         return False
+
+
+def _independent(
+    problem: Problem,
+    grads: Sequence[np.ndarray],
+    labels: Sequence[str],
+    feedback: list[str],
+    mistakes: list[str],
+) -> int:
+    """The number of independent quantities among the true ones, in the order given; each one
+    that is a function of those before it (a duplicate, 2Q, Q + const, a combination) is named
+    and not counted."""
+    kept: list[np.ndarray] = []
+    for grad, label in zip(grads, labels, strict=True):
+        if _gradient_rank([*kept, grad]) > len(kept):
+            kept.append(grad)
+            continue
+        feedback.append(
+            f"{label} is conserved, but it is a function of the quantities before it; "
+            "it is not an independent conserved quantity."
+        )
+        mistakes.append("dependent")
+    return len(kept)
+
+
+def _count_sentence(problem: Problem, key: Mapping, key_rank: int, rank: int) -> str:
+    names = ", ".join(_named(problem, name) for name in key)
+    noun = "quantity" if key_rank == 1 else "quantities"
+    return (
+        f"This system has {key_rank} independent conserved {noun} "
+        f"(for example {names}); you gave {rank}."
+    )
 
 
 def _gradient_rank(grads: Sequence[np.ndarray]) -> int:

@@ -1,0 +1,89 @@
+"""The conserved rule (issue 12): each quantity given is judged on its own — right when it is not
+constant and D_t Q = 0 on the reference motion — and completeness counts only when the request
+asks for it (`given = {"all": True}`), in the score and the feedback, not in what was given."""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+
+from lagrade.judge.check import check_pool, run_batch
+
+from .conftest import WEDGE, judge
+
+KEPLER = {"scene": "kepler"}
+P_X = "p_x = (M + m) x_M_dot + m q_dot cos(alpha)"
+L_Z = "m r^2 theta_dot"
+ALL = {"all": True}
+
+
+@pytest.mark.parametrize(
+    "problem, answer",
+    [
+        (WEDGE, [P_X]),
+        (WEDGE, ["(M + m) x_M_dot + m q_dot cos(alpha)"]),
+        (KEPLER, [L_Z]),
+        (KEPLER, ["l = m r^2 theta_dot"]),
+        (KEPLER, ["1/2 m (r_dot^2 + r^2 theta_dot^2) - G M m / r"]),
+    ],
+)
+def test_one_true_quantity_alone_is_correct(problem, answer):
+    v = judge(problem, "conserved", answer)
+    assert v.status == "correct" and v.score == 1.0 and v.feedback == ()
+
+
+@pytest.mark.parametrize("problem, answer", [(WEDGE, [P_X]), (KEPLER, [L_Z])])
+def test_with_all_a_missing_quantity_lowers_the_score_and_names_the_count(problem, answer):
+    v = judge(problem, "conserved", answer, given=ALL)
+    assert v.status == "incorrect" and v.score == pytest.approx(0.5)
+    assert "missing_conserved" in v.mistakes
+    assert any("2 independent conserved quantities" in f and "you gave 1" in f for f in v.feedback)
+    # the one given is still right: nothing says it is not conserved
+    assert not any("not conserved" in f for f in v.feedback)
+
+
+def test_with_all_the_whole_set_is_correct():
+    energy = "1/2 m (r_dot^2 + r^2 theta_dot^2) - G M m / r"
+    assert judge(KEPLER, "conserved", [L_Z, energy], given=ALL).status == "correct"
+    assert judge(KEPLER, "conserved", [L_Z, energy]).status == "correct"
+
+
+@pytest.mark.parametrize("given", [None, ALL])
+def test_dependent_quantities_are_not_both_counted(given):
+    v = judge(KEPLER, "conserved", [L_Z, "2 m r^2 theta_dot"], given=given)
+    assert v.status == "incorrect" and v.score < 1
+    assert "dependent" in v.mistakes
+    assert any("2 m r^2 theta_dot" in f.replace("*", " ") or "function of" in f for f in v.feedback)
+    # a function of the other one (Q^2 + 3) is no more independent than 2Q
+    w = judge(WEDGE, "conserved", [P_X, "((M + m) x_M_dot + m q_dot cos(alpha))^2 + 3"])
+    assert w.status == "incorrect" and "dependent" in w.mistakes
+    assert w.score == pytest.approx(0.5)
+
+
+def test_a_non_conserved_quantity_is_incorrect():
+    v = judge(KEPLER, "conserved", ["m r_dot"])
+    assert v.status == "incorrect" and v.score == 0
+    mixed = judge(KEPLER, "conserved", [L_Z, "m r_dot"])
+    assert mixed.status == "incorrect" and mixed.score == pytest.approx(0.5)
+    assert any("not conserved" in f for f in mixed.feedback)
+
+
+def test_all_in_a_batch_request_and_a_bad_all_is_invalid():
+    base = {"problem": WEDGE, "part": "conserved", "answer": [P_X]}
+    lines = [
+        json.dumps({**base, "id": 1}),
+        json.dumps({**base, "id": 2, "given": {"all": True}}),
+        json.dumps({**base, "id": 3, "given": {"all": "yes"}}),
+    ]
+    with check_pool() as pool:
+        one, every, bad = run_batch(lines, pool=pool)
+    assert one["verdict"] == "correct" and one["score"] == 1.0
+    assert every["verdict"] == "incorrect" and every["score"] == pytest.approx(0.5)
+    assert bad["verdict"] == "invalid" and '"all"' in bad["feedback"][0]
+
+
+def test_the_handout_asks_for_all_the_conserved_quantities():
+    from lagrade.grading.batch import ASKS_ALL_CONSERVED
+
+    assert ASKS_ALL_CONSERVED
