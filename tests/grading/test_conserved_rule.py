@@ -55,10 +55,16 @@ def test_dependent_quantities_are_not_both_counted(given):
     assert v.status == "incorrect" and v.score < 1
     assert "dependent" in v.mistakes
     assert any("2 m r^2 theta_dot" in f.replace("*", " ") or "function of" in f for f in v.feedback)
-    # a function of the other one (Q^2 + 3) is no more independent than 2Q
-    w = judge(WEDGE, "conserved", [P_X, "((M + m) x_M_dot + m q_dot cos(alpha))^2 + 3"])
+    # Q + const is no more independent than 2Q
+    w = judge(WEDGE, "conserved", [P_X, "(M + m) x_M_dot + m q_dot cos(alpha) + 3 m g h"])
     assert w.status == "incorrect" and "dependent" in w.mistakes
     assert w.score == pytest.approx(0.5)
+
+
+def test_a_named_nonlinear_function_of_another_is_not_a_duplicate():
+    # the free wheel: p = I theta_dot and E = p^2/(2I), both named in the bank's key
+    v = judge({"scene": "wheel"}, "conserved", ["I theta_dot", "1/2 I theta_dot^2"], given=ALL)
+    assert v.status == "correct"
 
 
 def test_a_non_conserved_quantity_is_incorrect():

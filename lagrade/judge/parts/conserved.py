@@ -139,7 +139,7 @@ def check_conserved(problem: Problem, answer: Any, given: Mapping | None) -> Ver
                     f"{label} is not conserved: its time derivative along the motion "
                     f"is not zero{where_text(witness_point(points, out, Q), problem)}."
                 )
-    rank = _independent(problem, right_grads, right_labels, feedback, mistakes)
+    counted, rank = _independent(problem, right_grads, right_labels, feedback, mistakes)
     listed = len(reads)
     if listed == 0:  # "none": right only when the system has no conserved quantity
         score = 1.0 if key_rank == 0 else 0.0
@@ -147,7 +147,7 @@ def check_conserved(problem: Problem, answer: Any, given: Mapping | None) -> Ver
             feedback.append(_count_sentence(problem, key, key_rank, 0))
             mistakes.append("missing_conserved")
     else:
-        score = rank / listed  # each true, independent quantity counts once
+        score = counted / listed  # each true quantity counts once, a duplicate not
         if complete and rank < key_rank:
             score *= rank / key_rank
             feedback.append(_count_sentence(problem, key, key_rank, rank))
@@ -201,21 +201,34 @@ def _independent(
     labels: Sequence[str],
     feedback: list[str],
     mistakes: list[str],
-) -> int:
-    """The number of independent quantities among the true ones, in the order given; each one
-    that is a function of those before it (a duplicate, 2Q, Q + const, a combination) is named
-    and not counted."""
+) -> tuple[int, int]:
+    """(How many true quantities count, how many independent ones they make: the rank of their
+    gradients at a typical point). One trivially dependent on those before it — a duplicate,
+    2Q, Q + const, a fixed combination a Q1 + b Q2 (its gradient the same combination of theirs at
+    every point) — is named and not counted. A nonlinear function of another (E = p²/2I of a
+    free wheel) is a named physical quantity of its own: the bank's keys list such pairs."""
     kept: list[np.ndarray] = []
     for grad, label in zip(grads, labels, strict=True):
-        if _gradient_rank([*kept, grad]) > len(kept):
+        if _stacked_rank([*kept, grad]) > len(kept):
             kept.append(grad)
             continue
         feedback.append(
-            f"{label} is conserved, but it is a function of the quantities before it; "
-            "it is not an independent conserved quantity."
+            f"{label} is conserved, but it is a fixed combination of the quantities before it "
+            "(a multiple, or with a constant added); it is not a new conserved quantity."
         )
         mistakes.append("dependent")
-    return len(kept)
+    return len(kept), _gradient_rank(kept)
+
+
+def _stacked_rank(grads: Sequence[np.ndarray]) -> int:
+    """Rank of the gradients taken over all the points at once: dependence with the same
+    constant coefficients everywhere."""
+    cols = [np.nan_to_num(np.asarray(g, float)).reshape(-1) for g in grads]
+    coef = np.stack(cols, axis=1)
+    scale = np.abs(coef).max(axis=0)
+    coef = coef / np.where(scale > 0, scale, 1.0)
+    sv = np.linalg.svd(coef, compute_uv=False)
+    return int(np.sum(sv > 1e-8 * max(sv[0], 1e-300)))
 
 
 def _count_sentence(problem: Problem, key: Mapping, key_rank: int, rank: int) -> str:
