@@ -141,6 +141,12 @@ def add_check_arguments(parser: argparse.ArgumentParser) -> None:
         help="the student's own L, for follow-through on later parts",
     )
     parser.add_argument(
+        "--all",
+        action="store_true",
+        help="with --part conserved: the answer should give every independent conserved "
+        "quantity (fewer lowers the score; each given one is still judged on its own)",
+    )
+    parser.add_argument(
         "--time-limit",
         type=float,
         default=DEFAULT_TIME_LIMIT,
@@ -226,9 +232,11 @@ def run_check_command(args: argparse.Namespace) -> tuple[int, str]:
     answer: Any = args.answer[0] if len(args.answer) == 1 else list(args.answer)
     if args.part in ("eom", "momenta", "conserved", "transformation") and isinstance(answer, str):
         answer = [answer]
-    given = {"lagrangian": args.given_lagrangian} if args.given_lagrangian else None
+    given: dict[str, Any] = {"lagrangian": args.given_lagrangian} if args.given_lagrangian else {}
+    if args.all:
+        given["all"] = True
     build_problem(spec)  # a malformed problem is a usage error here, not a verdict
-    verdict = check(spec, args.part, answer, time_limit=args.time_limit, given=given)
+    verdict = check(spec, args.part, answer, time_limit=args.time_limit, given=given or None)
     text = (
         json.dumps(verdict.to_dict(), ensure_ascii=False, indent=2)
         if args.json

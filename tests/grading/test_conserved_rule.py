@@ -93,3 +93,13 @@ def test_the_handout_asks_for_all_the_conserved_quantities():
     from lagrade.grading.batch import ASKS_ALL_CONSERVED
 
     assert ASKS_ALL_CONSERVED
+
+
+def test_the_command_line_asks_for_completeness_with_all(capsys):
+    from lagrade.cli.main import main
+
+    answer = "M*x_M_dot + m*x_M_dot + m*q_dot*cos(alpha)"
+    base = ["check", "--scene", "wedge", "--part", "conserved", "--answer", answer]
+    assert main(base) == 0
+    assert main([*base, "--all"]) == 1
+    assert "you gave 1" in capsys.readouterr().out
