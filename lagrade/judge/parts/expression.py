@@ -16,6 +16,7 @@ from typing import Any
 
 import sympy as sp
 
+from lagrade.errors import ParseError, RequestError
 from lagrade.judge.adaptive import ExactThenAdaptive
 from lagrade.judge.compiled import Compiled
 from lagrade.judge.decision import Outcome
@@ -80,6 +81,45 @@ def _judge_number(problem: Problem, got: sp.Expr, values: Mapping, tolerance: fl
 
 
 def check_expression(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
+    both = _closed_form_and_value(problem, answer, given)
+    if both is not None:
+        return both
+    return _check_one(problem, answer, given)
+
+
+def _closed_form_and_value(problem: Problem, answer: Any, given: Mapping | None) -> Verdict | None:
+    """`acos(g/(R omega^2)) = 1.238`, as a prompt asking for "a closed form (or its value)"
+    invites: both sides are judged, each by its own rule, and the answer is right when both are.
+    None when the answer is not of that shape (`name = expression` is read as usual)."""
+    if not isinstance(answer, str) or answer.count("=") != 1:
+        return None
+    left, right = (side.strip() for side in answer.split("="))
+    try:
+        one = read_single(problem, strip_unit(left, problem.unit), "expression", "x")
+        two = read_single(problem, strip_unit(right, problem.unit), "expression", "x")
+    except (ParseError, RequestError):
+        return None
+    if not one.expr.free_symbols and two.expr.free_symbols:  # `1.238 = acos(…)`
+        left, right, one, two = right, left, two, one
+    if not one.expr.free_symbols or two.expr.free_symbols:
+        return None
+    closed, number = _check_one(problem, left, given), _check_one(problem, right, given)
+    feedback = [f"Your closed form: {f}" for f in closed.feedback]
+    feedback += [f"Your value: {f}" for f in number.feedback]
+    right_ones = [v.status == "correct" for v in (closed, number)]
+    return Verdict(
+        "expression",
+        "correct" if all(right_ones) else "incorrect",
+        (closed.score + number.score) / 2,
+        tuple(feedback),
+        f"{closed.interpreted} = {number.interpreted}",
+        closed.method,
+        witness=closed.witness,
+        mistakes=closed.mistakes + number.mistakes,
+    )
+
+
+def _check_one(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
     if isinstance(answer, str) and problem.unit:
         answer = strip_unit(answer, problem.unit)
     got = read_single(problem, answer, "expression", "x")
