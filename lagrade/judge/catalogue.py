@@ -87,6 +87,8 @@ class Question(Protocol):
 
     def cached(self, name: str, points: Points, make: Callable[[], _T]) -> _T: ...
 
+    def peek(self, name: str, points: Points) -> object | None: ...
+
 
 @dataclass(frozen=True)
 class Split:
@@ -282,6 +284,8 @@ class Catalogue:
             answer_el = euler_lagrange_values(answer, self.problem.jets, points.env)
         return self._first(
             self.lagrangian,
+            "el-stack",
+            points,
             lambda chunk: self._el_stack(chunk, points),
             lambda stack: first_lagrangian(stack, answer_el),
         )
@@ -292,6 +296,8 @@ class Catalogue:
             values = full(answer.values(points.env), points.n)
         return self._first(
             mutants,
+            "value-stack",
+            points,
             lambda chunk: self._value_stack(chunk, points),
             lambda stack: first_plain(stack, values),
         )
@@ -303,6 +309,8 @@ class Catalogue:
             values = full(answer.values(points.env), points.n)
         return self._first(
             mutants,
+            "value-stack",
+            points,
             lambda chunk: self._value_stack(chunk, points),
             lambda stack: first_offset(stack, values, points),
         )
@@ -314,6 +322,8 @@ class Catalogue:
             s = equation_rows([student], p.jets, points.env)
         found = self._first(
             self.rows,
+            "row-stack",
+            points,
             lambda chunk: self._row_stack(chunk, points),
             lambda stack: first_row(stack, s),
         )
@@ -331,25 +341,41 @@ class Catalogue:
                 continue
         return None
 
-    def _first(self, mutants: Mutants, stack_of: Callable, test: Callable):
+    def _first(
+        self, mutants: Mutants, name: str, points: Points, stack_of: Callable, test: Callable
+    ):
         """The first candidate `test` finds in the stacks of `mutants`, chunk by chunk. Building
-        a chunk and its stack is the question's work (set aside from the part's clock)."""
+        a chunk and its stack is the question's work (set aside from the part's clock); a chunk
+        whose stack at `points` (`name`) is built already is read without the clock switch."""
         budget = self.problem.budget
         if not isinstance(mutants, LazyList):
-            with set_aside(budget):
+            if self._ready(name, mutants, points):
                 stack = stack_of(mutants)
+            else:
+                with set_aside(budget):
+                    stack = stack_of(mutants)
             return None if stack is None else test(stack)
-        chunks = mutants.chunks()
+        k = 0
         while True:
-            with set_aside(budget):
-                chunk = next(chunks, None)
-                stack = None if chunk is None else stack_of(chunk)
+            chunk = mutants.built(k)
+            if chunk is not None and self._ready(name, chunk, points):
+                stack = stack_of(chunk)
+            else:
+                with set_aside(budget):
+                    chunk = mutants.chunk(k)
+                    stack = None if chunk is None else stack_of(chunk)
             if chunk is None:
                 return None
             if stack is not None:
                 found = test(stack)
                 if found is not None:
                     return found
+            k += 1
+
+    def _ready(self, name: str, candidates: Sequence, points: Points) -> bool:
+        """The stack `name` of `candidates` at `points` is built (reading it does no work)."""
+        stack = self.problem.peek(f"{name}:{id(candidates)}", points)
+        return stack is not None and stack.of(candidates)
 
     def warm(self, part: str, points: Points) -> None:
         """Build every mutant `part`'s matching uses and their stacks at `points`, so that a

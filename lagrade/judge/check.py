@@ -136,9 +136,13 @@ def timeout_verdict(part: str, seconds: float, what: str = "judging the answer")
     )
 
 
-def check_request(request: Mapping[str, Any], limit: float | None = None) -> Verdict:
+def check_request(
+    request: Mapping[str, Any], limit: float | None = None, diagnosis: bool = False
+) -> Verdict:
     """Judge one request in this process: the body of a worker, and of `check` without a time
     limit. A malformed request or problem raises RequestError (or another LagradeError).
+    `diagnosis`: build the part's whole mistake catalogue with its preparation (`prepare`),
+    for a question that has many answers to come.
 
     Two clocks: the question's preparation (`prepare`, and catalogue work a wrong answer sets
     aside) is charged to the question's budget and reported as `prepare_ms`; the student's
@@ -169,10 +173,23 @@ def check_request(request: Mapping[str, Any], limit: float | None = None) -> Ver
         except PartTimeout:
             return timeout_verdict(part, limit)
         ms = (time.perf_counter() - start - (budget.spent - before)) * 1e3
+        if diagnosis:
+            _diagnose(problem, part, budget, limit)
     except ReferenceUndefined as error:
         raise RequestError(f"the problem cannot be graded: {error}") from None
     prepare_ms = (budget.spent - spent) * 1e3
     return Verdict(**{**verdict.__dict__, "ms": ms, "prepare_ms": prepare_ms})
+
+
+def _diagnose(problem: Problem, part: str, budget: Budget, limit: float | None) -> None:
+    """Build the part's whole mistake catalogue now (after the answer in hand is judged, on the
+    question's budget), so that the answers to come find it ready. Optional work: a budget
+    that runs out here times out the later answers as lazy building would."""
+    try:
+        with set_aside(budget, timed=limit is not None):
+            prepare(problem, part, diagnosis=True)
+    except (PartTimeout, LagradeError):
+        pass
 
 
 def _preparation_timeout(part: str, budget: Budget, spent: float) -> Verdict:
@@ -180,16 +197,15 @@ def _preparation_timeout(part: str, budget: Budget, spent: float) -> Verdict:
     return Verdict(**{**verdict.__dict__, "prepare_ms": (budget.spent - spent) * 1e3})
 
 
-def _limited(request: Mapping[str, Any]) -> Verdict:
-    """A worker's item: (request, time limit)."""
-    body, limit = request
-    return check_request(body, limit)
+def _limited(item: tuple) -> Verdict:
+    """A worker's item: (request, time limit) or (request, time limit, diagnosis)."""
+    return check_request(*item)
 
 
 def _question_of(item: Any) -> str:
     """A request's question, for sending all answers to one question to one worker (which
     derives it once) and distinct questions to distinct workers."""
-    request, _limit = item
+    request = item[0]
     problem = request.get("problem") if isinstance(request, Mapping) else None
     try:
         return json.dumps(problem, sort_keys=True, separators=(",", ":"))
@@ -288,6 +304,27 @@ def _time_limit(request: Any, default: float) -> float:
     return float(value)
 
 
+#: Answers to one question and part in a batch from which its mistake catalogue is built whole
+#: when the question is prepared (as `lagrade grade` does): with that many answers a few wrong
+#: ones are all but certain, and no single answer then waits for the catalogue to be built.
+DIAGNOSE_AT = 8
+
+
+def _diagnose_early(work: list[tuple[int, tuple]]) -> list[tuple[int, tuple]]:
+    """`work` with the first request to each question and part that has `DIAGNOSE_AT` or more
+    answers in it marked to build the part's catalogue with its preparation."""
+    groups: dict[tuple[str, str], list[int]] = {}
+    for k, (_position, item) in enumerate(work):
+        part = item[0].get("part")
+        if isinstance(part, str):
+            groups.setdefault((_question_of(item), part), []).append(k)
+    for members in groups.values():
+        if len(members) >= DIAGNOSE_AT:
+            position, (request, limit) = work[members[0]]
+            work[members[0]] = (position, (request, limit, True))
+    return work
+
+
 #: The longest request id echoed back, in characters of its JSON form.
 MAX_ID_LENGTH = 1_000
 
@@ -337,7 +374,8 @@ def run_batch(
             answers[position] = refused(request_id, "?", str(error))
             continue
         work.append((position, (request, limit)))
-    limits = {position: limit for position, (_request, limit) in work}
+    limits = {position: item[1] for position, item in work}
+    work = _diagnose_early(work)
     own = pool is None
     pool = pool or check_pool(jobs)
     try:

@@ -56,23 +56,31 @@ class LazyList(Generic[_T]):
             self._start()  # the source and the filter's state are lost with the item in hand
             raise
 
-    def chunks(self) -> Iterator[tuple[_T, ...]]:
-        """The kept items in order, a chunk at a time (4, 8, 16, … items), building each chunk
-        only when the reader asks for it."""
-        k = 0
-        while True:
-            if k < len(self._chunks):
-                yield self._chunks[k]
-                k += 1
-                continue
+    def built(self, k: int) -> tuple[_T, ...] | None:
+        """Chunk k if it has been made already (no building), else None."""
+        return self._chunks[k] if k < len(self._chunks) else None
+
+    def chunk(self, k: int) -> tuple[_T, ...] | None:
+        """Chunk k (of 4, 8, 16, … items), building the chunks before it and it as needed; None
+        past the last item."""
+        while k >= len(self._chunks):
             size = FIRST_CHUNK << len(self._chunks)
             if len(self._items) - self._taken < size:
                 self._pull(size - (len(self._items) - self._taken))
             chunk = tuple(self._items[self._taken : self._taken + size])
             if not chunk:
-                return
+                return None
             self._chunks.append(chunk)
             self._taken += len(chunk)
+        return self._chunks[k]
+
+    def chunks(self) -> Iterator[tuple[_T, ...]]:
+        """The kept items in order, a chunk at a time (4, 8, 16, … items), building each chunk
+        only when the reader asks for it."""
+        k = 0
+        while (chunk := self.chunk(k)) is not None:
+            yield chunk
+            k += 1
 
     def __iter__(self) -> Iterator[_T]:
         """The kept items in order, building one more only when the reader asks for it."""

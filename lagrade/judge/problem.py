@@ -216,6 +216,10 @@ class Problem:
             store[key] = make()
         return store[key]
 
+    def peek(self, name: str, points: Points):
+        """What `cached(name, points, …)` holds already, or None (computes nothing)."""
+        return self.__dict__.get("_derived", {}).get((name, id(points)))
+
 
 # --- building a Problem from a request ------------------------------------------------------------
 
