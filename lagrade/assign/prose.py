@@ -89,7 +89,7 @@ class _Builder:
         self.text(literal[last:])
 
 
-def render(
+def render_prose(
     template: str,
     names: Iterable[str] = (),
     fill: Mapping[str, str] | None = None,

@@ -12,9 +12,9 @@ from typing import Any
 import sympy as sp
 from markupsafe import Markup
 
-from lagrade.assign import prose
 from lagrade.assign.assignment import EXPRESSION, Problem
 from lagrade.assign.figures import draw
+from lagrade.assign.prose import Prose, render_prose
 from lagrade.assign.symbols import part_symbols
 from lagrade.assign.templating import toml_literal
 from lagrade.assign.units import unit_formats
@@ -52,7 +52,7 @@ def _statement(variant: SceneVariant) -> dict[str, Any]:
     """
     scene = variant.scene
     fixed = {c for c in scene.coordinates if len(scene.renames.get(c, (c,))) == 1}
-    st = prose.render(
+    st = render_prose(
         scene.statement,
         names=set(variant.parameter_symbols) | fixed,
         fill=variant.statement_fill,
@@ -61,9 +61,9 @@ def _statement(variant: SceneVariant) -> dict[str, Any]:
     return {"text": variant.statement(), "md": st.md, "html": st.html, "tex": st.tex}
 
 
-def _described(variant: SceneVariant, text: str) -> prose.Prose:
+def _described(variant: SceneVariant, text: str) -> Prose:
     """A description (of a quantity, a parameter) with its parameter names set as math."""
-    return prose.render(text, names=variant.parameter_symbols)
+    return render_prose(text, names=variant.parameter_symbols)
 
 
 def _body_kind(body: Any) -> str:
@@ -99,7 +99,7 @@ def symbolic_solution(scene_id: str, names: tuple, options: tuple) -> dict[str, 
 
     constraints = [
         {
-            "description": prose.render(label if label != "declared" else "constraint"),
+            "description": render_prose(label if label != "declared" else "constraint"),
             "math": eq(f, 0),
         }
         for label, f in v.constraints
@@ -251,7 +251,7 @@ def _parts(problem: Problem, variant: SceneVariant) -> list[dict[str, Any]]:
             )
             unit = unit_formats(q.unit) if q.unit else None
         else:
-            prompt = prose.render(PROMPTS[part.part])
+            prompt = render_prose(PROMPTS[part.part])
         parts.append(
             {
                 "key": part.key,

@@ -16,7 +16,8 @@ from typing import Any
 
 import lagrade.untrusted as untrusted
 from lagrade.errors import UnreadableInput
-from lagrade.grading import latex_escapes
+from lagrade.grading.latex_escapes import repair as repair_escapes
+from lagrade.grading.latex_escapes import warning as escape_warning
 
 #: The largest answer sheet read; a real one is a few kilobytes.
 MAX_SHEET_BYTES = 1024 * 1024
@@ -155,14 +156,14 @@ def _repair_escapes(sheet: Sheet, raw: str) -> Sheet:
                 continue
             fixed, restored, kept = [], [], []
             for item in items:
-                text, r, k = latex_escapes.repair(item, raw)
+                text, r, k = repair_escapes(item, raw)
                 fixed.append(text)
                 restored += r
                 kept += k
             answers[index][key] = fixed if isinstance(value, list) else fixed[0]
             if restored or kept:
                 where = f"[problem{index}] {untrusted.bounded(key, 60)}"
-                warnings.append(latex_escapes.warning(where, restored, kept))
+                warnings.append(escape_warning(where, restored, kept))
     return replace(sheet, answers=answers, warnings=tuple(warnings))
 
 

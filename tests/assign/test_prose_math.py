@@ -49,13 +49,13 @@ def test_hoop_description_sets_omega_squared() -> None:
 
 
 def test_a_power_after_a_parenthesis_is_a_superscript() -> None:
-    rendered = prose.render("V = (x + y)^2")
+    rendered = prose.render_prose("V = (x + y)^2")
     assert rendered.tex.endswith(")$^{2}$") and rendered.md.endswith(")²")
     assert str(rendered.html).endswith(")<sup>2</sup>")
 
 
 def test_prose_survives_pickling() -> None:
-    rendered = prose.render("v^2", names=())
+    rendered = prose.render_prose("v^2", names=())
     again = pickle.loads(pickle.dumps(rendered))
     assert (again, again.tex, again.md, str(again.html)) == (
         rendered,
