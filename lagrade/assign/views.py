@@ -6,18 +6,17 @@ from __future__ import annotations
 
 import hashlib
 import json
-import re
-import string
 from functools import lru_cache
 from typing import Any
 
 import sympy as sp
-from markupsafe import Markup, escape
+from markupsafe import Markup
 
 from lagrade.assign.assignment import EXPRESSION, Problem
 from lagrade.assign.figures import draw
+from lagrade.assign.prose import Prose, render_prose
 from lagrade.assign.symbols import part_symbols
-from lagrade.assign.templating import md_escape, tex_escape, toml_literal
+from lagrade.assign.templating import toml_literal
 from lagrade.assign.units import unit_formats
 from lagrade.assign.variants import VariantChoice
 from lagrade.mechanics.scene import RigidBody, SceneVariant
@@ -42,9 +41,6 @@ PROMPTS: dict[str, str] = {
 KEYED_PARTS = tuple(PROMPTS)
 #: Parts whose answer sheet field holds several lines (one equation or item per line).
 MULTILINE = frozenset({"transformation", "eom", "momenta", "conserved"})
-#: A name in prose: a whole word, not part of a possessive or a contraction ("pendulum's").
-_WORD = re.compile(r"(?<![\w'\u2019])[A-Za-z][A-Za-z0-9_]*(?![\w'\u2019])")
-_ENGLISH = frozenset({"a", "A", "I"})
 
 
 def _statement(variant: SceneVariant) -> dict[str, Any]:
@@ -55,41 +51,19 @@ def _statement(variant: SceneVariant) -> dict[str, Any]:
     parameters and the coordinates no variant renames (`V = m g z`), as whole words.
     """
     scene = variant.scene
-    fill = variant.statement_fill
     fixed = {c for c in scene.coordinates if len(scene.renames.get(c, (c,))) == 1}
-    prose_names = (set(variant.parameter_symbols) | fixed) - _ENGLISH
-    math_fields = set(scene.coordinates) | set(variant.parameter_symbols)
-    md: list[str] = []
-    html: list[str] = []
-    tex: list[str] = []
+    st = render_prose(
+        scene.statement,
+        names=set(variant.parameter_symbols) | fixed,
+        fill=variant.statement_fill,
+        math_fields=set(scene.coordinates) | set(variant.parameter_symbols),
+    )
+    return {"text": variant.statement(), "md": st.md, "html": st.html, "tex": st.tex}
 
-    def text(chunk: str) -> None:
-        md.append(md_escape(chunk))
-        html.append(str(escape(chunk)))
-        tex.append(tex_escape(chunk))
 
-    def math(name: str) -> None:
-        rendered = rm.render(sp.Symbol(name))
-        md.append(f"${rendered.latex}$")
-        html.append(str(rendered.mathml))
-        tex.append(f"${rendered.latex}$")
-
-    for literal, field_name, _spec, _conversion in string.Formatter().parse(scene.statement):
-        last = 0
-        for match in _WORD.finditer(literal):
-            if match.group() in prose_names:
-                text(literal[last : match.start()])
-                math(match.group())
-                last = match.end()
-        text(literal[last:])
-        if field_name is not None:
-            (math if field_name in math_fields else text)(fill[field_name])
-    return {
-        "text": variant.statement(),
-        "md": "".join(md),
-        "html": Markup("".join(html)),
-        "tex": "".join(tex),
-    }
+def _described(variant: SceneVariant, text: str) -> Prose:
+    """A description (of a quantity, a parameter) with its parameter names set as math."""
+    return render_prose(text, names=variant.parameter_symbols)
 
 
 def _body_kind(body: Any) -> str:
@@ -124,7 +98,10 @@ def symbolic_solution(scene_id: str, names: tuple, options: tuple) -> dict[str, 
         return sp.Symbol(f"{head}_{sub.replace('_', '')}" if sub else head)
 
     constraints = [
-        {"description": label if label != "declared" else "constraint", "math": eq(f, 0)}
+        {
+            "description": render_prose(label if label != "declared" else "constraint"),
+            "math": eq(f, 0),
+        }
         for label, f in v.constraints
     ]
     return {
@@ -221,7 +198,7 @@ def _parameters(choice: VariantChoice, variant: SceneVariant) -> list[dict[str, 
                 "value": None if value is None else f"{value:g}",
                 "unit": p.unit,
                 "units": unit_formats(p.unit),
-                "description": p.description,
+                "description": _described(variant, p.description),
                 "domain": p.domain.text,
             }
         )
@@ -242,7 +219,7 @@ def _quantities(
         expr = variant.quantities[q.name]
         quantities[q.name] = {
             "name": q.name,
-            "description": q.description,
+            "description": _described(variant, q.description),
             "unit": q.unit,
             "units": unit_formats(q.unit),
             "formula": rm.named_equation(q.name, expr, variant.coordinates),
@@ -267,13 +244,14 @@ def _parts(problem: Problem, variant: SceneVariant) -> list[dict[str, Any]]:
         unit = None
         if part.part == EXPRESSION:
             q = declared[part.quantity]
-            prompt = (
+            prompt = _described(
+                variant,
                 f"Find {q.description}: a closed form in the parameters (or its value for "
-                "your parameter values)."
+                "your parameter values).",
             )
             unit = unit_formats(q.unit) if q.unit else None
         else:
-            prompt = PROMPTS[part.part]
+            prompt = render_prose(PROMPTS[part.part])
         parts.append(
             {
                 "key": part.key,

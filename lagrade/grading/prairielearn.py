@@ -223,7 +223,8 @@ def _problem(assignment: str, index: int) -> tuple[Problem, Rubric]:
 
 def _prompt_html(part: Mapping[str, Any]) -> str:
     """A part's prompt and the names its answer may use, as HTML (escaped here)."""
-    lines = [_escape(part["prompt"])]
+    prompt = part["prompt"]
+    lines = [str(getattr(prompt, "html", None) or _escape(prompt))]
     for group in part["symbols"]:
         names = ", ".join(f"<code>{_escape(n)}</code>" for n in group["names"])
         lines.append(f'<span class="small">{_escape(group["what"]).capitalize()}: {names}.</span>')

@@ -10,12 +10,14 @@ import hashlib
 import os
 import stat
 from collections.abc import Iterable, Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import Any
 
 import lagrade.untrusted as untrusted
 from lagrade.errors import UnreadableInput
+from lagrade.grading.latex_escapes import repair as repair_escapes
+from lagrade.grading.latex_escapes import warning as escape_warning
 
 #: The largest answer sheet read; a real one is a few kilobytes.
 MAX_SHEET_BYTES = 1024 * 1024
@@ -127,10 +129,42 @@ def read_sheet(
         else:
             raw = untrusted.load_toml(text, "the answer sheet")
     except UnreadableInput as error:
-        return _bad(path, digest, str(error))
+        reason = str(error)
+        if "Unescaped '\\'" in reason:  # \sin, \dot, \alpha in a "…" string
+            reason += (
+                "; LaTeX in an answer belongs in single quotes, where a backslash stays a "
+                "backslash: eom = '\\ddot{x} = 0'"
+            )
+        return _bad(path, digest, reason)
     if not isinstance(raw, dict):
         return _bad(path, digest, "the answer sheet must be a table of problems")
-    return _structure(path, digest, raw, student_id, problem_count, keys or {})
+    sheet = _structure(path, digest, raw, student_id, problem_count, keys or {})
+    return _repair_escapes(sheet, text)
+
+
+def _repair_escapes(sheet: Sheet, raw: str) -> Sheet:
+    """Each answer whose LaTeX a string escape ate (`\\theta` read as a tab and "heta") read as
+    meant where it can be, with a warning per answer (lagrade.grading.latex_escapes)."""
+    warnings = list(sheet.warnings)
+    answers: dict[int, dict[str, Any]] = {}
+    for index, table in sheet.answers.items():
+        answers[index] = {}
+        for key, value in table.items():
+            items = value if isinstance(value, list) else [value]
+            if not all(isinstance(v, str) for v in items):
+                answers[index][key] = value
+                continue
+            fixed, restored, kept = [], [], []
+            for item in items:
+                text, r, k = repair_escapes(item, raw)
+                fixed.append(text)
+                restored += r
+                kept += k
+            answers[index][key] = fixed if isinstance(value, list) else fixed[0]
+            if restored or kept:
+                where = f"[problem{index}] {untrusted.bounded(key, 60)}"
+                warnings.append(escape_warning(where, restored, kept))
+    return replace(sheet, answers=answers, warnings=tuple(warnings))
 
 
 def feed_digest(digest: Any, path: Path) -> None:

@@ -52,11 +52,11 @@ def situation(witness: Mapping[str, float], problem: Problem | None = None) -> s
     """The situation of a witness point, e.g. "at θ = 0.3 rad with the system at rest"."""
     if problem is None:
         return "at " + _listing(witness.items(), {})
-    angles = _angles(problem)
+    angular = angles(problem)
     where, moving, speeding = [], [], []
     for j in problem.jets:
         name = j.name
-        angle = name in angles
+        angle = name in angular
         if name in witness:
             where.append(_quantity(symbol_text(name), witness[name], "rad" if angle else ""))
         if f"{name}_dot" in witness:
@@ -92,7 +92,7 @@ def _join(parts: list[str]) -> str:
     return parts[0] if len(parts) == 1 else ", ".join(parts[:-1]) + " and " + parts[-1]
 
 
-def _angles(problem: Problem) -> frozenset[str]:
+def angles(problem: Problem) -> frozenset[str]:
     """Coordinates that are angles: those the reference puts inside a trigonometric function
     (θ in sin θ; a length never appears there) and those named by a Greek letter (Kepler's
     polar angle φ, which L holds only as φ̇)."""

@@ -28,6 +28,10 @@ _TIMES = {"cdot": "*", "times": "*", "ast": "*"}
 _SPACES = frozenset((",", ";", ":", "!", " ", "quad", "qquad", "(", ")", "[", "]", "displaystyle"))
 _FRACS = frozenset(("frac", "dfrac", "tfrac"))
 _DOTS = {"dot": DOT_MARK, "ddot": DDOT_MARK}
+#: Every command (by name, without its backslash) the translator reads.
+COMMANDS = frozenset(
+    {*_WORDS, *_TIMES, *_FRACS, *_DOTS, "sqrt", "left", "right", "quad", "qquad", "displaystyle"}
+)
 
 _TOKEN = re.compile(r"\\[A-Za-z]+|\\.|\\$|\s+|.", re.DOTALL)
 _NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*\Z")

@@ -175,3 +175,80 @@ def test_no_wall_or_surface_cuts_through_a_body(variant: SceneVariant, composed)
                     if _distance(centre, a, b) < 0.97 * radius:
                         cuts.append((e.kind, e.name))
     assert cuts == []
+
+
+def _segments(artist) -> list[tuple[np.ndarray, np.ndarray]]:
+    pts = np.asarray(artist.get_xydata(), dtype=float)
+    return list(zip(pts[:-1], pts[1:], strict=True))
+
+
+def _straight(artist) -> bool:
+    pts = np.asarray(artist.get_xydata(), dtype=float)
+    if len(pts) <= 2:
+        return True
+    d = pts[-1] - pts[0]
+    normal = np.array([-d[1], d[0]]) / max(float(np.hypot(*d)), 1e-12)
+    return bool(np.all(np.abs((pts - pts[0]) @ normal) <= 1e-6 * max(np.ptp(pts), 1e-12)))
+
+
+def _cross(p, q, r, s) -> bool:
+    """Whether segments pq and rs cross properly (not merely touch at an end)."""
+
+    def orient(a, b, c) -> float:
+        return float((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]))
+
+    d1, d2, d3, d4 = orient(r, s, p), orient(r, s, q), orient(p, q, r), orient(p, q, s)
+    scale = max(np.ptp(np.array([p, q, r, s]), axis=0).max(), 1e-12) ** 2
+    eps = 1e-6 * scale
+    return (d1 > eps and d2 < -eps or d1 < -eps and d2 > eps) and (
+        d3 > eps and d4 < -eps or d3 < -eps and d4 > eps
+    )
+
+
+@pytest.mark.parametrize("variant", CASES)
+def test_no_two_dimension_lines_cross(variant: SceneVariant, composed) -> None:
+    """Length marks (x, y, z of a free particle; a hint's h) never cross one another: the old
+    3-D figures measured x, y and z each up to the particle, three lines through one point."""
+    from matplotlib.colors import to_hex
+    from matplotlib.lines import Line2D
+
+    from lagrade.assign.figures.style import ACCENT
+
+    figure = composed(variant)
+    lines = [
+        (e.name, seg)
+        for e in figure.elements
+        if e.kind in ("mark", "dimension")
+        for a in e.artists
+        if isinstance(a, Line2D)
+        and to_hex(a.get_color()) == to_hex(ACCENT)
+        and a.get_linewidth() in (0.8, 1.0)  # a dimension line and its end ticks
+        and _straight(a)  # not an angle's arc
+        for seg in _segments(a)
+    ]
+    crossings = {
+        (n1, n2)
+        for (n1, s1), (n2, s2) in itertools.combinations(lines, 2)
+        if n1 != n2 and _cross(*s1, *s2)
+    }
+    assert crossings == set()
+
+
+@pytest.mark.parametrize("variant", CASES)
+def test_at_most_one_pivot(variant: SceneVariant, composed) -> None:
+    """A rod hangs from a pivot only where a fixed point holds it: the spherical pendulum's
+    azimuth circle is centred on the axis below the pivot, and once drew a second pivot there."""
+    from matplotlib.lines import Line2D
+
+    figure = composed(variant)
+    pivots = [
+        a
+        for e in figure.elements
+        if e.kind == "rod"
+        for a in e.artists
+        if isinstance(a, Line2D)
+        and a.get_linewidth() == 1.4
+        and len(a.get_xydata()) == 2
+        and a.get_xydata()[0][1] == a.get_xydata()[1][1]
+    ]
+    assert len(pivots) <= 1, [tuple(p.get_xydata()[0]) for p in pivots]

@@ -72,3 +72,29 @@ def test_conserved_quantity_does_not_borrow_a_parameters_name():
 def test_energy_function_keeps_its_name_without_a_clash():
     verdict = check({"scene": "hoop"}, "conserved", ["0"], time_limit=10, given={"all": True})
     assert "the energy function h" in " ".join(verdict.feedback)
+
+
+def test_a_wrong_T_quotes_both_values_at_the_witness():
+    verdict = check({"scene": "simple_pendulum", "seed": 3}, "T", "m l phi_dot^2", time_limit=10)
+    text = " ".join(verdict.feedback)
+    match = re.search(r"where your T is (\S+) J and the reference's is (\S+) J\)", text)
+    assert match, text
+    assert match.group(1) != match.group(2)
+    for number in match.groups():  # three significant figures
+        assert len(number.replace("−", "").replace(".", "").lstrip("0")) <= 3, number
+
+
+def test_a_wrong_equation_of_one_coordinate_quotes_both_accelerations():
+    verdict = check(
+        {"scene": "simple_pendulum", "seed": 3}, "eom", ["phi_ddot + (g/l) phi = 0"], time_limit=10
+    )
+    assert verdict.status == "incorrect"
+    text = " ".join(verdict.feedback)
+    assert re.search(r"your equation gives φ̈ = \S+ rad/s² and the reference φ̈ = \S+ rad/s²", text)
+    assert "accelerating with" not in text, text
+
+
+def test_no_values_without_handout_numbers_to_reproduce_them():
+    verdict = check({"scene": "simple_pendulum"}, "T", "m l theta_dot^2", time_limit=10)
+    text = " ".join(verdict.feedback)
+    assert "(for example" in text and "reference's is" not in text, text

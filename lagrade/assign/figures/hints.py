@@ -121,7 +121,22 @@ def _oscillator(s: SimpleNamespace) -> Sequence[Fixture]:
     )
 
 
+def _cone(s: SimpleNamespace) -> Sequence[Fixture]:
+    """The cone's outline in the x-z plane: two generatrices from the vertex, hatched outside."""
+    reach, height = 1.5 * s.r, 1.5 * s.r / sp.tan(s.alpha)
+    return (
+        Fixture("surface", lambda s: [(0, 0, 0), (reach, 0, height)], side=-1),
+        Fixture("surface", lambda s: [(0, 0, 0), (-reach, 0, height)], side=1),
+    )
+
+
 HINTS: dict[str, FigureHint] = {
+    # r is the distance from the axis, measured level with the particle, not along the cone
+    "cone_particle": FigureHint(
+        fixtures=_cone,
+        sweeps={"r": "none"},
+        spans={"r": lambda s: ((0, 0, s.r / sp.tan(s.alpha)), "particle")},
+    ),
     "wedge": FigureHint(
         ranges={
             "q": lambda s: (0, s.h / sp.sin(s.alpha)),

@@ -211,7 +211,10 @@ def _plan_angle(d: Drawing, body: int, j: mech.Jet, label: str, canonical: str) 
     length = _rod_length(g, body, j.q)
     zero = g.at(body, {j.q: np.array([0.0])})[0]
     arc = g.at(body, {j.q: np.linspace(0.0, pose, 40)})
-    rods = g.hint.rods and g.constrained  # a free orbit (Kepler) hangs from nothing
+    # a free orbit (Kepler) hangs from nothing, and neither does a circle whose centre other
+    # coordinates move with no body there (the spherical pendulum's φ circle: its centre is
+    # on the axis below the pivot, not a second pivot)
+    rods = g.hint.rods and g.constrained and (pivot_body is not None or _fixed_centre(g, body, j.q))
     spokes = g.hint.spokes
 
     def draw(ax: Any, unit: float) -> None:
@@ -252,6 +255,15 @@ def _plan_marked_angle(d: Drawing, canonical: str, label: str, ns: SimpleNamespa
     d.add("mark", canonical, lambda ax, u: angle_mark(ax, u, vertex, a, b, label))
 
 
+def _fixed_centre(g: Geometry, body: int, q: sp.Symbol) -> bool:
+    """Whether the centre of the circle `q` moves `body` on stays put as the other coordinates
+    change (a pivot), judged in space, before the projection."""
+    thirds = (0, 2 * sp.pi / 3, 4 * sp.pi / 3)
+    centre = [sum(as_expr(x).subs(q, a) for a in thirds) / 3 for x in g.bodies[body].position]
+    others = [j.q for j in g.jets if j.q != q]
+    return all(g.identically_zero(sp.diff(c, o)) for c in centre for o in others)
+
+
 def _body_at(g: Geometry, body: int, centre: np.ndarray, radius: float) -> int | None:
     """Another body sitting at the circle's centre (the rod hangs from it: no pivot is drawn)."""
     return next(
@@ -285,7 +297,14 @@ def _plan_length(
     track is not drawn: a declared surface marks its own angle)."""
     g = d.g
     pose = g.pose[j.q]
-    pts = g.at(body, {j.q: np.linspace(0.0, pose, 30)})
+    # several lengths placing one body (Cartesian x, y, z): measured as a chain from the origin,
+    # each from where the one before ends (x along the x axis, then y, then z up to the body),
+    # so that no two dimension lines cross
+    k = next(n for n, jet in enumerate(g.jets) if jet.q == j.q)
+    later = {
+        jet.q: 0.0 for jet in g.jets[k + 1 :] if not g.is_angle(jet.q) and g.moves(body, jet.q)
+    }
+    pts = g.at(body, {**later, j.q: np.linspace(0.0, pose, 30)})
     if np.hypot(*(pts[-1] - pts[0])) < 1e-9:
         return
     d.add(

@@ -6,8 +6,10 @@ from __future__ import annotations
 from collections.abc import Mapping
 from fractions import Fraction
 
+import numpy as np
 import sympy as sp
 
+from lagrade.errors import UnsupportedExpression
 from lagrade.judge.compiled import Compiled
 from lagrade.judge.decision import Outcome
 from lagrade.judge.derivatives import euler_lagrange_values
@@ -15,8 +17,9 @@ from lagrade.judge.evaluate import FLOAT
 from lagrade.judge.mutations import Mutant
 from lagrade.judge.parts.reading import Read
 from lagrade.judge.problem import Problem
+from lagrade.judge.rows import equation_rows
 from lagrade.judge.sampling import Points
-from lagrade.judge.situation import situation
+from lagrade.judge.situation import angles, rounded, situation, symbol_text
 from lagrade.judge.verdict import Verdict
 
 
@@ -53,12 +56,94 @@ def witness_point(
     return points.point(outcome.where, syms)
 
 
-def where_text(witness: Mapping[str, float] | None, problem: Problem | None = None) -> str:
+def where_text(
+    witness: Mapping[str, float] | None, problem: Problem | None = None, values: str = ""
+) -> str:
     """Where a wrong answer shows, as a situation: " (for example at θ = 0.3 rad with the
-    system at rest)" (see `lagrade.judge.situation`); nothing without a point."""
+    system at rest)" (see `lagrade.judge.situation`), then what each side gives there when
+    `values` says it (", where your T is 0.412 and the reference's is 0.623"); nothing
+    without a point."""
     if not witness:
         return ""
-    return f" (for example {situation(witness, problem)})"
+    if values:  # the accelerations compared are not part of the situation
+        witness = {k: v for k, v in witness.items() if not k.endswith("_ddot")} or witness
+    return f" (for example {situation(witness, problem)}{values})"
+
+
+def _handout_point(problem: Problem, points: Points, i: int, symbols: set) -> dict | None:
+    """Sample point i as a one-point env, with the handout's parameter values in place of the
+    sampled ones when the situation quotes coordinates or velocities (it then leaves the
+    parameters to the handout); as sampled when it quotes the parameters themselves (a
+    formula in the parameters alone). The numbers quoted must be ones a student can
+    reproduce. None when some parameter has no handout value."""
+    env = {s: np.array([float(np.ravel(v)[i] if np.ndim(v) else v)]) for s, v in points.env.items()}
+    motion = {j.q for j in problem.jets} | {j.dot for j in problem.jets}
+    if not symbols & motion:
+        return env
+    if any(s not in problem.values for s in problem.domains):
+        return None
+    env.update({s: np.array([float(v)]) for s, v in problem.values.items()})
+    return env
+
+
+def _shown_pair(mine: float, theirs: float) -> tuple[str, str] | None:
+    """Both values rounded (3 significant figures), when they are finite and look different."""
+    if not (np.isfinite(mine) and np.isfinite(theirs)):
+        return None
+    shown = rounded(float(mine)), rounded(float(theirs))
+    return shown if shown[0] != shown[1] else None
+
+
+def values_text(
+    problem: Problem, points: Points, outcome: Outcome, answer: Compiled, reference: Compiled,
+    what: str, unit: str = "",
+) -> str:  # fmt: skip
+    """ ", where your T is 0.412 and the reference's is 0.623" at the witness of `outcome`
+    (handout parameter values), or nothing when that is not cheap and clear."""
+    if outcome.where is None:
+        return ""
+    env = _handout_point(problem, points, outcome.where, answer.symbols | reference.symbols)
+    if env is None:
+        return ""
+    try:
+        with np.errstate(all="ignore"):
+            mine = float(np.ravel(answer.values(env)[0])[0])
+            theirs = float(np.ravel(reference.values(env)[0])[0])
+    except UnsupportedExpression:  # a symbol without a value here: say nothing, never guess
+        return ""
+    pair = _shown_pair(mine, theirs)
+    if pair is None:
+        return ""
+    suffix = f" {unit}" if unit else ""
+    return f", where your {what} is {pair[0]}{suffix} and the reference's is {pair[1]}{suffix}"
+
+
+def acceleration_text(
+    problem: Problem, points: Points, outcome: Outcome, equation: Compiled
+) -> str:
+    """For one coordinate, ", where your equation gives θ̈ = −3.2 rad/s² and the reference
+    θ̈ = −9.81 rad/s²" at the witness (handout parameter values); nothing for several
+    coordinates (the accelerations are then coupled) or when not clear."""
+    if len(problem.jets) != 1 or outcome.where is None:
+        return ""
+    env = _handout_point(problem, points, outcome.where, {problem.jets[0].q})
+    if env is None:
+        return ""
+    try:
+        with np.errstate(all="ignore"):
+            mine = equation_rows([equation], problem.jets, env).coef[0, 0]
+            theirs = equation_rows(problem.euler_lagrange, problem.jets, env).coef[0, 0]
+            pair = _shown_pair(-mine[1] / mine[0], -theirs[1] / theirs[0])
+    except UnsupportedExpression:
+        return ""
+    if pair is None:
+        return ""
+    name = symbol_text(problem.jets[0].name, 2)
+    unit = " rad/s²" if problem.jets[0].name in angles(problem) else ""
+    return (
+        f", where your equation gives {name} = {pair[0]}{unit} and the reference "
+        f"{name} = {pair[1]}{unit}"
+    )
 
 
 def method_name(*outcomes: Outcome) -> str:
@@ -98,11 +183,12 @@ def incorrect(
     witness: Mapping[str, float] | None,
     method: str,
     problem: Problem | None = None,
+    values: str = "",
 ) -> Verdict:
     """A wrong single-expression answer: the named mistake (when the catalogue knows it),
     then what is wrong, with a point where it shows."""
     feedback = [as_sentence(mutant.message)] if mutant is not None else []
-    feedback.append(sentence + where_text(witness, problem) + ".")
+    feedback.append(sentence + where_text(witness, problem, values) + ".")
     mistakes = (mutant.kind,) if mutant is not None else ()
     return Verdict(
         part,

@@ -28,6 +28,7 @@ from lagrade.judge.parts.common import (
     method_name,
     ratio_text,
     reference_el,
+    values_text,
     where_text,
     witness_point,
 )
@@ -192,6 +193,7 @@ def check_kinetic(problem: Problem, answer: Any, given: Mapping | None) -> Verdi
         witness_point(points, out, answer_c),
         method_name(out),
         problem,
+        values_text(problem, points, out, answer_c, problem.kinetic, "T", "J"),
     )
 
 

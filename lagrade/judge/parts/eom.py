@@ -13,6 +13,7 @@ from lagrade.judge.compiled import Compiled
 from lagrade.judge.decision import decide
 from lagrade.judge.evaluate import FLOAT, UnsupportedExpression
 from lagrade.judge.parts.common import (
+    acceleration_text,
     free_parameters,
     method_name,
     where_text,
@@ -81,7 +82,13 @@ def check_eom(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
         else:
             feedback.append(
                 f"{label} does not follow from the Euler–Lagrange equations of this "
-                f"system{where_text(witness_point(points, out), problem)}."
+                "system"
+                + where_text(
+                    witness_point(points, out),
+                    problem,
+                    acceleration_text(problem, points, out, compiled[k]),
+                )
+                + "."
             )
     rank = row_rank(rows.coef.astype(float), right)
     follows = False

@@ -21,10 +21,17 @@ from lagrade.judge.adaptive import ExactThenAdaptive
 from lagrade.judge.compiled import Compiled
 from lagrade.judge.decision import Outcome
 from lagrade.judge.equivalence import expressions_equal
-from lagrade.judge.parts.common import free_parameters, incorrect, method_name, witness_point
+from lagrade.judge.parts.common import (
+    free_parameters,
+    incorrect,
+    method_name,
+    values_text,
+    witness_point,
+)
 from lagrade.judge.parts.reading import read_single
 from lagrade.judge.problem import Problem
 from lagrade.judge.sampling import coordinate_range
+from lagrade.judge.situation import unit_text
 from lagrade.judge.verdict import Verdict
 from lagrade.mechanics.domains import Domain
 
@@ -149,4 +156,5 @@ def _check_one(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
         witness_point(points, out, ans, ref),
         out.method if decided is not None else method_name(out),
         problem,
+        values_text(problem, points, out, ans, ref, "answer", unit_text(problem.unit)),
     )

@@ -1,0 +1,116 @@
+"""Prose with formulas in it, as each format sets it: a scene's statement, a quantity's or a
+parameter's description. Names of coordinates and parameters become math, and a power written
+with a caret (`x^2`, `omega^2 R`, `(x^2 + y^2)/2`) becomes a superscript — never the raw caret,
+which LaTeX's text mode prints as a circumflex accent (`xˆ2`). One renderer for all prose, so
+no statement or description can slip past it."""
+
+from __future__ import annotations
+
+import re
+import string
+from collections.abc import Iterable, Mapping
+
+import sympy as sp
+from markupsafe import Markup, escape
+
+from lagrade.assign.templating import md_escape, tex_escape
+from lagrade.notation import printer as rm
+
+#: A name in prose: a whole word, not part of a possessive or a contraction ("pendulum's"),
+#: with the power it is raised to, if any (`x^2`, `omega^2`, `z^-1`).
+_WORD = re.compile(
+    r"(?<![\w'\u2019])(?P<name>[A-Za-z][A-Za-z0-9_]*)(?![\w'\u2019])(?:\^(?P<power>-?\d+))?"
+)
+#: A power that follows something other than a name: `(x + y)^2`.
+_POWER = re.compile(r"\^(?P<power>-?\d+|[A-Za-z])")
+_ENGLISH = frozenset({"a", "A", "I"})
+_SUPERSCRIPT = str.maketrans(
+    "-0123456789", "\u207b\u2070\u00b9\u00b2\u00b3\u2074\u2075\u2076\u2077\u2078\u2079"
+)
+
+
+class Prose(str):
+    """Plain text (the `str` itself, so `{{ text | tex }}` in an older template still works)
+    that also knows itself in each format: `.md`, `.html` (safe markup) and `.tex`."""
+
+    md: str
+    html: Markup
+    tex: str
+
+    def __new__(cls, text: str, md: str, html: str, tex: str) -> Prose:
+        self = super().__new__(cls, text)
+        self.md, self.html, self.tex = md, Markup(html), tex
+        return self
+
+    def __reduce__(self):  # a view crosses process boundaries: keep every format
+        return (Prose, (str(self), self.md, str(self.html), self.tex))
+
+
+class _Builder:
+    def __init__(self) -> None:
+        self.md: list[str] = []
+        self.html: list[str] = []
+        self.tex: list[str] = []
+
+    def text(self, chunk: str) -> None:
+        """Prose, with any caret power in it (`)^2`) set as a superscript."""
+        last = 0
+        for m in _POWER.finditer(chunk):
+            self._plain(chunk[last : m.start()])
+            power = m.group("power")
+            self.md.append(power.translate(_SUPERSCRIPT) if power[-1].isdigit() else f"^{power}")
+            self.html.append(f"<sup>{escape(power)}</sup>")
+            self.tex.append(f"$^{{{power}}}$")
+            last = m.end()
+        self._plain(chunk[last:])
+
+    def _plain(self, chunk: str) -> None:
+        self.md.append(md_escape(chunk))
+        self.html.append(str(escape(chunk)))
+        self.tex.append(tex_escape(chunk))
+
+    def math(self, name: str, power: str | None = None) -> None:
+        symbol = sp.Symbol(name)
+        expr = symbol if power is None else sp.Pow(symbol, int(power), evaluate=False)
+        rendered = rm.render(expr)
+        self.md.append(f"${rendered.latex}$")
+        self.html.append(str(rendered.mathml))
+        self.tex.append(f"${rendered.latex}$")
+
+    def prose(self, literal: str, names: frozenset[str]) -> None:
+        """Free text: the given names, and any word raised to a power, set as math."""
+        last = 0
+        for match in _WORD.finditer(literal):
+            name, power = match.group("name"), match.group("power")
+            if name in names or power is not None:
+                self.text(literal[last : match.start()])
+                self.math(name, power)
+                last = match.end()
+        self.text(literal[last:])
+
+
+def render_prose(
+    template: str,
+    names: Iterable[str] = (),
+    fill: Mapping[str, str] | None = None,
+    math_fields: Iterable[str] = (),
+) -> Prose:
+    """`template` with its `{field}`s filled from `fill` (a field in `math_fields` set as
+    math), the whole words in `names` set as math, and every caret power as a superscript."""
+    fill = fill or {}
+    fields = set(math_fields)
+    words = frozenset(names) - _ENGLISH
+    out = _Builder()
+    plain: list[str] = []
+    parsed = string.Formatter().parse(template) if fill else [(template, None, None, None)]
+    for literal, field_name, _spec, _conversion in parsed:
+        plain.append(literal)
+        out.prose(literal, words)
+        if field_name is not None:
+            value = fill[field_name]
+            plain.append(value)
+            if field_name in fields:
+                out.math(value)
+            else:
+                out.text(value)
+    return Prose("".join(plain), "".join(out.md), "".join(out.html), "".join(out.tex))
