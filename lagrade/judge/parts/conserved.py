@@ -29,6 +29,7 @@ from lagrade.judge.parts.reading import (
     items_of,
     own_lagrangian,
     read_labelled,
+    read_lines,
 )
 from lagrade.judge.problem import Problem
 from lagrade.judge.rows import equation_rows, lagrangian_rows, row_rank, solve_accelerations
@@ -81,8 +82,9 @@ def check_conserved(problem: Problem, answer: Any, given: Mapping | None) -> Ver
         else items_of(answer, "conserved")
     )
     items = [i for i in items if not (isinstance(i, str) and i.strip().lower() in NONE_WORDS)]
-    reads = [read_labelled(problem, item) for item in items]
-    echoes = [r.echo for r in reads] or ["none"]
+    lines = read_lines(items, lambda item: read_labelled(problem, item))
+    reads = lines.reads
+    echoes = lines.echoes or ["none"]
     key = problem.system.conserved_quantities
     free = free_parameters(problem, *(r.expr for r in reads))
     points = problem.points("conserved", free)
@@ -94,14 +96,15 @@ def check_conserved(problem: Problem, answer: Any, given: Mapping | None) -> Ver
         ),
     )
     own = own_lagrangian(problem, given)
-    feedback, mistakes, outcomes = [], [], []
+    feedback, mistakes, outcomes = lines.feedback(), [], []
     right_grads: list[np.ndarray] = []
     right_labels: list[str] = []
     complete = bool(given and given.get("all") is True)
     witness = None
-    follows_all, any_wrong = True, False
-    for k, r in enumerate(reads):
-        label = f"{echoes[k]}"
+    any_wrong = False
+    follows_all = not lines.unreadable  # an unreadable line follows from nothing
+    for r in reads:
+        label = r.echo
         if has_acceleration(problem, r.expr):
             feedback.append(
                 f"{label} contains an acceleration; a conserved quantity is a function "
@@ -140,7 +143,7 @@ def check_conserved(problem: Problem, answer: Any, given: Mapping | None) -> Ver
                     f"is not zero{where_text(witness_point(points, out, Q), problem)}."
                 )
     counted, rank = _independent(problem, right_grads, right_labels, feedback, mistakes)
-    listed = len(reads)
+    listed = len(lines.entries)  # an unreadable line counts as a wrong one
     if listed == 0:  # "none": right only when the system has no conserved quantity
         score = 1.0 if key_rank == 0 else 0.0
         if key_rank:

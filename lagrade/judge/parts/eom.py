@@ -19,22 +19,34 @@ from lagrade.judge.parts.common import (
     where_text,
     witness_point,
 )
-from lagrade.judge.parts.reading import Read, items_of, own_lagrangian, read, read_parsed
+from lagrade.judge.parts.reading import (
+    Read,
+    items_of,
+    own_lagrangian,
+    read,
+    read_lines,
+    read_parsed,
+)
 from lagrade.judge.problem import Problem, parser
 from lagrade.judge.rows import equation_rows, in_span, lagrangian_rows, row_rank
 from lagrade.judge.verdict import Verdict, invalid
 
 
 def check_eom(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
-    items = items_of(answer, "eom")
-    reads: list[Read] = []
-    for item in items:
+    def read_line(item: Any) -> Read | list[Read]:
         if isinstance(item, str):
-            for parsed in parser().parse_equations(item, problem.vocabulary()):
-                reads.append(read_parsed(problem, parsed))
-        else:
-            reads.append(read(problem, item))
-    echoes = [r.echo for r in reads]
+            return [
+                read_parsed(problem, parsed)
+                for parsed in parser().parse_equations(item, problem.vocabulary())
+            ]
+        return read(problem, item)
+
+    lines = read_lines(items_of(answer, "eom"), read_line)
+    reads = lines.reads
+    echoes = lines.echoes
+    entry = [k for k, e in enumerate(lines.entries) if isinstance(e, Read)]  # read → position
+    total = len(lines.entries)
+    unreadable = bool(lines.unreadable)
     if not reads:
         return invalid("eom", "Give one equation of motion per coordinate.")
     exprs = [sp.S(r.expr) for r in reads]
@@ -47,11 +59,11 @@ def check_eom(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
     )
     with np.errstate(all="ignore"):
         rows = equation_rows(compiled, jets, points.env)
-    right, outcomes, feedback, mistakes = [], [], [], []
+    right, outcomes, feedback, mistakes = [], [], lines.feedback(), []
     wrong: list[int] = []
     witness = None
     for k in range(len(reads)):
-        label = f"Equation {k + 1} ({echoes[k]})" if len(reads) > 1 else "Your equation"
+        label = f"Equation {entry[k] + 1} ({reads[k].echo})" if total > 1 else "Your equation"
         nonlinear = decide(lambda b, k=k: _nonlinear_residual(compiled, k, jets, points, b))
         if not nonlinear.equal:
             feedback.append(
@@ -100,12 +112,12 @@ def check_eom(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
                 "These equations follow correctly from your own Lagrangian, which is "
                 "not the right one."
             )
-    if not wrong and rank == n:
+    if not wrong and not unreadable and rank == n:
         notes = ()
         if len(reads) > n:
             notes = (f"You gave {len(reads)} equations; {n} of them are independent.",)
         return Verdict("eom", "correct", 1.0, notes, echoes, method_name(*outcomes))
-    if not wrong and rank < n:
+    if not wrong and not unreadable and rank < n:
         feedback.append(
             f"Your equations are right but only {rank} of them are independent; "
             f"{n} coordinates need {n} equations."
@@ -113,8 +125,8 @@ def check_eom(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
         mistakes.append("too_few_equations")
         score = rank / n
     else:
-        score = len(right) / max(len(reads), n)
-        if len(reads) < n and not wrong:
+        score = len(right) / max(total, n)  # an unreadable line counts as a wrong one
+        if total < n and not wrong:
             feedback.append(f"{n} coordinates need {n} equations.")
     return Verdict(
         "eom",

@@ -20,7 +20,15 @@ from lagrade.judge.parts.common import (
     where_text,
     witness_point,
 )
-from lagrade.judge.parts.reading import Read, items_of, own_lagrangian, read
+from lagrade.judge.parts.reading import (
+    Read,
+    Unreadable,
+    items_of,
+    line_label,
+    own_lagrangian,
+    read,
+    read_lines,
+)
 from lagrade.judge.problem import Problem
 from lagrade.judge.verdict import Verdict, invalid
 
@@ -29,24 +37,38 @@ def check_momenta(problem: Problem, answer: Any, given: Mapping | None) -> Verdi
     jets = problem.jets
     labels = [f"p_{j.name}" for j in jets]
     items = items_of(answer, "momenta")
-    by_coordinate: dict[int, Read] = {}
-    unlabelled: list[Read] = []
-    echoes = []
-    for item in items:
+
+    def read_line(item: Any) -> Read:
         got = read(problem, item, labels)
-        echoes.append(got.echo)
-        if got.rhs is not None:
-            if not (isinstance(got.lhs, sp.Symbol) and str(got.lhs) in labels):
-                text = item if isinstance(item, str) else str(item)
-                raise ParseError(
-                    f"Write each momentum as {labels[0]} = … or give them in the order "
-                    f"{', '.join(j.name for j in jets)}.",
-                    (0, len(text)),
-                    text,
-                )
+        if got.rhs is not None and not (isinstance(got.lhs, sp.Symbol) and str(got.lhs) in labels):
+            text = item if isinstance(item, str) else str(item)
+            raise ParseError(
+                f"Write each momentum as {labels[0]} = … or give them in the order "
+                f"{', '.join(j.name for j in jets)}.",
+                (0, len(text)),
+                text,
+            )
+        return got
+
+    lines = read_lines(items, read_line)
+    echoes = lines.echoes
+    # An unreadable line keeps its place: the coordinate its label names, or the next free slot.
+    by_coordinate: dict[int, Read | Unreadable] = {}
+    unlabelled: list[Read | Unreadable] = []
+    for got in lines.entries:
+        if isinstance(got, Unreadable):
+            name = line_label(got.text)
+            if name in labels and labels.index(name) not in by_coordinate:
+                by_coordinate[labels.index(name)] = got
+            else:
+                unlabelled.append(got)
+        elif got.rhs is not None:
             k = labels.index(str(got.lhs))
             if k in by_coordinate:
-                return invalid("momenta", f"{labels[k]} is given twice.", echoes)
+                if isinstance(by_coordinate[k], Unreadable):
+                    unlabelled.append(by_coordinate[k])
+                else:
+                    return invalid("momenta", f"{labels[k]} is given twice.", echoes)
             by_coordinate[k] = Read(got.rhs, None, got.echo)
         else:
             unlabelled.append(got)
@@ -58,11 +80,14 @@ def check_momenta(problem: Problem, answer: Any, given: Mapping | None) -> Verdi
     for k, got in zip(free_slots, unlabelled, strict=False):
         by_coordinate[k] = got
     own = own_lagrangian(problem, given)
-    right, feedback, mistakes, outcomes = 0, [], [], []
+    right, feedback, mistakes, outcomes = 0, lines.feedback(), [], []
     witness, follows_all, any_wrong = None, True, False
     for k, j in enumerate(jets):
         if k not in by_coordinate:
             feedback.append(f"p_{j.name} is missing.")
+            any_wrong, follows_all = True, False
+            continue
+        if isinstance(by_coordinate[k], Unreadable):  # counts as wrong; its line is named above
             any_wrong, follows_all = True, False
             continue
         expr = by_coordinate[k].expr

@@ -5,7 +5,7 @@ follow-through."""
 from __future__ import annotations
 
 import re
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any
 
@@ -36,6 +36,72 @@ def items_of(answer: Any, part: str) -> list[Any]:
     if isinstance(answer, Sequence) and not isinstance(answer, str | bytes):
         return list(answer)
     raise RequestError(f"the answer to {part!r} must be a string or a list of strings")
+
+
+@dataclass(frozen=True)
+class Unreadable:
+    """One line of a multi-line answer that does not parse: its text and the parser's error."""
+
+    text: str
+    error: ParseError
+
+
+@dataclass(frozen=True)
+class Lines:
+    """A multi-line answer read line by line: `entries` in order, each a Read or, for a line
+    that does not parse, an Unreadable (a line read as several equations gives several Reads).
+    An unreadable line counts like a wrong one; its echo is "" (nothing was read)."""
+
+    entries: tuple[Read | Unreadable, ...]
+
+    @property
+    def reads(self) -> list[Read]:
+        return [e for e in self.entries if isinstance(e, Read)]
+
+    @property
+    def unreadable(self) -> list[Unreadable]:
+        return [e for e in self.entries if isinstance(e, Unreadable)]
+
+    @property
+    def echoes(self) -> list[str]:
+        return [e.echo if isinstance(e, Read) else "" for e in self.entries]
+
+    def feedback(self) -> list[str]:
+        """One sentence per unreadable line, naming it (1-based, as in `interpreted`) and
+        carrying the parser's message with its caret."""
+        return [
+            f"Line {k + 1} could not be read: {e.error}"
+            for k, e in enumerate(self.entries)
+            if isinstance(e, Unreadable)
+        ]
+
+
+def read_lines(items: Sequence[Any], reader: Callable[[Any], Read | list[Read]]) -> Lines:
+    """The one place a list of answer lines is parsed: each line by `reader`, a line that does
+    not parse set aside as Unreadable so that the others are still judged. When no line reads
+    at all, the parser's error is raised (the part is `invalid`, as for a one-line answer)."""
+    entries: list[Read | Unreadable] = []
+    for item in items:
+        try:
+            got = reader(item)
+        except ParseError as error:
+            entries.append(Unreadable(item if isinstance(item, str) else str(item), error))
+            continue
+        entries.extend(got if isinstance(got, list) else [got])
+    lines = Lines(tuple(entries))
+    bad = lines.unreadable
+    if bad and not lines.reads:
+        if len(bad) == 1:
+            raise bad[0].error
+        raise ParseError("No line of this answer can be read.\n" + "\n".join(lines.feedback()))
+    return lines
+
+
+def line_label(text: str) -> str | None:
+    """The `name` of a line written `name = …`, read from its raw text (for a line that does
+    not parse, to tell which quantity it was meant to give)."""
+    m = _LABEL.match(text)
+    return m.group(1) if m else None
 
 
 def read(problem: Problem, item: Any, labels: Sequence[str] = (), mode: str = "answer") -> Read:

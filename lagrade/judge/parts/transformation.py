@@ -20,7 +20,7 @@ from lagrade.judge.parts.common import (
     where_text,
     witness_point,
 )
-from lagrade.judge.parts.reading import items_of, read
+from lagrade.judge.parts.reading import Read, items_of, read, read_lines
 from lagrade.judge.problem import Problem
 from lagrade.judge.rows import row_rank
 from lagrade.judge.sampling import Points
@@ -36,10 +36,9 @@ def check_transformation(problem: Problem, answer: Any, given: Mapping | None) -
     optional = [f"z_{b.name}" for b in v.bodies if b.planar and f"z_{b.name}" not in required]
     labels = required + optional
     given_pos: dict[str, sp.Expr] = {}
-    echoes = []
-    for item in items_of(answer, "transformation"):
+
+    def read_line(item: Any) -> Read:
         got = read(problem, item, labels, "answer")
-        echoes.append(got.echo)
         if got.rhs is None or not (isinstance(got.lhs, sp.Symbol) and str(got.lhs) in labels):
             text = item if isinstance(item, str) else str(item)
             raise ParseError(
@@ -48,6 +47,12 @@ def check_transformation(problem: Problem, answer: Any, given: Mapping | None) -
                 (0, len(text)),
                 text,
             )
+        return got
+
+    lines = read_lines(items_of(answer, "transformation"), read_line)
+    echoes = lines.echoes
+    unread = lines.feedback()  # an unreadable line counts as wrong: its coordinate is not given
+    for got in lines.reads:
         name = str(got.lhs)
         if name in given_pos:
             return invalid("transformation", f"{name} is given twice.", echoes)
@@ -58,7 +63,7 @@ def check_transformation(problem: Problem, answer: Any, given: Mapping | None) -
             "transformation",
             "incorrect",
             0.0,
-            (f"Give every Cartesian coordinate; missing: {', '.join(missing)}.",),
+            (*unread, f"Give every Cartesian coordinate; missing: {', '.join(missing)}."),
             echoes,
             "exact",
             mistakes=("missing_coordinate",),
@@ -69,7 +74,7 @@ def check_transformation(problem: Problem, answer: Any, given: Mapping | None) -
                 "transformation",
                 "incorrect",
                 0.0,
-                (f"{name} must depend on the coordinates (and t), not on velocities.",),
+                (*unread, f"{name} must depend on the coordinates (and t), not on velocities."),
                 echoes,
                 "exact",
             )
@@ -108,7 +113,7 @@ def check_transformation(problem: Problem, answer: Any, given: Mapping | None) -
             failures.append((shown, witness_point(points, out, *given_pos.values())))
     rank = _transformation_rank(problem, list(given_pos.values()), points)
     n = len(problem.jets)
-    feedback, mistakes = [], []
+    feedback, mistakes = unread, []
     for shown, w in failures:
         feedback.append(f"Your positions violate the constraint {shown}{where_text(w, problem)}.")
         mistakes.append("violates_constraint")
