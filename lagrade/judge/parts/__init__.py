@@ -1,8 +1,9 @@
 """One checker per answer part, registered by part name in `PARTS`; each returns a frozen Verdict
 and never raises over a student's mistake (text that does not parse is `invalid`, with the
-parser's message; in a part of several lines an unreadable line is named and counts as a wrong
-one, and the part is `invalid` only when no line reads). Every command that judges a part (`check`, `check --batch`, `grade`, key
-verification, the demo) comes through `run_checker`.
+parser's message; in a part of several lines an unreadable line is named and counts as a
+wrong one, and the part is `invalid` only when no line reads). Every command that judges a
+part (`check`, `check --batch`, `grade`, key verification, the demo) comes through
+`run_checker`.
 
     dof             an integer: 3N − k
     coordinates     the generalized coordinates, by name
