@@ -172,7 +172,7 @@ class Problem:
     # --- sample points, cached per part and per set of parameters left free --------------------
     def points(self, part: str, free: frozenset[sp.Symbol] | None = None) -> Points:
         """Sample points for `part`. Parameters outside `free` keep a numeric variant's values
-        (an answer that writes 9.81 for g is judged at g = 9.81); without values all are free."""
+        (the symbolic parts leave every parameter free: see `parts.common.free_parameters`)."""
         if free is None or not self.values:
             free = frozenset(self.domains)
         else:

@@ -270,13 +270,14 @@ def test_expression_for_the_block_acceleration():
     assert v.mistakes == ("sin_cos_swapped",)
 
 
-def test_seeded_variant_uses_its_names_and_accepts_numbers():
-    """Seed 3 calls the wedge's coordinate X; g may be written as 9.81 (its value there)."""
-    v = judge(
-        {"scene": "wedge", "seed": 3},
-        "lagrangian",
-        "1/2 m (X_dot^2 + q_dot^2 + 2 X_dot q_dot cos(alpha)) + 1/2 M X_dot^2"
-        " + m 9.81 q sin(alpha)",
+def test_seeded_variant_uses_its_names_and_wants_symbols():
+    """Seed 3 calls the wedge's coordinate X; g written as 9.81 (its handout value) is not the
+    symbolic L: parameters are sampled over their domains, and the feedback says why."""
+    L = "1/2 m (X_dot^2 + q_dot^2 + 2 X_dot q_dot cos(alpha)) + 1/2 M X_dot^2"
+    assert judge({"scene": "wedge", "seed": 3}, "lagrangian", L + " + m g q sin(alpha)").status == (
+        "correct"
     )
-    assert v.status == "correct", v.feedback
+    v = judge({"scene": "wedge", "seed": 3}, "lagrangian", L + " + m 9.81 q sin(alpha)")
+    assert v.status == "incorrect"
+    assert any("Write g as a symbol" in f for f in v.feedback), v.feedback
     assert judge({"scene": "wedge", "seed": 3}, "lagrangian", "x_M_dot^2").status == "invalid"

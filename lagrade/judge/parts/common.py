@@ -3,6 +3,7 @@ differs, the method that decided, and the verdict of a wrong single expression."
 
 from __future__ import annotations
 
+import re
 from collections.abc import Mapping
 from fractions import Fraction
 
@@ -24,22 +25,37 @@ from lagrade.judge.verdict import Verdict
 
 
 def free_parameters(problem: Problem, *exprs: sp.Expr) -> frozenset[sp.Symbol]:
-    """The parameters sampled over their domains: all of them, except one the answer leaves out
-    while writing its handout value as a number (`m 9.81 q` for m g q): that one keeps the
-    value. A parameter that is merely missing is never pinned — with SI values (e = 1.6e-19 C)
-    a dropped term would be 1e-19 of the rest and slip through any tolerance."""
-    if not problem.values:  # no handout numbers: nothing can be pinned
-        return frozenset(problem.domains)
-    syms = set().union(*(e.free_symbols for e in exprs)) if exprs else set()
-    numbers = [abs(float(n)) for e in exprs for n in e.atoms(sp.Number) if n != 0]
-    pinned = {
-        s
+    """The parameters sampled over their domains for a symbolic answer: every one of them,
+    whatever the handout's values. An omitted parameter is never taken for a number: pinning
+    m at a handout value of 1 kg (or whatever number the answer happens to contain: the −1 of
+    a difference, the 2 of a square, the 0.5 of ½) accepted L and EOM written without it.
+    `exprs` are kept for the callers; they no longer change the answer."""
+    del exprs
+    return frozenset(problem.domains)
+
+
+_DECIMAL = re.compile(r"(?<![\w.])\d*\.\d+(?:[eE][-+]?\d+)?")
+
+
+def handout_numbers(problem: Problem, got: Read) -> str:
+    """A hint for a wrong symbolic answer that writes a handout value as a decimal (9.81 for
+    g) and leaves that parameter out: the sentence saying so, or nothing. Never a pin."""
+    if not problem.values:
+        return ""
+    echo = got.echo if isinstance(got.echo, str) else " ".join(map(str, got.echo))
+    typed = [float(n) for n in _DECIMAL.findall(echo)]
+    syms = got.expr.free_symbols
+    names = sorted(
+        s.name
         for s, value in problem.values.items()
-        if s not in syms
-        and value
-        and any(abs(n - abs(value)) <= 1e-3 * abs(value) for n in numbers)
-    }
-    return frozenset(s for s in problem.domains if s not in pinned)
+        if s not in syms and value and any(abs(n - abs(value)) <= 1e-3 * abs(value) for n in typed)
+    )
+    if not names:
+        return ""
+    return (
+        f"Write {', '.join(names)} as a symbol, not as its handout value: this part is judged "
+        "for every value of the parameters."
+    )
 
 
 def witness_point(
@@ -189,6 +205,8 @@ def incorrect(
     then what is wrong, with a point where it shows."""
     feedback = [as_sentence(mutant.message)] if mutant is not None else []
     feedback.append(sentence + where_text(witness, problem, values) + ".")
+    hint = handout_numbers(problem, got) if problem is not None else ""
+    feedback += [hint] if hint else []
     mistakes = (mutant.kind,) if mutant is not None else ()
     return Verdict(
         part,

@@ -24,6 +24,7 @@ from lagrade.judge.evaluate import UnsupportedExpression
 from lagrade.judge.parts.common import (
     as_sentence,
     free_parameters,
+    handout_numbers,
     incorrect,
     method_name,
     ratio_text,
@@ -165,6 +166,8 @@ def _same_dynamics_notes(problem: Problem, answer: Compiled, match, points: Poin
 def check_lagrangian(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
     got = read_single(problem, answer, "lagrangian", "L")
     status, score, feedback, out, witness, mistakes = judge_lagrangian(problem, got.expr)
+    hint = handout_numbers(problem, got) if status != "correct" else ""
+    feedback += [hint] if hint else []
     return Verdict(
         "lagrangian",
         status,
