@@ -325,7 +325,7 @@ class Catalogue:
             "row-stack",
             points,
             lambda chunk: self._row_stack(chunk, points),
-            lambda stack: first_row(stack, s),
+            lambda stack: first_row(stack, s, points.group),
         )
         return None if found is None else found[1]
 

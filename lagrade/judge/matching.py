@@ -125,16 +125,19 @@ def span_arrays(R: np.ndarray, Rs: np.ndarray) -> tuple:
     """What the span test of `rows.in_span` needs of mutated systems of rows R (mutants,
     points, rows, n + 1) with sizes Rs that does not depend on the answer: an orthonormal basis
     Q (mutants, points, n + 1, rows) of the rows (the QR is the costly part) and the relative
-    size of their terms (mutants, points)."""
+    size of their terms (mutants, points); and R itself, to tell which row an answer is for."""
     Q, _ = np.linalg.qr(np.swapaxes(R, -1, -2))
     norm = np.linalg.norm(R, axis=-1)
     rel_ref = np.max(np.where(norm > 0, Rs / np.where(norm > 0, norm, 1), 0), axis=-1)
-    return Q, rel_ref
+    return Q, rel_ref, R
 
 
-def first_row(stack: Stack, student: Rows):
-    """The first mutated system whose rows span the student's equation (row 0 of `student`)."""
-    Q, rel_ref = stack.arrays
+def first_row(stack: Stack, student: Rows, group: np.ndarray | None = None):
+    """The first mutated system whose rows span the student's equation (row 0 of `student`)
+    and whose mutated row is the one the student's equation is for (`is_for_row`): a Kepler θ
+    equation without 2 m r ṙ θ̇ lies in the span of {r equation without m r̈, θ equation},
+    but naming the r equation would be false."""
+    Q, rel_ref, R = stack.arrays
     x, xs = student.coef[:, 0, :].astype(float), student.size[:, 0].astype(float)
     with np.errstate(all="ignore"):
         # in_span's test, its answer-independent part precomputed per mutant:
@@ -142,7 +145,38 @@ def first_row(stack: Stack, student: Rows):
         res = x - np.einsum("mpij,mpj->mpi", Q, np.einsum("mpji,pj->mpi", Q, x))
         r = np.linalg.norm(res, axis=2)
         size = xs + np.linalg.norm(x, axis=1) * rel_ref
-        return stack.first(vanish_rows(r, size))
+        ok = vanish_rows(r, size)
+    for hit in np.flatnonzero(ok):
+        candidate = stack.candidates[stack.index[hit]]
+        if is_for_row(x, R[hit], candidate[0], group):
+            return candidate
+    return None
+
+
+def is_for_row(x: np.ndarray, R: np.ndarray, i: int, group: np.ndarray | None) -> bool:
+    """Whether the student's equation x (points, n + 1), in the span of the mutated system R
+    (points, rows, n + 1) whose row i is the mutant, is that row itself, so that a mistake
+    named in row i points at it. With accelerations: x is a multiple of row i at each point
+    (a combination with other rows leaves unsure which equation is wrong: say less). Without:
+    any two such rows are multiples at each point, so the factor must be one per parameter
+    group (the student's r equation without m r̈, not a θ equation without its θ̈ term)."""
+    n = x.shape[1] - 1
+    row = R[:, i, :]
+    scale = np.linalg.norm(x, axis=1)
+    with np.errstate(all="ignore"):
+        if np.any(np.linalg.norm(x[:, :n], axis=1) > 1e-9 * scale):
+            unit = row / np.linalg.norm(row, axis=1)[:, None]
+            res = x - unit * np.sum(unit * x, axis=1)[:, None]
+            return bool(np.all(np.linalg.norm(res, axis=1) <= 1e-8 * scale))
+        if np.any(np.linalg.norm(row[:, :n], axis=1) > 1e-9 * np.linalg.norm(row, axis=1)):
+            return False
+        ratio = x[:, n] / row[:, n]
+        if not np.all(np.isfinite(ratio)):
+            return False
+        if group is None:
+            group = np.zeros(len(ratio), dtype=int)
+        starts = np.searchsorted(group, group)
+        return bool(np.all(np.abs(ratio - ratio[starts]) <= 1e-8 * np.abs(ratio[starts])))
 
 
 # --- helpers --------------------------------------------------------------------------------------

@@ -10,6 +10,7 @@ import sympy as sp
 from lagrade.judge.compiled import Compiled
 from lagrade.judge.derivatives import euler_lagrange_values
 from lagrade.judge.evaluate import UnsupportedExpression
+from lagrade.judge.matching import is_for_row
 from lagrade.judge.mutations import Mutant, swap_sin_cos
 from lagrade.judge.problem import build_problem
 from lagrade.judge.rows import _in_span_float, equation_rows
@@ -241,7 +242,9 @@ def _slow_row(problem, student, points):
         rows = equation_rows([Compiled.of(m.expr)], jets, points.env)
         R, Rs = ref.coef.astype(float).copy(), ref.size.astype(float).copy()
         R[:, i, :], Rs[:, i] = rows.coef[:, 0, :], rows.size[:, 0]
-        return _vanishes(*_in_span_float(s.coef[:, 0, :], s.size[:, 0], R, Rs))
+        in_span = _vanishes(*_in_span_float(s.coef[:, 0, :], s.size[:, 0], R, Rs))
+        # and the student's equation is the mutated row itself (issue 12: the row named)
+        return in_span and is_for_row(s.coef[:, 0, :].astype(float), R, i, points.group)
 
     found = _one_at_a_time(problem.catalogue.row_mutants, test)
     return None if found is None else found[1]
