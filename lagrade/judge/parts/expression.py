@@ -57,6 +57,74 @@ def strip_unit(text: str, unit: str) -> str:
     return re.sub(rf"\s*(?:\[\s*)?{pattern}(?:\s*\])?\s*$", "", text.strip())
 
 
+#: Units a value may carry: (scale to SI, dimensions as exponents of (m, kg, s)).
+_UNITS = {
+    "m": (1.0, (1, 0, 0)), "km": (1e3, (1, 0, 0)), "cm": (1e-2, (1, 0, 0)),
+    "mm": (1e-3, (1, 0, 0)), "s": (1.0, (0, 0, 1)), "ms": (1e-3, (0, 0, 1)),
+    "min": (60.0, (0, 0, 1)), "kg": (1.0, (0, 1, 0)), "N": (1.0, (1, 1, -2)),
+    "J": (1.0, (2, 1, -2)), "W": (1.0, (2, 1, -3)), "Hz": (1.0, (0, 0, -1)),
+    "rad": (1.0, (0, 0, 0)), "1": (1.0, (0, 0, 0)),
+}  # fmt: skip
+_UNIT_FACTOR = re.compile(
+    r"\s*([/*·]?)\s*([A-Za-z]+|1)\s*(?:(?:\^|\*\*)\s*\(?\s*([-+]?\d+)\s*\)?)?"
+)
+_NUMBER_AND_UNIT = re.compile(
+    r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(?:\[\s*(.+?)\s*\]|([A-Za-z].*?))\s*$"
+)
+
+
+def read_unit(text: str) -> tuple[float, tuple[int, ...]] | None:
+    """'m/s^2' → (1.0, (1, 0, −2)): a product of known units with integer powers, '/' dividing
+    by the next factor. None when the text is not such a unit (it is never evaluated)."""
+    scale, dims, pos, text = 1.0, [0, 0, 0], 0, text.strip()
+    while pos < len(text):
+        match = _UNIT_FACTOR.match(text, pos)
+        if match is None or match.end() == pos or match[2] not in _UNITS:
+            return None
+        power = int(match[3] or 1) * (-1 if match[1] == "/" else 1)
+        unit_scale, unit_dims = _UNITS[match[2]]
+        scale *= unit_scale**power
+        dims = [d + power * u for d, u in zip(dims, unit_dims, strict=True)]
+        pos = match.end()
+    return (scale, tuple(dims)) if text else None
+
+
+def _with_unit(problem: Problem, answer: Any) -> tuple[str, str] | None:
+    """(the number, its unit) of an answer written `5.39 m/s^2` for a quantity with a unit."""
+    if not problem.unit or not isinstance(answer, str):
+        return None
+    match = _NUMBER_AND_UNIT.match(answer)
+    unit = (match[2] or match[3] or "").strip() if match else ""
+    read, own = read_unit(unit), read_unit(problem.unit)
+    if read is None or own is None:
+        return None
+    names = re.findall(r"[A-Za-z]+", unit)
+    if all(n in problem.by_name for n in names) and read[1] != own[1]:
+        return None  # `2 m` for a mass is twice the parameter m, not two metres
+    return match[1], unit
+
+
+def _number_in_unit(problem: Problem, number: str, unit: str) -> str | Verdict:
+    """The number in the quantity's own unit, or the verdict of a wrong unit."""
+    theirs, mine = read_unit(problem.unit), read_unit(unit)
+    if theirs is None or mine is None:
+        return number
+    if mine[1] != theirs[1]:
+        return Verdict(
+            "expression",
+            "incorrect",
+            0.0,
+            (
+                f"Your value is given in {unit}, which is not a unit of this quantity: "
+                f"it is measured in {problem.unit}.",
+            ),
+            f"{number} {unit}",
+            "units",
+            mistakes=("wrong_unit",),
+        )
+    return repr(float(number) * mine[0] / theirs[0])
+
+
 def _handout_values(problem: Problem, given: Mapping | None) -> dict[sp.Symbol, sp.Expr] | None:
     """The parameter values the student was given (exact numbers), or None without a handout."""
     values = (given or {}).get("values")
@@ -102,8 +170,9 @@ def _closed_form_and_value(problem: Problem, answer: Any, given: Mapping | None)
         return None
     left, right = (side.strip() for side in answer.split("="))
     try:
-        one = read_single(problem, strip_unit(left, problem.unit), "expression", "x")
-        two = read_single(problem, strip_unit(right, problem.unit), "expression", "x")
+        one, two = (
+            read_single(problem, _bare(problem, side), "expression", "x") for side in (left, right)
+        )
     except (ParseError, RequestError):
         return None
     if not one.expr.free_symbols and two.expr.free_symbols:  # `1.238 = acos(…)`
@@ -126,7 +195,19 @@ def _closed_form_and_value(problem: Problem, answer: Any, given: Mapping | None)
     )
 
 
+def _bare(problem: Problem, side: str) -> str:
+    """One side of `closed form = value` without the value's unit (any unit: a wrong one is
+    judged, and named, by `_check_one`)."""
+    with_unit = _with_unit(problem, side)
+    return with_unit[0] if with_unit is not None else strip_unit(side, problem.unit)
+
+
 def _check_one(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
+    with_unit = _with_unit(problem, answer)
+    if with_unit is not None:
+        answer = _number_in_unit(problem, *with_unit)
+        if isinstance(answer, Verdict):
+            return answer
     if isinstance(answer, str) and problem.unit:
         answer = strip_unit(answer, problem.unit)
     got = read_single(problem, answer, "expression", "x")
