@@ -169,19 +169,16 @@ class Problem:
         """The mistakes this question invites, derived from its reference."""
         return Catalogue(self)
 
-    # --- sample points, cached per part and per set of parameters left free --------------------
-    def points(self, part: str, free: frozenset[sp.Symbol] | None = None) -> Points:
-        """Sample points for `part`. Parameters outside `free` keep a numeric variant's values
-        (the symbolic parts leave every parameter free: see `parts.common.free_parameters`)."""
-        if free is None or not self.values:
-            free = frozenset(self.domains)
-        else:
-            free = frozenset(free) & frozenset(self.domains)
-        key = (part, free)
+    # --- sample points, cached per part ---------------------------------------------------------
+    def points(self, part: str) -> Points:
+        """Sample points for `part`, every parameter drawn over its domain: a symbolic answer is
+        judged for every value of the parameters, so one it leaves out is never taken for its
+        handout value (an L without m is wrong even when m = 1 kg)."""
         cache = self.__dict__.setdefault("_points", {})
-        if key not in cache:
-            cache[key] = self.space.draw(seed_for(self.key, part), free, self._validity(part))
-        return cache[key]
+        if part not in cache:
+            free = frozenset(self.domains)
+            cache[part] = self.space.draw(seed_for(self.key, part), free, self._validity(part))
+        return cache[part]
 
     def _validity(self, part: str):
         if self.kind == "expression" or part == "expression":

@@ -33,6 +33,7 @@ __all__ = [
     "parse_equation",
     "parse_equations",
     "parse_expression",
+    "split_equations",
 ]
 
 
@@ -106,6 +107,12 @@ def parse_answer(text: str, vocabulary: Vocabulary, *, latex: bool | None = None
 
 
 _SEPARATORS = re.compile(r"\n|(?<!\\);|\\\\")
+
+
+def split_equations(text: str) -> list[str]:
+    """The pieces `parse_equations` reads one equation from (lines, ';' or LaTeX '\\\\'), so
+    that a caller can read each on its own and keep the ones that parse."""
+    return [piece for piece in _SEPARATORS.split(text) if piece.strip()]
 
 
 def parse_equations(

@@ -23,17 +23,6 @@ from lagrade.judge.sampling import Points
 from lagrade.judge.situation import angles, rounded, situation, symbol_text
 from lagrade.judge.verdict import Verdict
 
-
-def free_parameters(problem: Problem, *exprs: sp.Expr) -> frozenset[sp.Symbol]:
-    """The parameters sampled over their domains for a symbolic answer: every one of them,
-    whatever the handout's values. An omitted parameter is never taken for a number: pinning
-    m at a handout value of 1 kg (or whatever number the answer happens to contain: the −1 of
-    a difference, the 2 of a square, the 0.5 of ½) accepted L and EOM written without it.
-    `exprs` are kept for the callers; they no longer change the answer."""
-    del exprs
-    return frozenset(problem.domains)
-
-
 _DECIMAL = re.compile(r"(?<![\w.])\d*\.\d+(?:[eE][-+]?\d+)?")
 
 

@@ -18,7 +18,6 @@ from lagrade.judge.derivatives import time_derivative_on_shell
 from lagrade.judge.evaluate import FLOAT, UnsupportedExpression
 from lagrade.judge.parts.common import (
     as_sentence,
-    free_parameters,
     method_name,
     where_text,
     witness_point,
@@ -86,8 +85,7 @@ def check_conserved(problem: Problem, answer: Any, given: Mapping | None) -> Ver
     reads = lines.reads
     echoes = lines.echoes or ["none"]
     key = problem.system.conserved_quantities
-    free = free_parameters(problem, *(r.expr for r in reads))
-    points = problem.points("conserved", free)
+    points = problem.points("conserved")
     key_rank = problem.cached(
         "key_rank",
         points,

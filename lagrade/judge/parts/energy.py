@@ -23,7 +23,6 @@ from lagrade.judge.equivalence import (
 from lagrade.judge.evaluate import UnsupportedExpression
 from lagrade.judge.parts.common import (
     as_sentence,
-    free_parameters,
     handout_numbers,
     incorrect,
     method_name,
@@ -45,7 +44,7 @@ def judge_lagrangian(
     """(status, score, feedback, outcome, witness, mistakes) for a Lagrangian answer; the
     witness is a point where the motion differs, when it does."""
     answer = Compiled.of(expr)
-    points = problem.points("lagrangian", free_parameters(problem, expr))
+    points = problem.points("lagrangian")
     if has_acceleration(problem, answer):  # before E(L), which needs an L(q, q̇, t)
         return (
             "incorrect",
@@ -183,7 +182,7 @@ def check_lagrangian(problem: Problem, answer: Any, given: Mapping | None) -> Ve
 def check_kinetic(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
     got = read_single(problem, answer, "T", "T")
     answer_c = Compiled.of(got.expr)
-    points = problem.points("T", free_parameters(problem, got.expr))
+    points = problem.points("T")
     out = expressions_equal(answer_c, problem.kinetic, points)
     if out.equal:
         return Verdict("T", "correct", 1.0, (), got.echo, method_name(out))
@@ -204,7 +203,7 @@ def check_potential(problem: Problem, answer: Any, given: Mapping | None) -> Ver
     got = read_single(problem, answer, "V", "V")
     answer_c = Compiled.of(got.expr)
     reference = problem.potential
-    points = problem.points("V", free_parameters(problem, got.expr))
+    points = problem.points("V")
     out = differ_by_constant(answer_c, reference, points)
     if out.equal:
         notes = ()

@@ -14,7 +14,6 @@ from lagrade.judge.decision import decide
 from lagrade.judge.evaluate import FLOAT, UnsupportedExpression
 from lagrade.judge.parts.common import (
     acceleration_text,
-    free_parameters,
     method_name,
     where_text,
     witness_point,
@@ -53,7 +52,7 @@ def check_eom(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
     compiled = [Compiled.of(e) for e in exprs]
     jets = problem.jets
     n = len(jets)
-    points = problem.points("eom", free_parameters(problem, *exprs))
+    points = problem.points("eom")
     ref_rows = problem.cached(
         "rows", points, lambda: equation_rows(problem.euler_lagrange, jets, points.env)
     )

@@ -22,7 +22,6 @@ from lagrade.judge.compiled import Compiled
 from lagrade.judge.decision import Outcome
 from lagrade.judge.equivalence import expressions_equal
 from lagrade.judge.parts.common import (
-    free_parameters,
     incorrect,
     method_name,
     values_text,
@@ -222,7 +221,7 @@ def _check_one(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
     if decided:
         return Verdict("expression", "correct", 1.0, (), got.echo, "exact_then_adaptive")
     ans = Compiled.of(got.expr)
-    points = problem.points("expression", free_parameters(problem, got.expr))
+    points = problem.points("expression")
     out = expressions_equal(ans, ref, points)
     if decided is not None:
         out = Outcome(False, "exact_then_adaptive", out.worst, out.where)

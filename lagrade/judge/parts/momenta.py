@@ -14,7 +14,6 @@ from lagrade.judge.equivalence import expressions_equal, lagrangians_match, valu
 from lagrade.judge.evaluate import UnsupportedExpression
 from lagrade.judge.parts.common import (
     as_sentence,
-    free_parameters,
     method_name,
     reference_el,
     where_text,
@@ -92,7 +91,7 @@ def check_momenta(problem: Problem, answer: Any, given: Mapping | None) -> Verdi
             continue
         expr = by_coordinate[k].expr
         ans = Compiled.of(expr)
-        points = problem.points("momenta", free_parameters(problem, expr))
+        points = problem.points("momenta")
         out = expressions_equal(ans, problem.momenta[k], points)
         outcomes.append(out)
         if out.equal:
@@ -158,7 +157,7 @@ def _own_momentum_matches(problem: Problem, own: sp.Expr, ans: Compiled, k: int,
 def _own_is_same_gauge(problem: Problem, own: sp.Expr) -> bool:
     """The student's L is T − V plus a constant or a total derivative (factor exactly 1), so its
     momenta are right for it."""
-    points = problem.points("lagrangian", free_parameters(problem, own))
+    points = problem.points("lagrangian")
     match = lagrangians_match(Compiled.of(own), reference_el(problem, points), problem.jets, points)
     c = match.factor
     return match.outcome.equal and c is not None and abs(c - 1) <= 1e-9

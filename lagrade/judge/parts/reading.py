@@ -14,6 +14,7 @@ import sympy as sp
 from lagrade.errors import ParseError, RequestError
 from lagrade.judge.compiled import Compiled
 from lagrade.judge.problem import Problem, parser
+from lagrade.notation.parse import split_equations
 from lagrade.notation.printer import plain
 
 
@@ -81,7 +82,7 @@ def read_lines(items: Sequence[Any], reader: Callable[[Any], Read | list[Read]])
     not parse set aside as Unreadable so that the others are still judged. When no line reads
     at all, the parser's error is raised (the part is `invalid`, as for a one-line answer)."""
     entries: list[Read | Unreadable] = []
-    for item in items:
+    for item in _pieces(items):
         try:
             got = reader(item)
         except ParseError as error:
@@ -95,6 +96,16 @@ def read_lines(items: Sequence[Any], reader: Callable[[Any], Read | list[Read]])
             raise bad[0].error
         raise ParseError("No line of this answer can be read.\n" + "\n".join(lines.feedback()))
     return lines
+
+
+def _pieces(items: Sequence[Any]) -> list[Any]:
+    """Each item split where the parser splits equations (newline, ';', LaTeX '\\\\'), so that
+    one unreadable equation in `a = 0; b +* 2 = 0` does not hide the one that reads."""
+    return [
+        piece
+        for item in items
+        for piece in (split_equations(item) if isinstance(item, str) else [item])
+    ]
 
 
 def line_label(text: str) -> str | None:
