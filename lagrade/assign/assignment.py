@@ -47,7 +47,16 @@ PARTS: tuple[str, ...] = (
 #: The numeric follow-up part; it names one of the scene's declared `Quantity`s.
 EXPRESSION = "expression"
 
-_TOP_KEYS = {"title", "course", "due", "instructions", "points", "problems", "rubric"}
+_TOP_KEYS = {
+    "title",
+    "course",
+    "due",
+    "instructions",
+    "points",
+    "problems",
+    "rubric",
+    "answer_page",
+}
 _PROBLEM_KEYS = {"scene", "title", "parts", "points", "variants", "names", "options"}
 _PART_KEYS = {"part", "quantity", "points"}
 MAX_VARIANTS = 10_000

@@ -30,6 +30,7 @@ EPILOG = """examples:
   lagrade generate examples/assignment.toml --roster examples/roster.csv --seed 2025 --out ps3
   lagrade grade ps3/manifest.json submissions/ --jobs 2
   lagrade export prairielearn ps3/manifest.json --out pl-questions
+  lagrade serve ps3/manifest.json --submissions ps3-sheets --links ps3-links.csv
   lagrade demo
 
 exit status: 0 success; 1 done, but an answer was not correct or students are missing or
@@ -48,9 +49,9 @@ def build_parser() -> argparse.ArgumentParser:
     commands = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
     # Each command module registers itself; imported here so that `import lagrade.cli.main`
     # stays cheap (the modules load what their command needs).
-    from lagrade.cli import bank, check, demo, export, generate, grade, parse
+    from lagrade.cli import bank, check, demo, export, generate, grade, parse, serve
 
-    for command in (bank, parse, generate, check, grade, export, demo):
+    for command in (bank, parse, generate, check, grade, export, serve, demo):
         command.add_parser(commands)
     return parser
 

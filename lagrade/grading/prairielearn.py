@@ -31,6 +31,7 @@ from lagrade.assign.variants import VariantChoice, build_pool
 from lagrade.assign.views import MULTILINE, problem_view
 from lagrade.errors import AssignmentError
 from lagrade.grading.batch import grade_part
+from lagrade.grading.prompts import escape_html, prompt_html
 from lagrade.grading.rubric import Rubric, rubric_from_table
 
 #: Variants in a problem's pool when the assignment does not say (`variants = N`).
@@ -144,8 +145,8 @@ def generate(data: MutableMapping[str, Any], assignment: str, index: int, seeds:
     params = data.setdefault("params", {})
     params["seed"] = seed
     params["statement_html"] = env.get_template("prairielearn_problem.html.j2").render(p=view)
-    params["prompts"] = {part["key"]: _prompt_html(part) for part in view["parts"]}
-    params["key_html"] = "<pre>" + _escape(view["solution"]["sheet"]) + "</pre>"
+    params["prompts"] = {part["key"]: prompt_html(part) for part in view["parts"]}
+    params["key_html"] = "<pre>" + escape_html(view["solution"]["sheet"]) + "</pre>"
     correct = data.setdefault("correct_answers", {})
     for part in problem.parts:  # what pl-string-input shows as the answer; grading is ours
         correct[part.key] = ""
@@ -219,20 +220,6 @@ def _problem(assignment: str, index: int) -> tuple[Problem, Rubric]:
         found = (parsed.problems[index - 1], rubric_from_table(table.get("rubric")))
         _problems[(assignment, index)] = found
     return found
-
-
-def _prompt_html(part: Mapping[str, Any]) -> str:
-    """A part's prompt and the names its answer may use, as HTML (escaped here)."""
-    prompt = part["prompt"]
-    lines = [str(getattr(prompt, "html", None) or _escape(prompt))]
-    for group in part["symbols"]:
-        names = ", ".join(f"<code>{_escape(n)}</code>" for n in group["names"])
-        lines.append(f'<span class="small">{_escape(group["what"]).capitalize()}: {names}.</span>')
-    return "<br>".join(lines)
-
-
-def _escape(text: str) -> str:
-    return text.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;")
 
 
 def info_json(folder: Path) -> dict[str, Any]:

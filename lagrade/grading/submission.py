@@ -114,7 +114,7 @@ def read_sheet(
     """Read and validate an answer sheet, never raising over its content. `keys[k]` are the
     part keys of problem k; a key the problem does not have is reported as a warning, with
     the closest valid key (a misspelled `lagrangain` must not silently read as "not answered")."""
-    data, reason = _read_regular_file(path)
+    data, reason = read_regular_file(path)
     if reason:
         return _bad(path, "", reason)
     digest = hashlib.sha256(data).hexdigest()
@@ -193,7 +193,7 @@ def _is_regular(path: Path) -> bool:
         return False
 
 
-def _read_regular_file(path: Path) -> tuple[bytes, str]:
+def read_regular_file(path: Path) -> tuple[bytes, str]:
     """The bytes of `path` when it is a regular file of at most MAX_SHEET_BYTES, else why not.
     A symbolic link is refused, not followed (it could point at any file the grader can read),
     and a fifo or device is never opened for reading (it could block forever)."""

@@ -1,0 +1,117 @@
+"""`lagrade serve MANIFEST --submissions DIR`: each student's answer page at a private link
+(`lagrade.grading.answer_page`), saving the answer sheets `lagrade grade` reads."""
+
+from __future__ import annotations
+
+import argparse
+import socket
+import sys
+from pathlib import Path
+
+from lagrade.errors import OutputError, RequestError
+
+
+def run(args: argparse.Namespace) -> int:
+    import uvicorn
+
+    import lagrade.grading.atomic as atomic
+    from lagrade.grading.answer_page.app import build_classroom, make_app
+    from lagrade.grading.answer_page.tokens import SECRET_NAME, links_csv, load_or_create_secret
+    from lagrade.grading.manifest import load_manifest
+
+    if not 0 <= args.port <= 65535:
+        raise RequestError(f"--port {args.port} is not a port number (0 to 65535)")
+    if args.jobs < 1:
+        raise RequestError("--jobs must be at least 1")
+    manifest = load_manifest(args.manifest)
+    secret_file = args.secret or args.manifest.parent / SECRET_NAME
+    secret = load_or_create_secret(secret_file)
+    args.submissions.mkdir(parents=True, exist_ok=True)
+    room = build_classroom(manifest, args.manifest, args.submissions, secret, jobs=args.jobs)
+    listener = _listen(args.host, args.port)
+    host, port = listener.getsockname()[:2]
+    base_url = (args.base_url or f"http://{_url_host(host)}:{port}").rstrip("/")
+    if args.links:
+        atomic.write_text(args.links, links_csv(manifest["students"], secret, base_url))
+    students = len(manifest["students"])
+    print(f"Answer pages for {students} students of {room.assignment.title!r}")
+    print(f"  listening on http://{_url_host(host)}:{port}/  (links use {base_url}/s/<token>)")
+    print(f"  sheets are saved to {args.submissions}/<id>.toml (previous versions in .previous/)")
+    if args.links:
+        print(f"  each student's link: {args.links} (id,name,url)")
+    else:
+        print("  no --links file: give --links LINKS.csv to write every student's link")
+    print(f"  secret: {secret_file} (same secret, same links)")
+    print("Stop with Ctrl-C.", flush=True)
+    config = uvicorn.Config(
+        make_app(room),
+        log_level="warning",
+        access_log=False,
+        lifespan="on",
+        timeout_graceful_shutdown=5,
+    )
+    server = uvicorn.Server(config)
+    try:
+        server.run(sockets=[listener])
+    finally:
+        room.close()
+        listener.close()
+        print("Stopped: every save was written before the server stopped.", file=sys.stderr)
+    return 0
+
+
+def _listen(host: str, port: int) -> socket.socket:
+    """The listening socket, bound here so that a port in use is one clear line, not a log."""
+    family = socket.AF_INET6 if ":" in host else socket.AF_INET
+    sock = socket.socket(family, socket.SOCK_STREAM)
+    sock.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
+    try:
+        sock.bind((host, port))
+    except OSError as error:
+        sock.close()
+        raise OutputError(
+            f"cannot listen on {host}:{port}: {error.strerror or error}"
+            + (" (another server uses it; choose another --port)" if port else "")
+        ) from None
+    sock.listen(256)
+    return sock
+
+
+def _url_host(host: str) -> str:
+    return f"[{host}]" if ":" in host else host
+
+
+def add_parser(commands: argparse._SubParsersAction) -> None:
+    """Register this command with the `lagrade` parser."""
+    serve = commands.add_parser(
+        "serve",
+        help="serve each student an answer page at a private link",
+        description="Serve each roster student a private page with their own handout, one "
+        "field per part with a live 'read as' preview, and a save button that writes the "
+        "answer sheet `lagrade grade` reads (the previous version kept in .previous/). A "
+        "wrong or missing token gets 404. Feedback on save and its attempts are set in the "
+        "assignment's [answer_page] table.",
+        epilog="example: lagrade serve ps3/manifest.json --submissions ps3-submissions "
+        "--links ps3-links.csv --port 8000",
+    )
+    serve.add_argument("manifest", type=Path, metavar="MANIFEST", help="the manifest.json")
+    serve.add_argument(
+        "--submissions", type=Path, required=True, help="folder the answer sheets are saved in"
+    )
+    serve.add_argument("--host", default="127.0.0.1", help="address to listen on (127.0.0.1)")
+    serve.add_argument("--port", type=int, default=8000, help="port (8000; 0 picks a free one)")
+    serve.add_argument("--links", type=Path, help="write every student's link here (CSV)")
+    serve.add_argument(
+        "--base-url",
+        help="the address students reach (behind a proxy), e.g. https://ps.example.edu",
+    )
+    serve.add_argument(
+        "--secret",
+        type=Path,
+        help="file holding the links' secret (default: .lagrade-serve-secret beside the "
+        "manifest; made when absent)",
+    )
+    serve.add_argument(
+        "--jobs", type=int, default=2, help="worker processes for previews and grading (2)"
+    )
+    serve.set_defaults(run=run)

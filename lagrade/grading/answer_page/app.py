@@ -1,0 +1,394 @@
+"""The answer page as a web application (Starlette): one private page per student.
+
+    GET  /s/<token>            the student's handout, one field per part, preview and save
+    POST /s/<token>/preview    {"problem": 1, "key": "eom", "text": "…"} → how it is read
+    POST /s/<token>/save       {"answers": {"1": {"eom": "…"}}} → the sheet written (and,
+                               when the assignment allows, graded with feedback)
+    GET  /static/page.js, /static/page.css   the page's own script and style (no CDN)
+
+Any other path, and any token that is not a roster student's, is 404 with no data. Judging
+runs in worker processes (the checker's time limit is a signal, which only a main thread can
+take); writing a student's sheet holds that student's lock, so two saves never interleave."""
+
+from __future__ import annotations
+
+import asyncio
+import contextlib
+import functools
+import multiprocessing
+import time
+from collections.abc import Mapping
+from concurrent.futures import ProcessPoolExecutor
+from concurrent.futures.process import BrokenProcessPool
+from dataclasses import dataclass, field
+from importlib import resources
+from pathlib import Path
+from typing import Any
+
+from starlette.applications import Starlette
+from starlette.requests import Request
+from starlette.responses import HTMLResponse, JSONResponse, PlainTextResponse, Response
+from starlette.routing import Route
+
+import lagrade.grading.atomic as atomic
+import lagrade.untrusted as untrusted
+from lagrade.assign.assignment import Assignment, load_assignment
+from lagrade.assign.templating import environment
+from lagrade.assign.variants import VariantChoice
+from lagrade.assign.views import MULTILINE, problem_view
+from lagrade.errors import LagradeError, UnreadableInput
+from lagrade.grading.answer_page import preview as preview_module
+from lagrade.grading.answer_page.settings import PageSettings, load_settings
+from lagrade.grading.answer_page.sheets import (
+    MAX_ANSWER_CHARS,
+    save_sheet,
+    saved_answers,
+    sheet_text,
+)
+from lagrade.grading.answer_page.tokens import token_table
+from lagrade.grading.batch import grade_student
+from lagrade.grading.prompts import prompt_html
+from lagrade.grading.rubric import Rubric, load_rubric
+
+#: The largest request body accepted (every answer of a sheet together).
+MAX_BODY_BYTES = 512 * 1024
+#: Seconds one part may take when a save is graded.
+SAVE_PART_TIME_LIMIT = 10.0
+ATTEMPTS = ".attempts"
+_HEADERS = {
+    "Cache-Control": "no-store",
+    "X-Content-Type-Options": "nosniff",
+    "Referrer-Policy": "no-referrer",
+    "X-Frame-Options": "DENY",
+    "Content-Security-Policy": (
+        "default-src 'none'; script-src 'self'; style-src 'self' 'unsafe-inline'; "
+        "img-src 'self' data:; connect-src 'self'; form-action 'none'; frame-ancestors 'none'"
+    ),
+}
+
+
+@dataclass
+class ClassRoom:
+    """Everything the server knows: the manifest, where sheets go, who each token is."""
+
+    manifest: Mapping[str, Any]
+    manifest_dir: Path
+    submissions: Path
+    tokens: dict[str, str]  # token → student id
+    assignment: Assignment
+    settings: PageSettings
+    rubric: Rubric
+    jobs: int = 2
+    students: dict[str, Mapping[str, Any]] = field(default_factory=dict)
+    _pool: ProcessPoolExecutor | None = None
+    _locks: dict[str, asyncio.Lock] = field(default_factory=dict)
+    _pages: dict[str, list[dict[str, Any]]] = field(default_factory=dict)
+
+    def __post_init__(self) -> None:
+        self.students = {s["id"]: s for s in self.manifest["students"]}
+
+    # --- workers --------------------------------------------------------------------------
+    def pool(self) -> ProcessPoolExecutor:
+        if self._pool is None:
+            # forkserver: the workers start from a clean process, not a copy of the event loop
+            context = multiprocessing.get_context("forkserver")
+            self._pool = ProcessPoolExecutor(self.jobs, mp_context=context)
+        return self._pool
+
+    async def in_worker(self, function, *args) -> Any:
+        """Run `function(*args)` in a worker process; a pool that lost a worker (killed by the
+        system) is replaced once and the call repeated."""
+        loop = asyncio.get_running_loop()
+        for attempt in (1, 2):
+            try:
+                return await loop.run_in_executor(self.pool(), function, *args)
+            except BrokenProcessPool:
+                broken, self._pool = self._pool, None
+                if broken is not None:
+                    broken.shutdown(wait=False, cancel_futures=True)
+                if attempt == 2:
+                    raise
+        raise AssertionError("unreachable")
+
+    def close(self) -> None:
+        if self._pool is not None:
+            self._pool.shutdown(wait=True, cancel_futures=True)
+            self._pool = None
+
+    def lock(self, student_id: str) -> asyncio.Lock:
+        return self._locks.setdefault(student_id, asyncio.Lock())
+
+    # --- one student's problems -----------------------------------------------------------
+    def problems_of(self, student_id: str) -> list[dict[str, Any]]:
+        """The views of a student's problems (statement, figure, parameters, parts), made once."""
+        if student_id not in self._pages:
+            student = self.students[student_id]
+            views = []
+            for problem, entry in zip(self.assignment.problems, student["problems"], strict=True):
+                choice = VariantChoice(
+                    int(entry["seed"]), entry["names"], entry["options"], entry["values"]
+                )
+                view = problem_view(problem, choice, f"p{problem.index}")
+                for part, asked in zip(view["parts"], problem.parts, strict=True):
+                    part["prompt_html"] = prompt_html(part)
+                    part["multiline"] = asked.part in MULTILINE
+                views.append(view)
+            self._pages[student_id] = views
+        return self._pages[student_id]
+
+
+def build_classroom(
+    manifest: Mapping[str, Any],
+    manifest_path: Path,
+    submissions: Path,
+    secret: bytes,
+    jobs: int = 2,
+) -> ClassRoom:
+    """The ClassRoom of a loaded manifest; the assignment file is the one `generate` copied
+    beside the manifest."""
+    manifest_dir = Path(manifest_path).parent
+    assignment_file = manifest_dir / manifest["assignment"]["file"]
+    ids = [s["id"] for s in manifest["students"]]
+    return ClassRoom(
+        manifest=manifest,
+        manifest_dir=manifest_dir,
+        submissions=Path(submissions),
+        tokens=token_table(secret, ids),
+        assignment=load_assignment(assignment_file),
+        settings=load_settings(assignment_file),
+        rubric=load_rubric(assignment_file),
+        jobs=jobs,
+    )
+
+
+def _not_found() -> Response:
+    return PlainTextResponse("Not found.", status_code=404, headers=_HEADERS)
+
+
+def _json(data: Any, status: int = 200) -> Response:
+    return JSONResponse(data, status_code=status, headers=_HEADERS)
+
+
+def _student(room: ClassRoom, request: Request) -> str | None:
+    return room.tokens.get(request.path_params.get("token", ""))
+
+
+async def _body(request: Request) -> Any:
+    """The JSON body, bounded and read by the project's untrusted-input reader."""
+    data = b""
+    async for chunk in request.stream():
+        data += chunk
+        if len(data) > MAX_BODY_BYTES:
+            raise UnreadableInput(f"the request is larger than {MAX_BODY_BYTES // 1024} KiB")
+    return untrusted.load_json(untrusted.decode(data, "the request"), "the request")
+
+
+def make_app(room: ClassRoom) -> Starlette:
+    """The web application serving `room`."""
+    env = environment()
+    page = env.get_template("answer_page.html.j2")
+
+    async def student_page(request: Request) -> Response:
+        student_id = _student(room, request)
+        if student_id is None:
+            return _not_found()
+        loop = asyncio.get_running_loop()
+        views = await loop.run_in_executor(None, room.problems_of, student_id)
+        answers, warnings = saved_answers(room.submissions, room.manifest, student_id)
+        html = page.render(
+            base=f"/s/{request.path_params['token']}",
+            assignment=room.assignment,
+            student=room.students[student_id],
+            problems=views,
+            answers=answers,
+            warnings=warnings,
+            settings=room.settings,
+            attempts_used=_attempts_used(room, student_id),
+            max_chars=MAX_ANSWER_CHARS,
+        )
+        return HTMLResponse(html, headers=_HEADERS)
+
+    async def preview(request: Request) -> Response:
+        student_id = _student(room, request)
+        if student_id is None:
+            return _not_found()
+        try:
+            body = await _body(request)
+            entry, part, text = _preview_request(room, student_id, body)
+        except (UnreadableInput, ValueError) as error:
+            return _json({"status": "error", "message": str(error)}, 400)
+        result = await room.in_worker(preview_module.preview, entry, part, text)
+        return _json(result)
+
+    async def save(request: Request) -> Response:
+        student_id = _student(room, request)
+        if student_id is None:
+            return _not_found()
+        try:
+            body = await _body(request)
+            answers = _answers(room, body)
+        except (UnreadableInput, ValueError) as error:
+            return _json({"status": "error", "message": str(error)}, 400)
+        student = room.students[student_id]
+        text = sheet_text(room.manifest, student, answers)
+        async with room.lock(student_id):
+            loop = asyncio.get_running_loop()
+            try:
+                path = await loop.run_in_executor(
+                    None, save_sheet, room.submissions, student_id, text
+                )
+            except LagradeError as error:  # a full disk, a read-only folder
+                return _json({"status": "error", "message": f"Not saved: {error}"}, 503)
+            reply: dict[str, Any] = {
+                "status": "saved",
+                "file": path.name,
+                "saved_at": time.strftime("%H:%M:%S"),
+            }
+            if room.settings.feedback:
+                reply.update(await _graded(room, student_id, path))
+        return _json(reply)
+
+    async def static(request: Request) -> Response:
+        name = request.path_params["name"]
+        if name not in _STATIC:
+            return _not_found()
+        media = _STATIC[name]
+        return Response(_static_text(name), media_type=media, headers=_HEADERS)
+
+    async def home(request: Request) -> Response:
+        return PlainTextResponse(
+            "lagrade answer page: open the private link your instructor sent you.",
+            headers=_HEADERS,
+        )
+
+    @contextlib.asynccontextmanager
+    async def lifespan(app):
+        try:
+            yield
+        finally:
+            room.close()
+
+    routes = [
+        Route("/", home),
+        Route("/s/{token}", student_page),
+        Route("/s/{token}/preview", preview, methods=["POST"]),
+        Route("/s/{token}/save", save, methods=["POST"]),
+        Route("/static/{name}", static),
+    ]
+    app = Starlette(routes=routes, lifespan=lifespan)
+    app.add_exception_handler(404, lambda request, exc: _not_found())
+    app.add_exception_handler(405, lambda request, exc: _not_found())
+    return app
+
+
+_STATIC = {"page.js": "text/javascript", "page.css": "text/css"}
+
+
+@functools.cache
+def _static_text(name: str) -> str:
+    return resources.files("lagrade.grading.answer_page").joinpath(name).read_text("utf-8")
+
+
+def _problem_index(room: ClassRoom, index: Any) -> int:
+    """A problem number from a request (1, or "1" as a JSON object key), checked."""
+    if isinstance(index, str) and index.isdigit() and len(index) < 6:
+        index = int(index)
+    if isinstance(index, int) and not isinstance(index, bool):
+        if any(int(p["index"]) == index for p in room.manifest["problems"]):
+            return index
+    raise ValueError("no such problem")
+
+
+def _part_of(room: ClassRoom, index: Any, key: Any) -> tuple[int, Mapping[str, Any]]:
+    number = _problem_index(room, index)
+    problem = next(p for p in room.manifest["problems"] if int(p["index"]) == number)
+    for part in problem["parts"]:
+        if part["key"] == key:
+            return number, part
+    raise ValueError(f"problem {number} has no part {untrusted.clip(str(key), 40)!r}")
+
+
+def _text(value: Any) -> str:
+    if not isinstance(value, str):
+        raise ValueError("an answer must be text")
+    if len(value) > MAX_ANSWER_CHARS:
+        raise ValueError(f"an answer may be at most {MAX_ANSWER_CHARS:,} characters")
+    return value
+
+
+def _preview_request(room: ClassRoom, student_id: str, body: Any) -> tuple[dict, dict, str]:
+    if not isinstance(body, dict):
+        raise ValueError("the request must be a JSON object")
+    index, part = _part_of(room, body.get("problem"), body.get("key"))
+    text = _text(body.get("text", ""))
+    entry = room.students[student_id]["problems"][index - 1]
+    return dict(entry), dict(part), text
+
+
+def _answers(room: ClassRoom, body: Any) -> dict[int, dict[str, str]]:
+    """The answers of a save request, every problem and key checked against the manifest."""
+    if not isinstance(body, dict) or not isinstance(body.get("answers"), dict):
+        raise ValueError('the request must be {"answers": {problem: {part: text}}}')
+    out: dict[int, dict[str, str]] = {}
+    for index, table in body["answers"].items():
+        number = _problem_index(room, index)
+        if not isinstance(table, dict):
+            raise ValueError(f"problem {number}: the answers must be an object")
+        for key, value in table.items():
+            _part_of(room, number, key)
+            out.setdefault(number, {})[key] = _text(value)
+    return out
+
+
+# --- graded saves --------------------------------------------------------------------------
+
+
+def _attempts_path(room: ClassRoom, student_id: str) -> Path:
+    return room.submissions / ATTEMPTS / f"{student_id}.json"
+
+
+def _attempts_used(room: ClassRoom, student_id: str) -> int:
+    try:
+        data = untrusted.load_json(
+            _attempts_path(room, student_id).read_text(encoding="utf-8"), "attempts"
+        )
+    except (OSError, UnreadableInput):
+        return 0
+    used = data.get("used", 0) if isinstance(data, dict) else 0
+    return used if isinstance(used, int) and used >= 0 else 0
+
+
+async def _graded(room: ClassRoom, student_id: str, path: Path) -> dict[str, Any]:
+    """Grade the sheet just saved with `lagrade grade`'s own function, when attempts remain."""
+    used = _attempts_used(room, student_id)
+    limit = room.settings.attempts
+    if limit is not None and used >= limit:
+        return {"feedback": None, "attempts_left": 0}
+    task = {
+        "student": room.students[student_id],
+        "path": str(path),
+        "part_time_limit": SAVE_PART_TIME_LIMIT,
+    }
+    result = await room.in_worker(grade_student, room.manifest, room.rubric, task)
+    used += 1
+    atomic.write_json(_attempts_path(room, student_id), {"used": used})
+    return {
+        "feedback": _feedback(result),
+        "attempts_left": None if limit is None else max(limit - used, 0),
+    }
+
+
+def _feedback(result: Mapping[str, Any]) -> dict[str, Any]:
+    """What the student sees of a graded save: per part, the verdict, points and feedback."""
+    if result.get("status") == "invalid":
+        return {"reason": result.get("reason", ""), "parts": {}}
+    parts = {}
+    for problem in result.get("problems", []):
+        for part in problem.get("parts", []):
+            parts[f"{problem['index']}/{part['key']}"] = {
+                "verdict": part["verdict"],
+                "points": part["points"],
+                "max_points": part["max_points"],
+                "feedback": part["feedback"],
+            }
+    return {"reason": "", "parts": parts}

@@ -1,0 +1,67 @@
+"""How an answer is read, for the page's live preview: the grader's own reading (the same
+checker `lagrade grade` runs, so the preview never disagrees with the grade about what was
+read), shown as MathML, or the parser's message with its caret. Whether the answer is right
+is not shown here: that is the grade's, and only when the assignment allows it.
+
+Runs inside the server's worker processes (the checker's time limit is a signal, which only a
+process's main thread can take)."""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from typing import Any
+
+import sympy as sp
+
+from lagrade.errors import LagradeError, ParseError
+from lagrade.grading.batch import grade_part, question
+from lagrade.grading.rubric import Rubric
+from lagrade.notation.parse import parse_answer
+from lagrade.notation.printer import mathml
+
+#: Seconds one preview may take (a preview is asked at every pause in typing).
+PREVIEW_TIME_LIMIT = 3.0
+_RUBRIC = Rubric()
+
+
+def preview(entry: Mapping[str, Any], part: Mapping[str, Any], text: str) -> dict[str, Any]:
+    """{"status": "empty"|"read"|"unreadable"|"timeout", "lines": [{"plain", "mathml"}],
+    "message": the parser's error (caret included) when unreadable}."""
+    if not text.strip():
+        return {"status": "empty", "lines": [], "message": ""}
+    result = grade_part(entry, part, text, {}, _RUBRIC, PREVIEW_TIME_LIMIT)
+    if result["verdict"] == "timeout":
+        return {"status": "timeout", "lines": [], "message": "Reading this answer took too long."}
+    if result["verdict"] == "invalid":
+        return {"status": "unreadable", "lines": [], "message": "\n".join(result["feedback"])}
+    shown = result["interpreted"]
+    lines = [line for line in (shown if isinstance(shown, list) else [shown]) if line]
+    unread = [f for f in result["feedback"] if "could not be read" in f]
+    return {
+        "status": "read",
+        "lines": [
+            {"plain": str(line), "mathml": _mathml(entry, part, str(line))} for line in lines
+        ],
+        "message": "\n".join(unread),
+    }
+
+
+def _mathml(entry: Mapping[str, Any], part: Mapping[str, Any], line: str) -> str:
+    """The echo of one read line typeset, or "" where it is not a formula (a list of names,
+    a number of degrees of freedom). The echo is the grader's own output in the plain grammar,
+    parsed again by the project's parser, never evaluated."""
+    if part["part"] in ("dof", "cyclic", "coordinates") or not line.strip():
+        return ""
+    spec = {"scene": entry["scene"], "seed": entry["seed"]}
+    if part["part"] == "expression":
+        spec["quantity"] = part["quantity"]
+    try:
+        problem = question(spec)
+        labels = [f"p_{c}" for c in problem.coordinates] + (
+            [part["quantity"]] if part.get("quantity") else []
+        )
+        parsed = parse_answer(line, problem.vocabulary(labels))
+        shown = parsed.lhs if parsed.rhs is None else sp.Eq(parsed.lhs, parsed.rhs, evaluate=False)
+        return str(mathml(shown, problem.coordinates))
+    except (ParseError, LagradeError, ValueError, TypeError):
+        return ""
