@@ -21,9 +21,25 @@ def run(args: argparse.Namespace) -> int:
     print()
     for label, path in where.items():
         print(f"{label + ':':13} {path}")
+    print(_next_steps(where["submissions"].parent))
     # The demo plants a missing and a malformed submission on purpose: success is that every
     # student has a row and nothing else went wrong.
     return 0 if summary.counts["timeout"] + summary.counts["error"] == 0 else 1
+
+
+def _next_steps(folder: Path) -> str:
+    """Where the class could go from here: the three ways into instructors' systems."""
+    manifest = folder / "assignment" / "manifest.json"
+    return "\n".join(
+        [
+            "",
+            "Next, with this class:",
+            f"  answer pages:  lagrade serve {manifest} --submissions {folder}/submissions "
+            f"--links {folder}/links.csv",
+            f"  PrairieLearn:  lagrade export prairielearn {manifest} --out {folder}/pl-questions",
+            f"  Canvas/Moodle: lagrade grade {manifest} {folder}/submissions --export canvas",
+        ]
+    )
 
 
 def add_parser(commands: argparse._SubParsersAction) -> None:

@@ -7,11 +7,14 @@ from __future__ import annotations
 import re
 import shlex
 import shutil
+import signal
+import subprocess
+import sys
 from pathlib import Path
 
 import pytest
 
-from lagrade.cli.main import EXIT_BAD_INPUT, build_parser, main
+from lagrade.cli.main import EXIT_BAD_INPUT, EXIT_INTERRUPTED, build_parser, main
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -29,7 +32,10 @@ PLACEHOLDERS = {
     "REQUESTS.jsonl": "requests.jsonl",
     "RESULTS.jsonl": "results.jsonl",
     "QUESTIONS": "pl-questions",
+    "SHEETS": "sheets",
 }
+#: Runs until stopped: started as a process, stopped with SIGTERM once it listens.
+SERVER = {"serve"}
 #: Runs a whole synthetic class (minutes); `lagrade demo` has its own end-to-end test.
 SLOW = {"demo"}
 #: Generating PDF needs TeX Live, which a test machine may lack (exit 3, environment).
@@ -89,7 +95,8 @@ def workdir(tmp_path_factory) -> Path:
 
 def _ordered() -> list[str]:
     """`generate` before `grade` and `export` (they need its manifest)."""
-    return sorted(EXAMPLES, key=lambda e: (" grade " in f"{e} " or " export " in f"{e} ", e))
+    after = (" grade ", " export ", " serve ")
+    return sorted(EXAMPLES, key=lambda e: (any(a in f"{e} " for a in after), e))
 
 
 @pytest.mark.parametrize("example", _ordered())
@@ -104,8 +111,11 @@ def test_example_is_accepted(example, workdir, monkeypatch, capfd):
         out = workdir / argv[argv.index("--out") + 1]
         shutil.rmtree(out, ignore_errors=True)
     monkeypatch.chdir(workdir)
-    if argv[0] in ("grade", "export") and not (workdir / "ps3" / "manifest.json").exists():
+    if argv[0] in ("grade", "export", "serve") and not (workdir / "ps3" / "manifest.json").exists():
         assert main(shlex.split(_generate_example())[1:] + ["--formats", "md"]) == 0
+    if argv[0] in SERVER:
+        _serve_until_listening(argv, workdir)
+        return
     try:
         status = main(argv)
     except SystemExit as stop:  # argparse refusing the command line
@@ -115,6 +125,34 @@ def test_example_is_accepted(example, workdir, monkeypatch, capfd):
     assert status != EXIT_BAD_INPUT and "Traceback" not in err, err
     if argv[0] == "check" and "--answer" in argv:  # an example answer the parser refuses
         assert ": invalid" not in out, out
+
+
+def _serve_until_listening(argv: list[str], workdir: Path) -> None:
+    """Start the server as an instructor would (a free port instead of the example's), wait
+    until it says where it listens, stop it with SIGTERM: a clean stop, no traceback."""
+    if "--port" in argv:
+        argv[argv.index("--port") + 1] = "0"
+    else:
+        argv += ["--port", "0"]
+    process = subprocess.Popen(
+        [sys.executable, "-c", "from lagrade.cli.main import entry; entry()", *argv],
+        cwd=workdir,
+        stdout=subprocess.PIPE,
+        stderr=subprocess.STDOUT,
+        text=True,
+    )
+    try:
+        lines = []
+        for line in process.stdout:
+            lines.append(line)
+            if "listening on http://" in line:
+                break
+        assert any("listening on http://" in ln for ln in lines), "".join(lines)
+    finally:
+        process.send_signal(signal.SIGTERM)
+        rest = process.communicate(timeout=30)[0]
+    assert process.returncode == EXIT_INTERRUPTED, rest
+    assert "Traceback" not in rest, rest
 
 
 def _generate_example() -> str:

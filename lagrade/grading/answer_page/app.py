@@ -16,6 +16,7 @@ import asyncio
 import contextlib
 import functools
 import multiprocessing
+import threading
 import time
 from collections.abc import Mapping
 from concurrent.futures import ProcessPoolExecutor
@@ -82,7 +83,8 @@ class ClassRoom:
     students: dict[str, Mapping[str, Any]] = field(default_factory=dict)
     _pool: ProcessPoolExecutor | None = None
     _locks: dict[str, asyncio.Lock] = field(default_factory=dict)
-    _pages: dict[str, list[dict[str, Any]]] = field(default_factory=dict)
+    _views: dict[tuple, dict[str, Any]] = field(default_factory=dict)
+    _drawing: threading.Lock = field(default_factory=threading.Lock)
 
     def __post_init__(self) -> None:
         self.students = {s["id"]: s for s in self.manifest["students"]}
@@ -120,21 +122,25 @@ class ClassRoom:
 
     # --- one student's problems -----------------------------------------------------------
     def problems_of(self, student_id: str) -> list[dict[str, Any]]:
-        """The views of a student's problems (statement, figure, parameters, parts), made once."""
-        if student_id not in self._pages:
-            student = self.students[student_id]
+        """The views of a student's problems (statement, figure, parameters, parts). Built one
+        at a time: the figures are drawn by matplotlib, which is not thread-safe; a view is
+        shared by every student with the same variant."""
+        with self._drawing:
             views = []
+            student = self.students[student_id]
             for problem, entry in zip(self.assignment.problems, student["problems"], strict=True):
                 choice = VariantChoice(
                     int(entry["seed"]), entry["names"], entry["options"], entry["values"]
                 )
-                view = problem_view(problem, choice, f"p{problem.index}")
-                for part, asked in zip(view["parts"], problem.parts, strict=True):
-                    part["prompt_html"] = prompt_html(part)
-                    part["multiline"] = asked.part in MULTILINE
-                views.append(view)
-            self._pages[student_id] = views
-        return self._pages[student_id]
+                key = (problem.index, choice.key)
+                if key not in self._views:
+                    view = problem_view(problem, choice, f"p{problem.index}")
+                    for part, asked in zip(view["parts"], problem.parts, strict=True):
+                        part["prompt_html"] = prompt_html(part)
+                        part["multiline"] = asked.part in MULTILINE
+                    self._views[key] = view
+                views.append(self._views[key])
+            return views
 
 
 def build_classroom(

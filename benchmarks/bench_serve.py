@@ -1,0 +1,223 @@
+"""The answer page under load: 1, 50 and 200 simulated students at once against
+`lagrade serve` on 127.0.0.1, each typing (a preview per pause) and saving, in one run.
+
+Run: python benchmarks/bench_serve.py [--rounds 4] [--jobs 2]
+
+Each simulated student opens their page, then `--rounds` times: previews three answers of
+the kinds students type (right in plain text, LaTeX, a sign mistake, an unreadable one) and
+saves the sheet with a marker of its own. Every student stops by itself after its rounds; at
+the end every sheet on disk must be that student's own last save (no lost or mixed-up sheet).
+Reports per level: requests, wall time, median and p99 latency of previews and saves, errors.
+Latencies include queueing: with 200 students on 2 cores, a preview waits for the workers.
+"""
+
+from __future__ import annotations
+
+import argparse
+import csv
+import http.client
+import json
+import random
+import signal
+import statistics
+import subprocess
+import sys
+import tempfile
+import threading
+import time
+from pathlib import Path
+from urllib.parse import urlsplit
+
+from lagrade.assign.generate import generate
+
+ASSIGNMENT = """\
+title = "Answer page benchmark"
+points = 1
+
+[[problems]]
+scene = "simple_pendulum"
+parts = ["dof", "lagrangian", "eom", "momenta"]
+names = { theta = ["theta"] }
+"""
+
+ANSWERS = [
+    ("lagrangian", "1/2 m l^2 theta_dot^2 + m g l cos(theta)"),
+    ("lagrangian", r"\frac{1}{2} m l^{2} \dot{\theta}^{2} + m g l \cos{\theta}"),
+    ("lagrangian", "1/2 m l^2 theta_dot^2 - m g l cos(theta)"),  # sign of V
+    ("eom", "m l^2 theta_ddot + m g l sin(theta) = 0"),
+    ("eom", "m l^2 theta_ddot = m g l sin(theta)"),  # sign
+    ("momenta", "p_theta = m l^2 theta_dot"),
+    ("eom", "m l^2 (theta_ddot + g sin(theta) = 0"),  # unreadable
+    ("dof", "1"),
+]
+LEVELS = (1, 50, 200)
+
+
+def make_class(root: Path, students: int) -> Path:
+    (root / "assignment.toml").write_text(ASSIGNMENT)
+    rows = ["id,name"] + [f"b{k:03d},Student {k}" for k in range(students)]
+    (root / "roster.csv").write_text("\n".join(rows) + "\n")
+    generate(root / "assignment.toml", root / "roster.csv", 7, root / "ps", formats=("md",))
+    return root / "ps" / "manifest.json"
+
+
+def start(manifest: Path, sheets: Path, links: Path, jobs: int) -> tuple[subprocess.Popen, str]:
+    """The server, its output in a log file (a pipe nobody reads would fill and stall it)."""
+    log = manifest.parent / "server.log"
+    process = subprocess.Popen(
+        [
+            sys.executable,
+            "-c",
+            "from lagrade.cli.main import entry; entry()",
+            "serve",
+            str(manifest),
+            "--submissions",
+            str(sheets),
+            "--links",
+            str(links),
+            "--port",
+            "0",
+            "--jobs",
+            str(jobs),
+        ],
+        stdout=log.open("w"),
+        stderr=subprocess.STDOUT,
+    )
+    deadline = time.monotonic() + 120
+    while time.monotonic() < deadline and process.poll() is None:
+        for line in log.read_text().splitlines():
+            if "listening on " in line:
+                return process, line.split("listening on ")[1].split()[0].rstrip("/")
+        time.sleep(0.1)
+    raise SystemExit("the server did not start:\n" + log.read_text())
+
+
+class Student(threading.Thread):
+    """One simulated student on one keep-alive connection."""
+
+    def __init__(self, url: str, rounds: int, seed: int) -> None:
+        super().__init__(daemon=True)
+        parts = urlsplit(url)
+        self.host, self.port, self.path = parts.hostname, parts.port, parts.path
+        self.rounds, self.random = rounds, random.Random(seed)
+        self.previews: list[float] = []
+        self.saves: list[float] = []
+        self.errors: list[str] = []
+        self.last_marker = ""
+
+    def request(self, conn, method: str, path: str, body: dict | None = None) -> float:
+        data = json.dumps(body).encode() if body is not None else None
+        start = time.perf_counter()
+        conn.request(method, path, body=data, headers={"Content-Type": "application/json"})
+        response = conn.getresponse()
+        response.read()
+        elapsed = time.perf_counter() - start
+        if response.status != 200:
+            self.errors.append(f"{method} {path.rsplit('/', 1)[-1]}: {response.status}")
+        return elapsed
+
+    def run(self) -> None:
+        conn = http.client.HTTPConnection(self.host, self.port, timeout=300)
+        try:
+            self.request(conn, "GET", self.path)
+            for k in range(self.rounds):
+                for key, text in self.random.sample(ANSWERS, 3):
+                    body = {"problem": 1, "key": key, "text": text}
+                    self.previews.append(self.request(conn, "POST", self.path + "/preview", body))
+                marker = f"{self.path[-8:]}-{k}"
+                answers = {
+                    "1": {
+                        "dof": "1",
+                        "lagrangian": f"m g l cos(theta) + 0*{k}",
+                        "momenta": f"p_theta = m l^2 theta_dot  # {marker}",
+                    }
+                }
+                self.saves.append(
+                    self.request(conn, "POST", self.path + "/save", {"answers": answers})
+                )
+                self.last_marker = marker
+        except (OSError, http.client.HTTPException) as error:
+            self.errors.append(f"{type(error).__name__}: {error}")
+        finally:
+            conn.close()
+
+
+def percentile(values: list[float], q: float) -> float:
+    ordered = sorted(values)
+    return ordered[min(len(ordered) - 1, round(q * (len(ordered) - 1)))] if ordered else 0.0
+
+
+def run_level(links: list[dict], sheets: Path, students: int, rounds: int) -> dict:
+    chosen = links[:students]
+    crowd = [Student(row["url"], rounds, seed=k) for k, row in enumerate(chosen)]
+    start = time.perf_counter()
+    for s in crowd:
+        s.start()
+    for s in crowd:
+        s.join()
+    wall = time.perf_counter() - start
+    previews = [t for s in crowd for t in s.previews]
+    saves = [t for s in crowd for t in s.saves]
+    errors = [e for s in crowd for e in s.errors]
+    mixed = 0
+    for row, s in zip(chosen, crowd, strict=True):
+        text = (sheets / f"{row['id']}.toml").read_text(encoding="utf-8")
+        if f"# {s.last_marker}'" not in text and f"# {s.last_marker}\n" not in text:
+            mixed += 1
+        if f'student_id = "{row["id"]}"' not in text:
+            mixed += 1
+    return {
+        "students": students,
+        "requests": len(previews) + len(saves) + students,
+        "wall_s": wall,
+        "preview_median_ms": statistics.median(previews) * 1e3,
+        "preview_p99_ms": percentile(previews, 0.99) * 1e3,
+        "save_median_ms": statistics.median(saves) * 1e3,
+        "save_p99_ms": percentile(saves, 0.99) * 1e3,
+        "errors": len(errors),
+        "lost_or_mixed_sheets": mixed,
+    }
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--rounds", type=int, default=4, help="preview-and-save rounds each")
+    parser.add_argument("--jobs", type=int, default=2, help="the server's worker processes")
+    args = parser.parse_args()
+    with tempfile.TemporaryDirectory() as tmp:
+        root = Path(tmp)
+        print(f"generating a class of {max(LEVELS)} (not timed)…", flush=True)
+        manifest = make_class(root, max(LEVELS))
+        process, base = start(manifest, root / "sheets", root / "links.csv", args.jobs)
+        try:
+            links = list(csv.DictReader((root / "links.csv").open()))
+            Student(links[0]["url"], 1, seed=0).run()  # warm the workers (not reported)
+            print(
+                f"{'students':>8} {'requests':>8} {'wall s':>7} {'preview med':>12} "
+                f"{'p99 ms':>8} {'save med':>9} {'p99 ms':>8} {'errors':>6} {'lost/mixed':>10}"
+            )
+            for students in LEVELS:
+                r = run_level(links, root / "sheets", students, args.rounds)
+                print(
+                    f"{r['students']:>8} {r['requests']:>8} {r['wall_s']:>7.1f} "
+                    f"{r['preview_median_ms']:>12.1f} {r['preview_p99_ms']:>8.1f} "
+                    f"{r['save_median_ms']:>9.1f} {r['save_p99_ms']:>8.1f} {r['errors']:>6} "
+                    f"{r['lost_or_mixed_sheets']:>10}",
+                    flush=True,
+                )
+        finally:
+            process.send_signal(signal.SIGTERM)
+            process.wait(timeout=30)
+            problems = [
+                ln
+                for ln in (manifest.parent / "server.log").read_text().splitlines()
+                if "Error" in ln or "Traceback" in ln
+            ]
+            print(
+                f"server log: {len(problems)} error lines"
+                + "".join(f"\n  {ln}" for ln in problems[:20])
+            )
+
+
+if __name__ == "__main__":
+    main()
