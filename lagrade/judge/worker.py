@@ -37,6 +37,8 @@ _FORK = mp.get_context("fork")
 
 #: Seconds past a part's time limit before the parent kills the worker (the alarm comes first).
 GRACE = 2.0
+#: Seconds an idle worker waits between checks that its parent is still alive.
+ORPHAN_CHECK = 1.0
 #: Seconds of instructor-side work a question may take in one process (deriving its reference,
 #: sample points and, for wrong answers, its mistake catalogue): its `Budget`.
 PREPARE_LIMIT = 60.0
@@ -188,8 +190,14 @@ def _serve(conn: Connection, work: Callable[[Any], Any], limits: Limits) -> None
         resource.setrlimit(resource.RLIMIT_AS, (ceiling, ceiling))
     except (ValueError, OSError):
         pass  # a platform without the limit still has the wall-clock kill
+    parent_pid = os.getppid()
     while True:
         try:
+            # A parent killed outright (SIGKILL) never closes our pipe: forked siblings hold
+            # copies of its end. So wait in slices and leave once the parent is gone.
+            while not conn.poll(ORPHAN_CHECK):
+                if os.getppid() != parent_pid:
+                    return
             item = conn.recv()
         except (EOFError, OSError):
             return

@@ -56,13 +56,45 @@ def assert_no_partial_files(out: Path) -> None:
             assert path.stat().st_size > 0, path
 
 
+def children(pid: int) -> list[int]:
+    """The processes whose parent is `pid` (Linux /proc)."""
+    found = []
+    for entry in Path("/proc").iterdir():
+        if entry.name.isdigit():
+            try:
+                stat = (entry / "stat").read_bytes()
+            except OSError:
+                continue
+            if int(stat.rsplit(b")", 1)[1].split()[1]) == pid:
+                found.append(int(entry.name))
+    return found
+
+
+def assert_gone(pids: list[int], limit: float = 10.0) -> None:
+    deadline = time.monotonic() + limit
+    alive = pids
+    while alive and time.monotonic() < deadline:
+        alive = [p for p in alive if Path(f"/proc/{p}").exists() and not _zombie(p)]
+        time.sleep(0.1)
+    assert not alive, f"workers still running after their parent stopped: {alive}"
+
+
+def _zombie(pid: int) -> bool:
+    try:
+        return b") Z " in Path(f"/proc/{pid}/stat").read_bytes()
+    except OSError:
+        return True
+
+
 @pytest.mark.parametrize("how", [signal.SIGINT, signal.SIGKILL], ids=["ctrl-c", "kill"])
 def test_rerun_completes_an_interrupted_run(workspace, how):
     process = start(workspace)
     students = workspace / "grades" / "students"
     done = wait_for_results(students, 3, process)
+    workers = children(process.pid)
     process.send_signal(how)
     process.wait(30)
+    assert_gone(workers)  # a killed parent's workers do not live on as orphans
     if done >= 12:
         pytest.skip("the run finished before it could be interrupted")
     assert_no_partial_files(workspace / "grades")
