@@ -114,17 +114,22 @@ class Assignment:
 
 def load_assignment(path: str | Path) -> Assignment:
     """Read and check an assignment file; one AssignmentError lists every problem in it."""
+    return parse_assignment(assignment_table(path), source=str(path))
+
+
+def assignment_table(path: str | Path) -> dict[str, Any]:
+    """The TOML of an assignment file, read by the untrusted-input rules, unchecked: what
+    the tables other layers own (`[rubric]`, `[answer_page]`) are read from."""
     path = Path(path)
     what = f"assignment file {str(path)!r}"
     try:
-        data = untrusted.load_toml(untrusted.decode(path.read_bytes(), what), what)
+        return untrusted.load_toml(untrusted.decode(path.read_bytes(), what), what)
     except FileNotFoundError:
         raise AssignmentError(f"{what} does not exist") from None
     except OSError as exc:
         raise AssignmentError(f"cannot read {what}: {exc.strerror}") from None
     except UnreadableInput as exc:
         raise AssignmentError(str(exc)) from None
-    return parse_assignment(data, source=str(path))
 
 
 def parse_assignment(data: Mapping[str, Any], source: str = "assignment") -> Assignment:

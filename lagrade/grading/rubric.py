@@ -17,8 +17,8 @@ from dataclasses import asdict, dataclass
 from pathlib import Path
 from typing import Any
 
-import lagrade.untrusted as untrusted
-from lagrade.errors import RequestError, UnreadableInput
+from lagrade.assign.assignment import assignment_table
+from lagrade.errors import RequestError
 from lagrade.judge.parts.expression import NUMERIC_TOLERANCE
 
 _FIELDS = {"partial_credit", "follow_through", "convention", "numeric_tolerance"}
@@ -89,11 +89,4 @@ def rubric_from_table(table: Any) -> Rubric:
 
 def load_rubric(assignment_file: Path) -> Rubric:
     """The rubric of an assignment file (defaults when it has no [rubric] table)."""
-    what = f"the assignment file {assignment_file}"
-    try:
-        data = untrusted.load_toml(untrusted.decode(Path(assignment_file).read_bytes(), what), what)
-    except OSError as error:
-        raise RequestError(f"cannot read the rubric from {assignment_file}: {error}") from None
-    except UnreadableInput as error:
-        raise RequestError(f"cannot read the rubric: {error}") from None
-    return rubric_from_table(data.get("rubric"))
+    return rubric_from_table(assignment_table(assignment_file).get("rubric"))

@@ -14,8 +14,8 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-import lagrade.untrusted as untrusted
-from lagrade.errors import RequestError, UnreadableInput
+from lagrade.assign.assignment import assignment_table
+from lagrade.errors import RequestError
 
 _KNOWN = ("feedback", "attempts")
 
@@ -51,11 +51,4 @@ def settings_from_table(table: Any) -> PageSettings:
 
 def load_settings(assignment_file: Path) -> PageSettings:
     """The answer-page settings of an assignment file."""
-    what = f"the assignment file {assignment_file}"
-    try:
-        data = untrusted.load_toml(untrusted.decode(Path(assignment_file).read_bytes(), what), what)
-    except OSError as error:
-        raise RequestError(f"cannot read {assignment_file}: {error.strerror}") from None
-    except UnreadableInput as error:
-        raise RequestError(str(error)) from None
-    return settings_from_table(data.get("answer_page"))
+    return settings_from_table(assignment_table(assignment_file).get("answer_page"))
