@@ -11,6 +11,8 @@ import sys
 import threading
 import time
 
+import pytest
+
 from lagrade.grading.answer_page.tokens import load_or_create_secret, student_token
 from lagrade.grading.submission import read_sheet
 from tests.serve.conftest import generate_class, get, post, start_server, stop_server
@@ -194,11 +196,12 @@ def test_feedback_on_save_with_a_limit_of_attempts(tmp_path):
         assert stop_server(server) in (0, 130)
 
 
-def test_sigterm_stops_the_server_cleanly(tmp_path):
+@pytest.mark.parametrize("how", [signal.SIGTERM, signal.SIGINT], ids=["sigterm", "ctrl-c"])
+def test_a_signal_stops_the_server_cleanly(tmp_path, how):
     manifest = generate_class(tmp_path)
     server = start_server(tmp_path, manifest)
     start = time.monotonic()
-    server.process.send_signal(signal.SIGTERM)
+    server.process.send_signal(how)
     status = server.process.wait(timeout=30)
     assert time.monotonic() - start < 15
     assert status == 130  # documented: interrupted (Ctrl-C or SIGTERM)
