@@ -181,12 +181,12 @@ def _student(room: ClassRoom, request: Request) -> str | None:
 
 async def _body(request: Request) -> Any:
     """The JSON body, bounded and read by the project's untrusted-input reader."""
-    data = b""
+    data = bytearray()
     async for chunk in request.stream():
         data += chunk
         if len(data) > MAX_BODY_BYTES:
             raise UnreadableInput(f"the request is larger than {MAX_BODY_BYTES // 1024} KiB")
-    return untrusted.load_json(untrusted.decode(data, "the request"), "the request")
+    return untrusted.load_json(untrusted.decode(bytes(data), "the request"), "the request")
 
 
 def make_app(room: ClassRoom) -> Starlette:
@@ -223,7 +223,10 @@ def make_app(room: ClassRoom) -> Starlette:
             entry, part, text = _preview_request(room, student_id, body)
         except (UnreadableInput, ValueError) as error:
             return _json({"status": "error", "message": str(error)}, 400)
-        result = await room.in_worker(preview_module.preview, entry, part, text)
+        try:
+            result = await room.in_worker(preview_module.preview, entry, part, text)
+        except BrokenProcessPool:
+            return _json({"status": "error", "message": _BUSY}, 503)
         return _json(result)
 
     async def save(request: Request) -> Response:
@@ -251,7 +254,10 @@ def make_app(room: ClassRoom) -> Starlette:
                 "saved_at": time.strftime("%H:%M:%S"),
             }
             if room.settings.feedback:
-                reply.update(await _graded(room, student_id, path))
+                try:
+                    reply.update(await _graded(room, student_id, path))
+                except BrokenProcessPool:  # saved all the same; only the grading failed
+                    reply.update({"feedback": None, "message": _BUSY})
         return _json(reply)
 
     async def static(request: Request) -> Response:
@@ -287,6 +293,7 @@ def make_app(room: ClassRoom) -> Starlette:
     return app
 
 
+_BUSY = "The grader is restarting; try again in a moment."
 _STATIC = {"page.js": "text/javascript", "page.css": "text/css"}
 
 

@@ -115,6 +115,7 @@
       status.textContent = "Saved at " + reply.saved_at + " (" + reply.file + ").";
       if ("feedback" in reply) {
         if (reply.feedback) showFeedback(reply.feedback, reply.attempts_left);
+        else if (reply.message) status.textContent += " Not graded: " + reply.message;
         else status.textContent += " No graded saves left: this one was saved, not graded.";
       }
     } catch (error) {
