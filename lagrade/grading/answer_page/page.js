@@ -91,7 +91,9 @@
       if (!part) return;
       box.classList.add(part.verdict);
       box.appendChild(element("div", "", part.points + " / " + part.max_points + " points"));
-      part.feedback.forEach(function (text) { box.appendChild(element("pre", "", text)); });
+      // a parser's message keeps its columns (the caret); a sentence wraps like prose
+      const tag = part.verdict === "invalid" ? "pre" : "p";
+      part.feedback.forEach(function (text) { box.appendChild(element(tag, "", text)); });
     });
     const attempts = document.getElementById("attempts");
     if (attempts && attemptsLeft !== null && attemptsLeft !== undefined) {
