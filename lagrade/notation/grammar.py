@@ -12,8 +12,6 @@ The rules build a `nodes.Node` tree and never touch sympy; names are read by `na
 
 from __future__ import annotations
 
-from typing import NoReturn
-
 from lagrade.notation.lexer import Token, read_number
 from lagrade.notation.limits import MAX_EXPONENT
 from lagrade.notation.names import NameRules
@@ -78,7 +76,8 @@ class Parser(NameRules):
         return self.node("add", terms[0].start, terms[-1].end, terms)
 
     def parse_term(self) -> Node:
-        """term := unary ( ('*'|'/') unary | <juxtaposition> power )*"""
+        """term := unary ( ('*'|'/') unary | <juxtaposition> power )*; a juxtaposition after a
+        division multiplies what came before (`k/m x` is (k/m)·x), with a warning"""
         first = self.parse_unary()
         factors = [first]
         after_division = False
@@ -105,9 +104,9 @@ class Parser(NameRules):
                         self.tokens[self.pos - 1].start,
                         tok.end,
                     )
-                if after_division and not self.is_integer_fraction(factors):
-                    self.ambiguous_division(first.start, factors[-1])
                 factors.append(self.parse_power())
+                if after_division and not self.is_integer_fraction(factors[:-1]):
+                    self.note_division(first.start, factors[-2], factors[-1])
                 after_division = False
             else:
                 break
@@ -123,15 +122,16 @@ class Parser(NameRules):
         top, bottom = factors[0], factors[1].value
         return top.kind == "num" and top.extra and bottom.kind == "num" and bottom.extra  # type: ignore[union-attr]
 
-    def ambiguous_division(self, term_start: int, divisor: Node) -> NoReturn:
-        following = self.parse_power()
+    def note_division(self, term_start: int, divisor: Node, following: Node) -> None:
+        """`k/m (x - x0)`, as textbooks print it: read left to right, as mainstream computer
+        algebra reads it (the implicit product binds like '*'), and said in a warning, so that
+        the student sees the reading instead of losing the answer to an ambiguity."""
         left = self.text[term_start : divisor.start].rstrip().rstrip("/").rstrip()
         under = self.text[divisor.start : divisor.end]
         after = self.text[following.start : following.end]
-        self.fail(
-            f"Ambiguous division: write {left}/({under}*{after}) or ({left}/{under})*{after}.",
-            term_start,
-            following.end,
+        self.warn(
+            f"{left}/{under} {after} is read as ({left}/{under})*{after}; if {after} belongs "
+            f"under the fraction bar, write {left}/({under}*{after})."
         )
 
     def parse_unary(self) -> Node:

@@ -17,9 +17,12 @@ def test_preview_of_a_good_answer() -> None:
 
 
 def test_preview_of_an_error_shows_the_caret() -> None:
-    status, text = preview_command("m g/2 R", ["theta"], ["m", "g", "R"], None)
+    status, text = preview_command("m g sin 2 R", ["theta"], ["m", "g", "R"], None)
     assert status == 1
-    assert text == "Ambiguous division: write m g/(2*R) or (m g/2)*R.\n  m g/2 R\n  ^^^^^^^"
+    assert text == (
+        "Ambiguous 'sin' without brackets: write sin(2*R) or sin(2)*R.\n"
+        "  m g sin 2 R\n      ^^^^^^^"
+    )
 
 
 def test_preview_with_primes_and_forced_latex() -> None:

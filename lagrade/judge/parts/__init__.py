@@ -24,6 +24,7 @@ later parts ("lagrangian"), and for a numeric answer the handout's values and th
 from __future__ import annotations
 
 from collections.abc import Callable, Mapping
+from dataclasses import replace
 from typing import Any
 
 from lagrade.errors import ParseError, RequestError, UnsupportedExpression
@@ -35,6 +36,7 @@ from lagrade.judge.parts.energy import check_kinetic, check_lagrangian, check_po
 from lagrade.judge.parts.eom import check_eom
 from lagrade.judge.parts.expression import check_expression
 from lagrade.judge.parts.momenta import check_momenta
+from lagrade.judge.parts.reading import reading_notes
 from lagrade.judge.parts.transformation import check_transformation
 from lagrade.judge.problem import Problem
 from lagrade.judge.verdict import Verdict, invalid
@@ -77,11 +79,19 @@ def run_checker(problem: Problem, part: str, answer: Any, given: Mapping | None 
             'problem, or a scene with "quantity")'
         )
     try:
-        return checker(problem, answer, given)
+        with reading_notes() as notes:
+            verdict = checker(problem, answer, given)
+        return with_notes(verdict, notes)
     except ParseError as error:
         return invalid(part, str(error), getattr(error, "source", ""))
     except UnsupportedExpression as error:
         return invalid(part, f"Cannot evaluate your answer: {error}.")
+
+
+def with_notes(verdict: Verdict, notes: list[str]) -> Verdict:
+    """The verdict with the parser's notes on how the answer was read, after its feedback."""
+    new = [n for n in notes if n not in verdict.feedback]
+    return replace(verdict, feedback=(*verdict.feedback, *new)) if new else verdict
 
 
 __all__ = ["NEEDS_LAGRANGIAN", "PARTS", "run_checker"]

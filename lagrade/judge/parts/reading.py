@@ -5,7 +5,9 @@ follow-through."""
 from __future__ import annotations
 
 import re
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Callable, Iterator, Mapping, Sequence
+from contextlib import contextmanager
+from contextvars import ContextVar
 from dataclasses import dataclass
 from typing import Any
 
@@ -134,7 +136,25 @@ def read(problem: Problem, item: Any, labels: Sequence[str] = (), mode: str = "a
     return read_parsed(problem, parse[mode](item, vocab))
 
 
+_notes: ContextVar[list[str] | None] = ContextVar("reading_notes", default=None)
+
+
+@contextmanager
+def reading_notes() -> Iterator[list[str]]:
+    """Collect, while the block runs, what the parser says about how the answer was read
+    (`k/m x` read as (k/m)·x, log read as ln), so that the verdict can say it too: a reading
+    the student did not intend is then visible in the feedback, not only in a preview."""
+    token = _notes.set([])
+    try:
+        yield _notes.get()  # type: ignore[misc]
+    finally:
+        _notes.reset(token)
+
+
 def read_parsed(problem: Problem, parsed) -> Read:
+    notes = _notes.get()
+    if notes is not None:
+        notes += [w for w in parsed.warnings if w not in notes]
     if problem.parser_symbols_are_mine:
         return Read(parsed.lhs, parsed.rhs, parsed.plain())
     rhs = None if parsed.rhs is None else problem.canonical(parsed.rhs)
@@ -181,7 +201,8 @@ def own_lagrangian(problem: Problem, given: Mapping | None) -> sp.Expr | None:
     if not given or "lagrangian" not in given:
         return None
     try:
-        expr = read_labelled(problem, given["lagrangian"], ("L",)).expr
+        with reading_notes():  # the notes belong to the lagrangian part, not to this one
+            expr = read_labelled(problem, given["lagrangian"], ("L",)).expr
     except (ParseError, RequestError):
         return None
     return None if has_acceleration(problem, expr) else expr
