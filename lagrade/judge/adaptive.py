@@ -116,6 +116,9 @@ _DERIVATIVE: dict[str, Callable] = {
     "sinh": lambda B, x, f: B.cosh(x),
     "cosh": lambda B, x, f: B.sinh(x),
     "tanh": lambda B, x, f: 1 - f * f,
+    "asinh": lambda B, x, f: 1 / B.sqrt(1 + x * x),
+    "acosh": lambda B, x, f: 1 / B.sqrt(x * x - 1),
+    "atanh": lambda B, x, f: 1 / (1 - x * x),
     "exp": lambda B, x, f: f,
     "log": lambda B, x, f: 1 / x,
     "abs": lambda B, x, f: 1,
@@ -165,6 +168,10 @@ def _bounded_run(program: ev.Program, env: Mapping, B) -> list[tuple]:
             (b, eb), (x, ex) = vals[instr[1]], vals[instr[2]]
             v = B.exp(x * B.log(b))
             vals.append((v, abs(v) * (abs(B.log(b)) * ex + abs(x) * eb / abs(b)) + 8 * abs(v)))
+        elif op == "atan2":  # |∂/∂y| = |x|/r², |∂/∂x| = |y|/r²
+            (y, ey), (x, ex) = vals[instr[1]], vals[instr[2]]
+            f = B.atan2(y, x)
+            vals.append((f, (abs(x) * ey + abs(y) * ex) / (x * x + y * y) + 2 * abs(f)))
         else:
             name, (x, ex) = instr[1], vals[instr[2]]
             f = ev._apply(B, name, x)
@@ -274,6 +281,7 @@ class _MpScalar:
     exp, log, sqrt = _real(mpmath.exp), _real(mpmath.log), _real(mpmath.sqrt)
     asin, acos, atan = _real(mpmath.asin), _real(mpmath.acos), _real(mpmath.atan)
     sinh, cosh, tanh = _real(mpmath.sinh), _real(mpmath.cosh), _real(mpmath.tanh)
-    power, sign = _real(mpmath.power), _real(mpmath.sign)
+    asinh, acosh, atanh = _real(mpmath.asinh), _real(mpmath.acosh), _real(mpmath.atanh)
+    power, sign, atan2 = _real(mpmath.power), _real(mpmath.sign), _real(mpmath.atan2)
     abs = staticmethod(abs)
     const = staticmethod(ev.MP.const)

@@ -43,6 +43,9 @@ _FUNCTIONS: dict[type, str] = {
     sp.sinh: "sinh",
     sp.cosh: "cosh",
     sp.tanh: "tanh",
+    sp.asinh: "asinh",
+    sp.acosh: "acosh",
+    sp.atanh: "atanh",
     sp.exp: "exp",
     sp.log: "log",
     sp.Abs: "abs",
@@ -55,7 +58,7 @@ class Program:
     """Straight-line code for several sympy expressions: instructions in dependency order, each
     shared subtree once. Instructions: ("in", symbol), ("const", number, its float), ("add", args),
     ("mul", args), ("powi", base, n), ("powc", base, exponent), ("powe", base, exponent),
-    ("fn", name, arg)."""
+    ("fn", name, arg), ("atan2", y, x)."""
 
     code: tuple[tuple, ...]
     outputs: tuple[int, ...]
@@ -115,6 +118,8 @@ def _instruction(node: sp.Basic, emit, symbols: set) -> tuple:
             return ("fn", "exp", emit(exponent))
         # b**e with a non-constant exponent: exp(e log b), defined for b > 0.
         return ("powe", emit(base), emit(exponent))
+    if isinstance(node, sp.atan2):
+        return ("atan2", emit(node.args[0]), emit(node.args[1]))
     if isinstance(node, sp.Function):
         name = _FUNCTIONS.get(type(node))
         if name is None:
@@ -149,6 +154,7 @@ class _Float:
     sin, cos, tan, exp, log = np.sin, np.cos, np.tan, np.exp, np.log
     asin, acos, atan = np.arcsin, np.arccos, np.arctan
     sinh, cosh, tanh, sqrt, abs, sign = np.sinh, np.cosh, np.tanh, np.sqrt, np.abs, np.sign
+    asinh, acosh, atanh, atan2 = np.arcsinh, np.arccosh, np.arctanh, np.arctan2
     power = np.power
 
     @staticmethod
@@ -173,6 +179,8 @@ class _Mp:
     asin, acos, atan = _mp_real(mpmath.asin), _mp_real(mpmath.acos), _mp_real(mpmath.atan)
     sinh, cosh, tanh = _mp_real(mpmath.sinh), _mp_real(mpmath.cosh), _mp_real(mpmath.tanh)
     sqrt, abs, sign = _mp_real(mpmath.sqrt), np.frompyfunc(abs, 1, 1), _mp_real(mpmath.sign)
+    asinh, acosh, atanh = _mp_real(mpmath.asinh), _mp_real(mpmath.acosh), _mp_real(mpmath.atanh)
+    atan2 = _mp_real(mpmath.atan2, 2)
     power = _mp_real(mpmath.power, 2)
 
     @staticmethod
@@ -243,6 +251,15 @@ def _derivatives(B, name: str, x, f):
     if name == "tanh":
         d1 = 1 - f * f
         return d1, -2 * f * d1
+    if name == "asinh":
+        r = 1 / B.sqrt(1 + x * x)
+        return r, -x * r * r * r
+    if name == "acosh":
+        r = 1 / B.sqrt(x * x - 1)
+        return r, -x * r * r * r
+    if name == "atanh":
+        r = 1 / (1 - x * x)
+        return r, 2 * x * r * r
     if name == "abs":
         return B.sign(x), 0 * x
     if name == "sign":
@@ -293,6 +310,8 @@ def run(program: Program, env: Mapping[sp.Symbol, Any], backend=FLOAT) -> list:
             vals.append(backend.power(vals[instr[1]], backend.const(instr[2])))
         elif op == "powe":
             vals.append(backend.exp(vals[instr[2]] * backend.log(vals[instr[1]])))
+        elif op == "atan2":
+            vals.append(backend.atan2(vals[instr[1]], vals[instr[2]]))
         else:  # fn
             vals.append(_apply(backend, instr[1], vals[instr[2]]))
     return [vals[k] for k in program.outputs]
@@ -373,6 +392,11 @@ def run_hyperdual(program: Program, env: Mapping[sp.Symbol, HyperDual], backend=
             prod = _hd_mul(expo, log_b)
             f = backend.exp(prod[0])
             vals.append(_hd_chain(prod, f, f, f))
+        elif op == "atan2":  # locally atan(y/x) plus a constant: atan's derivatives at y/x
+            y, x = vals[instr[1]], vals[instr[2]]
+            q = _hd_mul(y, _hd_power(backend, x, -1))
+            r = 1 / (1 + q[0] * q[0])
+            vals.append(_hd_chain(q, backend.atan2(y[0], x[0]), r, -2 * q[0] * r * r))
         else:
             name, x = instr[1], vals[instr[2]]
             f = _apply(backend, name, x[0])

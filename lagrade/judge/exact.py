@@ -30,6 +30,11 @@ def sorted_symbols(*exprs: sp.Expr) -> list[sp.Symbol]:
 _TRIG = (sp.sin, sp.cos, sp.tan, sp.cot, sp.sec, sp.csc)
 
 
+#: The highest power the exact test raises a random rational to (53-bit points: the result has
+#: up to 53 × n bits); higher powers go to the adaptive test, whose mpmath has no such cost.
+MAX_EXACT_POWER = 2_000
+
+
 class _OutOfScope(Exception):
     """The expression is not a rational function of symbols and trig of their combinations."""
 
@@ -50,6 +55,8 @@ def _check_rational_trig(expr: sp.Expr, inside_trig: bool = False) -> None:
     if expr.is_Pow:
         if not expr.exp.is_Integer or inside_trig:
             raise _OutOfScope(f"power {expr}")
+        if abs(int(expr.exp)) > MAX_EXACT_POWER:  # exact numbers of 10^5 bits and more: slow
+            raise _OutOfScope(f"power {expr.exp} too high for exact arithmetic")
         _check_rational_trig(expr.base, inside_trig)
         return
     if isinstance(expr, _TRIG) and not inside_trig:

@@ -300,8 +300,10 @@ def conserved_mutants(
 
 
 def expression_mutants(ref: sp.Expr) -> list[Mutant]:
-    """The usual slips with a closed-form result: sin for cos, the sign, upside down."""
-    return [
+    """The usual slips with a closed-form result: sin for cos, the sign, upside down. A slip
+    that leaves the reference as it is (no sin or cos to swap) is no slip and is left out: an
+    answer equal to it would be named for a mistake it does not have."""
+    mutants = [
         Mutant("sin_cos_swapped", "sin and cos are swapped", swap_sin_cos(ref)),
         Mutant("wrong_sign", "the sign is wrong", -ref),
         Mutant(
@@ -310,3 +312,4 @@ def expression_mutants(ref: sp.Expr) -> list[Mutant]:
             1 / ref,
         ),
     ]
+    return [m for m in mutants if m.expr != ref]

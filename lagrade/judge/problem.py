@@ -298,7 +298,9 @@ def _adhoc_problem(spec: Mapping[str, Any], key: str, kind: str) -> Problem:
         raise RequestError(f"{len(raw_params)} parameters; a problem may have at most {MAX_NAMES}")
     params: dict[str, sp.Symbol] = {}
     domains: dict[sp.Symbol, Domain] = {}
-    taken = {n for c in coords for n in (c, c + "_dot", c + "_ddot")} | {"t"}
+    # In a Lagrangian t is time; an expression problem may declare t as an ordinary variable.
+    taken = {n for c in coords for n in (c, c + "_dot", c + "_ddot")}
+    taken |= {"t"} if kind == "lagrangian" else set()
     for name, dom in raw_params.items():
         if not isinstance(name, str) or not _NAME.match(name):
             raise RequestError(f"parameter name {_shown(name)} is not a plain name {_NAME_RULE}")

@@ -4,12 +4,13 @@ sympy objects."""
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable
 
 import sympy as sp
 
 from lagrade.notation.lexer import Source
-from lagrade.notation.limits import MAX_EXPONENT, MAX_NUMBER_BITS
+from lagrade.notation.limits import MAX_EXPANDED_TERMS, MAX_EXPONENT, MAX_NUMBER_BITS
 from lagrade.notation.nodes import Node
 
 #: The only door from the parser to sympy: tree node kinds and function names → constructors.
@@ -40,8 +41,27 @@ SYMPY_CONSTRUCTORS: dict[str, Callable[..., sp.Expr]] = {
     "log": sp.log,  # the natural logarithm, as in physics texts (a warning says so)
     "sqrt": sp.sqrt,
     "abs": sp.Abs,
+    "Abs": sp.Abs,
+    "sign": sp.sign,
+    "sgn": sp.sign,
+    "asinh": sp.asinh,
+    "acosh": sp.acosh,
+    "atanh": sp.atanh,
+    "arcsinh": sp.asinh,
+    "arccosh": sp.acosh,
+    "arctanh": sp.atanh,
+    "arsinh": sp.asinh,
+    "arcosh": sp.acosh,
+    "artanh": sp.atanh,
+    # x^(1/3), the principal root, as sympy's and mpmath's cbrt (not real for x < 0: the real
+    # cube root of a negative x is -cbrt(-x))
+    "cbrt": sp.cbrt,
+    "atan2": sp.atan2,  # atan2(y, x): the angle of the point (x, y), in (-pi, pi]
+    "arctan2": sp.atan2,
 }
 FUNCTIONS = frozenset(SYMPY_CONSTRUCTORS) - {"add", "mul", "pow", "integer", "rational", "pi"}
+#: Functions of two arguments, written f(a, b); every other function takes one.
+TWO_ARGUMENTS = frozenset({"atan2", "arctan2"})
 
 NOT_FINITE = "The answer is not a finite real expression."
 _BAD_VALUES = (sp.zoo, sp.nan, sp.oo, -sp.oo, sp.I)
@@ -69,7 +89,10 @@ def build(node: Node, src: Source) -> sp.Expr:
         return _power(build(node.value, src), build(node.extra, src), node, src)  # type: ignore[arg-type]
     if kind == "call":
         argument, power = node.extra  # type: ignore[misc]
-        result = make[node.value](build(argument, src))  # type: ignore[index]
+        if node.value in TWO_ARGUMENTS:  # atan2(y, x): a pair of nodes
+            result = make[node.value](*(build(a, src) for a in argument))  # type: ignore[index]
+        else:
+            result = make[node.value](build(argument, src))  # type: ignore[index]
         return result if power is None else make["pow"](result, make["integer"](power))
     if kind == "pi":
         return make["pi"]()
@@ -83,11 +106,19 @@ def _factor(node: Node, src: Source) -> sp.Expr:
 
 
 def _power(base: sp.Expr, exponent: sp.Expr, node: Node, src: Source) -> sp.Expr:
-    """base^exponent, refusing numbers too large to compute and roots of negative numbers."""
+    """base^exponent, refusing what would cost too much to compute or to multiply out (limits
+    by cost: an exact number's size, a sum's expanded size), and roots of negative numbers."""
     if exponent.is_Rational:
         if abs(exponent) > MAX_EXPONENT:
             src.fail(
-                f"Exponent too large: at most {MAX_EXPONENT} in absolute value.",
+                f"Exponent too large: at most {MAX_EXPONENT:,} in absolute value.",
+                node.start,
+                node.end,
+            )
+        if exponent.is_Integer and _expanded_terms(base, abs(int(exponent))) > MAX_EXPANDED_TERMS:
+            src.fail(
+                "This power of a sum is too large to work with (multiplied out it would have "
+                f"more than {MAX_EXPANDED_TERMS:,} terms).",
                 node.start,
                 node.end,
             )
@@ -101,6 +132,14 @@ def _power(base: sp.Expr, exponent: sp.Expr, node: Node, src: Source) -> sp.Expr
             elif base.is_negative:
                 src.fail(NOT_FINITE, node.start, node.end)
     return SYMPY_CONSTRUCTORS["pow"](base, exponent)
+
+
+def _expanded_terms(base: sp.Expr, n: int) -> int:
+    """How many terms base^n has multiplied out: C(n + k - 1, k - 1) for a sum of k terms."""
+    k = len(sp.Add.make_args(base))
+    if k == 1 or n <= 1:
+        return 1
+    return math.comb(n + k - 1, k - 1) if k <= 64 else MAX_EXPANDED_TERMS + 1
 
 
 def check_finite(side: sp.Expr, node: Node | None, src: Source) -> None:

@@ -14,6 +14,8 @@ from __future__ import annotations
 import re
 from typing import Any
 
+from lagrade.notation.build import TWO_ARGUMENTS
+
 # Binding strength: a sub-expression is bracketed when it binds more loosely than its place needs.
 _SUM, _PRODUCT, _SIGNED, _POWER, _ATOM = range(5)
 _DECIMAL = re.compile(r"\d+\.?\d*(?:[eE][+-]?\d+)?|\.\d+(?:[eE][+-]?\d+)?")
@@ -45,7 +47,8 @@ def _render(node: Any, text: str) -> tuple[str, int]:
         return f"{base}^{exponent}", _POWER
     if kind == "call":
         argument, power = node.extra
-        call = f"{node.value}({_render(argument, text)[0]})"
+        arguments = argument if node.value in TWO_ARGUMENTS else (argument,)
+        call = f"{node.value}({', '.join(_render(a, text)[0] for a in arguments)})"
         return (f"{call}^{power}", _POWER) if power is not None else (call, _ATOM)
     raise AssertionError(f"unknown node kind {kind!r}")
 

@@ -12,12 +12,13 @@ The rules build a `nodes.Node` tree and never touch sympy; names are read by `na
 
 from __future__ import annotations
 
+from lagrade.notation.build import TWO_ARGUMENTS
 from lagrade.notation.lexer import Token, read_number
-from lagrade.notation.limits import MAX_EXPONENT
+from lagrade.notation.limits import MAX_EXPONENT, MAX_FUNCTION_POWER
 from lagrade.notation.names import NameRules
 from lagrade.notation.nodes import Node
 
-_TERM_END = frozenset(("+", "-", ")", "=", ",", ";"))
+_TERM_END = frozenset(("+", "-", ")", "=", ",", ";", "|"))
 _TRIG = frozenset(("sin", "cos", "tan", "sec", "csc", "cot", "sinh", "cosh", "tanh"))
 
 
@@ -93,7 +94,7 @@ class Parser(NameRules):
                 else:
                     factors.append(self.node("inv", factor.start, factor.end, factor))
                     after_division = True
-            elif tok.kind in ("num", "name") or tok.text == "(":
+            elif tok.kind in ("num", "name") or tok.text == "(" or self.opens_bars(tok):
                 if tok.kind == "num" and self.tokens[self.pos - 1].kind == "num":
                     a, b = self.tokens[self.pos - 1].text, tok.text
                     if not tok.spaced:
@@ -162,7 +163,7 @@ class Parser(NameRules):
             literal = exponent.value.value  # type: ignore[union-attr]
         if literal is not None and abs(literal[0]) > MAX_EXPONENT * literal[1]:  # type: ignore[index]
             self.fail(
-                f"Exponent too large: at most {MAX_EXPONENT} in absolute value.",
+                f"Exponent too large: at most {MAX_EXPONENT:,} in absolute value.",
                 exponent.start,
                 exponent.end,
             )
@@ -177,6 +178,8 @@ class Parser(NameRules):
             return self.node("num", tok.start, tok.end, (p, q), whole)
         if tok.text == "(":
             return self.parse_group()
+        if tok.text == "|":
+            return self.parse_bars()
         if tok.kind == "name":
             if tok.text == "diff" and "diff" not in self.lexicon.table:
                 return self.parse_diff()
@@ -185,6 +188,32 @@ class Parser(NameRules):
             self.next()
             return self.parse_name(tok)
         self.unexpected(tok)
+
+    def opens_bars(self, tok: Token) -> bool:
+        """After a factor, '|' opens an absolute value only outside bars (`m |x|`); inside
+        them it closes the one that is open (`|a x|`)."""
+        return tok.text == "|" and self.bars == 0
+
+    def parse_bars(self) -> Node:
+        """'|' sum '|': the absolute value, abs(sum)."""
+        opening = self.next()
+        self.enter(opening)
+        self.bars += 1
+        inner = self.parse_sum()  # a '|' right after the opening one opens another: ||x| - 1|
+        closing = self.peek()
+        if closing.text != "|":
+            if closing.kind == "end":
+                self.fail(
+                    f"Missing '|': the '|' at position {self.column(opening.start)} is never "
+                    "closed.",
+                    opening.start,
+                    opening.end,
+                )
+            self.unexpected(closing)
+        self.next()
+        self.bars -= 1
+        self.depth -= 1
+        return self.node("call", opening.start, closing.end, "abs", (inner, None))
 
     def parse_group(self) -> Node:
         """'(' sum ')'"""
@@ -227,7 +256,7 @@ class Parser(NameRules):
         if self.peek().text in ("^", "**"):
             op = self.next()
             nxt = self.peek()
-            if nxt.kind == "num" and nxt.text.isdigit() and 0 < int(nxt.text) <= MAX_EXPONENT:
+            if nxt.kind == "num" and nxt.text.isdigit() and 0 < int(nxt.text) <= MAX_FUNCTION_POWER:
                 power = int(nxt.text)
                 self.next()
             elif nxt.text == "-" or (nxt.text == "(" and self.peek(1).text == "-"):
@@ -241,6 +270,11 @@ class Parser(NameRules):
                     nxt.end,
                 )
         nxt = self.peek()
+        if name in TWO_ARGUMENTS:
+            arguments = self.parse_two_arguments(tok)
+            return self.node(
+                "call", tok.start, self.tokens[self.pos - 1].end, name, (arguments, power)
+            )
         if nxt.text == "(":
             argument = self.parse_group()
         elif (
@@ -257,6 +291,32 @@ class Parser(NameRules):
                 f"Write the argument of '{name}' in brackets, as in {name}(x).", tok.start, nxt.end
             )
         return self.node("call", tok.start, argument.end, name, (argument, power))
+
+    def parse_two_arguments(self, function: Token) -> tuple[Node, Node]:
+        """'(' sum ',' sum ')' after a function of two arguments (atan2(y, x))."""
+        name = function.text
+        opening = self.peek()
+        if opening.text != "(":
+            self.fail(f"Write {name}(y, x) with brackets.", function.start, function.end)
+        self.next()
+        self.enter(opening)
+        first = self.parse_sum()
+        comma = self.peek()
+        if comma.text != ",":
+            if comma.kind == "end":
+                self.fail(self.missing_close(opening), opening.start, opening.end)
+            self.fail(f"{name} takes two arguments: {name}(y, x).", function.start, comma.end)
+        self.next()
+        self.operand_after(comma)
+        second = self.parse_sum()
+        closing = self.peek()
+        if closing.text != ")":
+            if closing.kind == "end":
+                self.fail(self.missing_close(opening), opening.start, opening.end)
+            self.fail(f"{name} takes two arguments: {name}(y, x).", function.start, closing.end)
+        self.next()
+        self.depth -= 1
+        return first, second
 
     def parse_simple_argument(self) -> Node:
         tok = self.next()

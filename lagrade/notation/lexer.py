@@ -220,7 +220,7 @@ _TOKEN = re.compile(
     (?P<ws>[ \t\r\n]+)
   | (?P<num>(?:[0-9]+(?:\.[0-9]+)?|\.[0-9]+)(?:[eE][+-]?[0-9]+)?)
   | (?P<name>[A-Za-z_](?:[A-Za-z0-9\u0307\u0308]|_(?:\{[A-Za-z0-9_\u0307\u0308]*\})?)*'*)
-  | (?P<op>\*\*|==|<=|>=|!=|[-+*/^=(),<>;])
+  | (?P<op>\*\*|==|<=|>=|!=|[-+*/^=(),<>;|])
     """,
     re.VERBOSE,
 )
@@ -232,7 +232,6 @@ _CHAR_MESSAGES = {
     "]": "Use round brackets ( ) only.",
     "{": "Use round brackets ( ) only.",
     "}": "Use round brackets ( ) only.",
-    "|": "Write abs(x) for an absolute value.",
     "!": "Factorials are not supported.",
     "#": "Unexpected character '#': comments are not part of an answer.",
     ".": "Unexpected '.': write decimals with digits on both sides, as in 0.5.",

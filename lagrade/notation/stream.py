@@ -23,6 +23,7 @@ class TokenStream:
         self.tokens = tokenize(src)
         self.pos = 0
         self.depth = 0
+        self.bars = 0  # absolute-value bars open around the current position
         self.nodes = 0
         self.found: set[str] = set()
         self.warnings: list[str] = []
