@@ -129,7 +129,7 @@ class FloatSampling:
 
     def decide(self, answer, reference, domains) -> bool | None:
         sampled = sampled_pair(
-            answer, reference, lambda s: sample_ranges(s, domains), self.points, self.seed
+            answer, reference, lambda s, w=1.0: sample_ranges(s, domains, w), self.points, self.seed
         )
         if sampled is None:
             return None
@@ -259,7 +259,9 @@ class WeBWorK:
     name: str = "webwork"
 
     def decide(self, answer, reference, domains) -> bool | None:
-        sampled = sampled_pair(answer, reference, lambda s: [(-2.0, 2.0)] * len(s), 5, self.seed)
+        sampled = sampled_pair(
+            answer, reference, lambda s, w=1.0: [(-2.0, 2.0)] * len(s), 5, self.seed
+        )
         if sampled is None:
             return None
         a, b, _ = sampled[2]

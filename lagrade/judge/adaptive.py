@@ -18,13 +18,16 @@ import sympy as sp
 
 import lagrade.judge.evaluate as ev
 from lagrade.judge.exact import Domains, ExactRational, sorted_symbols
+from lagrade.judge.sampling import WIDEN
 from lagrade.mechanics.domains import REAL
 
 # --- sampling ---------------------------------------------------------------------------------
 
 
-def sample_ranges(symbols: Sequence[sp.Symbol], domains: Domains) -> list[tuple[float, float]]:
-    return [domains.get(s, REAL).sample_range() for s in symbols]
+def sample_ranges(
+    symbols: Sequence[sp.Symbol], domains: Domains, widen: float = 1.0
+) -> list[tuple[float, float]]:
+    return [domains.get(s, REAL).sample_range(widen) for s in symbols]
 
 
 def draw(
@@ -57,14 +60,19 @@ def evaluate_float(program: ev.Program, env: Mapping[sp.Symbol, np.ndarray], n: 
 
 def sampled_pair(answer, reference, ranges_of, n: int, seed: int) -> tuple | None:
     """(program, symbols, (a, b, env)) for the pair at n points where the reference is
-    defined, each symbol drawn in `ranges_of(symbols)`; None when the pair cannot be compiled
-    or too few points are usable (the method has no verdict)."""
+    defined, each symbol drawn in `ranges_of(symbols, widen)` (the unbounded sides stretched
+    by `WIDEN` while no point is found); None when the pair cannot be compiled or too few
+    points are usable (the method has no verdict)."""
     program = compile_pair(answer, reference)
     if program is None:
         return None
     symbols = sorted_symbols(answer, reference)
     rng = np.random.default_rng(seed)
-    got = usable_points(program, symbols, ranges_of(symbols), n, rng)
+    got = None
+    for widen in WIDEN:  # the physical scale first; farther out only where nothing is defined
+        got = usable_points(program, symbols, ranges_of(symbols, widen), n, rng, rounds=2)
+        if got is not None:
+            break
     return None if got is None else (program, symbols, got)
 
 
@@ -86,6 +94,9 @@ def usable_points(
         env = draw(symbols, ranges, batch, rng)
         a, b = evaluate_float(program, env, batch)
         ok = np.isfinite(b)
+        beyond = np.isinf(b)  # past float range (SI quantities to a power): ask mpmath
+        if beyond.any():
+            ok |= beyond & _finite_reference_mp(program, env, beyond)
         idx = np.nonzero(ok)[0][:want]
         kept_a.append(a[idx])
         kept_b.append(b[idx])
@@ -209,7 +220,7 @@ class ExactThenAdaptive:
 
     def decide(self, answer, reference, domains) -> bool | None:
         sampled = sampled_pair(
-            answer, reference, lambda s: sample_ranges(s, domains), self.points, self.seed
+            answer, reference, lambda s, w=1.0: sample_ranges(s, domains, w), self.points, self.seed
         )
         if sampled is None:
             return None
@@ -220,7 +231,10 @@ class ExactThenAdaptive:
         a, b = as_float_array(a, n), as_float_array(b, n)
         bound = _SAFETY * np.finfo(float).eps * (as_float_array(ea, n) + as_float_array(eb, n))
         finite = np.isfinite(a) & np.isfinite(b) & np.isfinite(bound)
-        if np.any(finite & (np.abs(a - b) > bound)):
+        with np.errstate(all="ignore"):  # inf − inf where both are past float range
+            if np.any(finite & (np.abs(a - b) > bound)):
+                return False
+        if _has_branches(program) and _differ_on_branches(program, symbols, domains, self.seed):
             return False
         exact = ExactRational(seed=self.seed).decide(answer, reference, domains)
         if exact is not None:
@@ -228,6 +242,94 @@ class ExactThenAdaptive:
         order = np.argsort(finite, kind="stable")  # points the float test left open first
         chosen = order[: max(self.confirm, int(np.count_nonzero(~finite)))]
         return _adaptive_mp(answer, reference, symbols, env, chosen)
+
+
+# --- principal branches: where real arithmetic has no value, complex arithmetic may ------------
+
+#: Functions whose real values do not cover their complex ones over the reals.
+_BRANCHED = frozenset({"log", "asin", "acos", "acosh", "atanh"})
+#: Points drawn for the complex comparison, and its working precision.
+BRANCH_POINTS = 12
+BRANCH_DIGITS = 30
+
+
+def _finite_reference_mp(program: ev.Program, env: Mapping, where: np.ndarray) -> np.ndarray:
+    """Whether the reference (the program's second output) is finite in mpmath, whose
+    exponents are unbounded, at the points `where`."""
+    out = np.zeros(len(where), dtype=bool)
+    with mpmath.workdps(ev.MP_DIGITS):
+        for i in np.nonzero(where)[0]:
+            point = {s: ev.MP.array(v[i : i + 1]) for s, v in env.items()}
+            try:
+                value = ev.run(program, point, ev.MP)[1]
+            except (ZeroDivisionError, ValueError, OverflowError):
+                continue
+            out[i] = bool(ev.MP.finite(value).all())
+    return out
+
+
+def _has_branches(program: ev.Program) -> bool:
+    """Whether the program takes a root, a non-integer or variable power, or a logarithm-like
+    function: only then can complex values differ where real ones agree or do not exist."""
+    for instr in program.code:
+        if instr[0] == "powe" or (instr[0] == "powc" and not instr[2].is_integer):
+            return True
+        if instr[0] == "fn" and instr[1] in _BRANCHED:
+            return True
+    return False
+
+
+def _differ_on_branches(program: ev.Program, symbols, domains: Domains, seed: int) -> bool:
+    """Compare the way mathematics does: principal branches in complex arithmetic over the
+    declared domain. At points where the reference is finite (real or complex), the answer must
+    equal it; (a^b)^c and a^(b c) agree where a > 0 and differ at a < 0, sqrt(|x|) is real where
+    sqrt(x) is imaginary. mpmath's complex functions are the principal branches (and its zero
+    has no sign, which in complex128 would flip sqrt across its cut)."""
+    rng = np.random.default_rng(seed + 1)
+    ranges = sample_ranges(symbols, domains)
+    with mpmath.workdps(BRANCH_DIGITS):
+        u = mpmath.mpf(2) ** (-mpmath.mp.prec)
+        for _ in range(BRANCH_POINTS):
+            values = {
+                s: mpmath.mpf(float(rng.uniform(lo, hi)))
+                for s, (lo, hi) in zip(symbols, ranges, strict=True)
+            }
+            try:
+                (a, ea), (b, eb) = _bounded_run(program, values, _MpComplex)
+            except (ZeroDivisionError, ValueError, OverflowError):
+                continue
+            if not (_finite(b) and _finite(eb)):
+                continue  # no reference value here
+            if not (_finite(a) and _finite(ea)):
+                return True
+            if abs(a - b) > _SAFETY * u * (ea + eb) + mpmath.mpf(10) ** (-BRANCH_DIGITS // 2) * abs(
+                b
+            ):
+                return True
+    return False
+
+
+def _finite(z) -> bool:
+    return not (mpmath.isnan(z) or mpmath.isinf(z))
+
+
+class _MpComplex:
+    """mpmath scalars with complex results kept: principal branches (a backend of
+    `_bounded_run`)."""
+
+    sin, cos, tan, exp, log = mpmath.sin, mpmath.cos, mpmath.tan, mpmath.exp, mpmath.log
+    sqrt, asin, acos, atan = mpmath.sqrt, mpmath.asin, mpmath.acos, mpmath.atan
+    sinh, cosh, tanh = mpmath.sinh, mpmath.cosh, mpmath.tanh
+    asinh, acosh, atanh = mpmath.asinh, mpmath.acosh, mpmath.atanh
+    power, sign = staticmethod(mpmath.power), staticmethod(mpmath.sign)
+    abs = staticmethod(abs)
+    const = staticmethod(ev.MP.const)
+
+    @staticmethod
+    def atan2(y, x):
+        if isinstance(y, mpmath.mpc) or isinstance(x, mpmath.mpc):
+            return mpmath.mpf("nan")  # atan2 is a real function
+        return mpmath.atan2(y, x)
 
 
 def _mp_bounded(program: ev.Program, values: Mapping) -> tuple:

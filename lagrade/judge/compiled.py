@@ -9,7 +9,15 @@ from dataclasses import dataclass
 import numpy as np
 import sympy as sp
 
-from lagrade.judge.evaluate import FLOAT, Program, compile_program, run, run_hyperdual, top_terms
+from lagrade.judge.evaluate import (
+    FLOAT,
+    MP,
+    Program,
+    compile_program,
+    run,
+    run_hyperdual,
+    top_terms,
+)
 
 
 @dataclass(frozen=True)
@@ -52,7 +60,10 @@ def to_length(x, n: int, backend=FLOAT):
 
 
 def finite_mask(compiled: Sequence[Compiled]) -> Callable[[dict], np.ndarray]:
-    """A validity test for sampling: every compiled reference is finite at the point."""
+    """A validity test for sampling: every compiled reference is finite at the point. A value
+    beyond float range (SI quantities to a power: (M r)^10 with M = 2e30 kg, r = 1.5e11 m) is
+    finite all the same when high precision, whose exponents are unbounded, says so: judging
+    must not depend on float range."""
 
     def valid(env: dict) -> np.ndarray:
         n = len(next(iter(env.values())))
@@ -60,7 +71,24 @@ def finite_mask(compiled: Sequence[Compiled]) -> Callable[[dict], np.ndarray]:
         with np.errstate(all="ignore"):
             for c in compiled:
                 value, size = c.values(env)
-                ok &= np.isfinite(to_length(value, n)) & np.isfinite(to_length(size, n))
+                finite = np.isfinite(to_length(value, n)) & np.isfinite(to_length(size, n))
+                huge = ~finite & np.isinf(to_length(size, n))
+                if huge.any():
+                    finite |= huge & _finite_in_mp(c, env, huge)
+                ok &= finite
         return ok
 
     return valid
+
+
+def _finite_in_mp(compiled: Compiled, env: Mapping, where: np.ndarray) -> np.ndarray:
+    """Whether the value is finite at the points `where`, in mpmath (no overflow)."""
+    out = np.zeros(len(where), dtype=bool)
+    for i in np.nonzero(where)[0]:
+        point = {s: MP.array(np.atleast_1d(v)[i : i + 1]) for s, v in env.items()}
+        try:
+            value, size = compiled.values(point, MP)
+        except (ZeroDivisionError, ValueError, OverflowError):
+            continue
+        out[i] = bool(MP.finite(value).all() and MP.finite(size).all())
+    return out

@@ -69,8 +69,8 @@ class Space:
         free_set = set(self.parameters) if free is None else set(free)
         chosen: list[dict[sp.Symbol, np.ndarray]] = []
         for _ in range(groups):
-            for _attempt in range(6):
-                block = self._group(rng, free_set, per_group)
+            for attempt in range(len(WIDEN) * 2):
+                block = self._group(rng, free_set, per_group, widen=WIDEN[attempt // 2])
                 if valid is None:
                     chosen.append(block)
                     break
@@ -78,7 +78,9 @@ class Space:
                 for _redraw in range(4):
                     if ok.all():
                         break
-                    fresh = self._group(rng, free_set, per_group, params_from=block)
+                    fresh = self._group(
+                        rng, free_set, per_group, params_from=block, widen=WIDEN[attempt // 2]
+                    )
                     ok_fresh = valid(fresh)
                     for s in block:
                         block[s] = np.where(ok, block[s], fresh[s])
@@ -94,7 +96,9 @@ class Space:
         group = np.repeat(np.arange(len(chosen)), per_group)
         return Points(env, group)
 
-    def _group(self, rng, free: set, k: int, params_from: dict | None = None) -> dict:
+    def _group(
+        self, rng, free: set, k: int, params_from: dict | None = None, widen: float = 1.0
+    ) -> dict:
         block: dict[sp.Symbol, np.ndarray] = {}
         for s, dom in self.parameters.items():
             if params_from is not None:
@@ -102,7 +106,7 @@ class Space:
             elif s not in free and s in self.values:
                 block[s] = np.full(k, float(self.values[s]))
             else:
-                block[s] = np.full(k, rng.uniform(*dom.sample_range()))
+                block[s] = np.full(k, rng.uniform(*dom.sample_range(widen)))
         for j in self.jets:
             lo, hi = self.coordinate_domains.get(j.name) or coordinate_range(j.name)
             block[j.q] = _away_from_zero(rng, lo, hi, k)
@@ -110,6 +114,11 @@ class Space:
             block[j.ddot] = _away_from_zero(rng, -2.0, 2.0, k)
         block[t] = rng.uniform(0.1, 3.0, k)
         return block
+
+
+#: How far the unbounded sides of the domains are stretched on successive attempts to find
+#: points where the reference is defined (two attempts each): the physical scale first.
+WIDEN = (1.0, 10.0, 100.0)
 
 
 def _away_from_zero(rng, lo: float, hi: float, k: int) -> np.ndarray:

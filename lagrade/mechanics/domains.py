@@ -110,22 +110,27 @@ class Domain:
         below = value < hi if self.upper_open else value <= hi
         return above and below
 
-    def sample_range(self) -> tuple[float, float]:
+    def sample_range(self, widen: float = 1.0) -> tuple[float, float]:
         """A finite range to draw test points from, strictly inside the domain.
 
         Unbounded sides get a physically sized span (0.5 … 3 for positive quantities, ±3 for
         reals), so that sampled values are neither tiny nor huge; closed ends are kept slightly
         inside so that a point never lands on a boundary where an expression may be singular.
+        `widen` stretches the unbounded sides' span (10, 100): where an expression is defined
+        only far out (sqrt(y − 2)·sqrt(y − 6) for real y: y ≥ 6), a search finds it.
         """
         lo, hi = float(self.lower), float(self.upper)
+        span = 3.0 * widen
         if math.isinf(lo) and math.isinf(hi):
-            return (-3.0, 3.0)
+            return (-span, span)
         if math.isinf(hi):
             return (
-                (lo + 0.5, lo + 3.0) if lo == 0 else (lo + 0.1 * abs(lo) + 0.1, lo + 3.0 + abs(lo))
+                (lo + 0.5, lo + span)
+                if lo == 0
+                else (lo + 0.1 * abs(lo) + 0.1, lo + span + abs(lo))
             )
         if math.isinf(lo):
-            return (hi - 3.0 - abs(hi), hi - 0.1 * abs(hi) - 0.1)
+            return (hi - span - abs(hi), hi - 0.1 * abs(hi) - 0.1)
         margin = 0.02 * (hi - lo)
         return (lo + margin, hi - margin)
 
