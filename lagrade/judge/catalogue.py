@@ -98,6 +98,18 @@ class Split:
     V: sp.Expr
 
 
+#: Points where a nonzero answer's values are not zero that a diagnosis needs.
+MIN_EVIDENCE = 3
+
+
+def underflowed(answer: Compiled, values: tuple[np.ndarray, np.ndarray]) -> bool:
+    """A nonzero answer whose values are 0 at (nearly) every point — (x − b)^5001 at
+    |x − b| < 0.86 underflows — matches any mutant that underflows too: no evidence, so no
+    mistake is named (when unsure, say less, never something false)."""
+    size = values[1]
+    return answer.expr != 0 and np.count_nonzero(size > 0) < min(MIN_EVIDENCE, size.size)
+
+
 class Catalogue:
     """The mutations of one question, built on demand per part — only when a wrong answer needs a
     diagnosis, and then only as far as the first mutant that matches (`LazyList`) — and kept
@@ -294,6 +306,8 @@ class Catalogue:
         """The first mutant with the answer's values at the points."""
         with np.errstate(all="ignore"):
             values = full(answer.values(points.env), points.n)
+        if underflowed(answer, values):
+            return None
         return self._first(
             mutants,
             "value-stack",
@@ -307,6 +321,8 @@ class Catalogue:
         conserved quantity)."""
         with np.errstate(all="ignore"):
             values = full(answer.values(points.env), points.n)
+        if underflowed(answer, values):
+            return None
         return self._first(
             mutants,
             "value-stack",
