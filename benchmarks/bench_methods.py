@@ -1,4 +1,7 @@
-"""Speed against accuracy of every expression-equivalence method, over the labelled corpus.
+"""Speed against accuracy of every expression-equivalence method, over the labelled corpus:
+pairs.jsonl (the bank's rewrites and mutations, and hand-written hard cases, real-valued
+semantics) and external.jsonl (cases from public sources nobody here wrote: instructors'
+vocabulary, principal branches, SI scale; labels by complex arithmetic).
 
 Run:  python benchmarks/bench_methods.py [--limit 2] [--methods NAME ...] [--every K]
 Writes docs/methods.csv and, when matplotlib is installed (pip install -e ".[charts]"),
@@ -8,10 +11,10 @@ Each method runs in its own forked worker process (fresh sympy caches, so no met
 another's work), which decides the corpus pairs one at a time; a check that takes longer than
 --limit seconds is killed with SIGKILL (C-level work included), counted as a timeout, and a new
 worker takes over. Times are measured inside the worker around `decide` alone (parsing is done
-once, before). First every label is verified again by benchmarks/corpus/verify_labels.py
-(--skip-verify skips that); a label that does not verify stops the run. A method's error rate
-counts every check that did not end in the right verdict: false accepts, false rejects,
-undecided (None or an exception) and timeouts.
+once, before). First every label is verified again by benchmarks/corpus/verify_labels.py and,
+for the external cases, verify_external.py (--skip-verify skips that); a label that does not
+verify stops the run. A method's error rate counts every check that did not end in the right
+verdict: false accepts, false rejects, undecided (None or an exception) and timeouts.
 """
 
 from __future__ import annotations
@@ -31,8 +34,8 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
-from benchmarks.corpus import verify_labels  # noqa: E402
-from benchmarks.corpus.corpus import ParsedPair, load  # noqa: E402
+from benchmarks.corpus import verify_external, verify_labels  # noqa: E402
+from benchmarks.corpus.corpus import EXTERNAL, ParsedPair, load  # noqa: E402
 from benchmarks.methods import DEFAULT_NAME, Method, all_methods  # noqa: E402
 
 DOCS = ROOT / "docs"
@@ -301,11 +304,14 @@ def main() -> int:
     parser.add_argument("--out", type=Path, default=DOCS / "methods.csv", help="CSV path")
     parser.add_argument("--skip-verify", action="store_true", help="do not re-verify the labels")
     args = parser.parse_args()
-    pairs = load()[:: args.every]
+    own, external = load()[:: args.every], load(EXTERNAL)[:: args.every]
+    pairs = own + external
     if not args.skip_verify:
         t0 = time.perf_counter()
-        checks = [verify_labels.check(p) for p in pairs]
+        checks = [verify_labels.check(p) for p in own]
         bad = [c.id for c in checks if not c.ok]
+        bad += [p.id for p in external if not verify_external.label_holds(p)]
+        print(f"external labels verified (complex arithmetic): {len(external)} pairs")
         proved = sum(c.proof.startswith("proved") for c in checks if c.label)
         print(
             f"labels verified independently: {len(checks) - len(bad)}/{len(checks)} at 60 points "
@@ -335,9 +341,9 @@ def main() -> int:
             ("false reject", r.false_rejects),
             ("timeout", r.timeouts),
         ):
-            hard = [i for i in ids if i.startswith("hard/")]
+            hard = [i for i in ids if i.startswith(("hard/", "external/"))]
             if hard:
-                print(f"    {label}: " + ", ".join(i.removeprefix("hard/") for i in hard))
+                print(f"    {label}: " + ", ".join(hard))
     write_csv(results, args.out)
     print(f"wrote {args.out.relative_to(ROOT) if args.out.is_relative_to(ROOT) else args.out}")
     if chart(results, args.out.with_suffix("")):

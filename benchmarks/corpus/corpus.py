@@ -20,6 +20,10 @@ from lagrade.mechanics.domains import REAL, Domain
 from lagrade.notation.parse import Vocabulary, parse_expression
 
 PAIRS = Path(__file__).with_name("pairs.jsonl")
+#: Cases from public sources nobody here wrote (sympy's tests, textbooks), each with its source;
+#: labels by principal branches in complex arithmetic where the reference is finite
+#: (tests/stability/test_external_corpus.py checks them with sympy's own evaluation).
+EXTERNAL = Path(__file__).with_name("external.jsonl")
 
 #: Categories of the hand-written hard cases (the bank's pairs are `bank_rewrite`/`bank_mutation`).
 HARD_CATEGORIES = (
@@ -47,12 +51,15 @@ class Pair:
     parameters: Mapping[str, str] = field(default_factory=dict)
     domains: Mapping[str, str] = field(default_factory=dict)
     note: str = ""
+    source: str = ""  # where a case nobody here wrote comes from (external.jsonl)
 
     def to_json(self) -> str:
         record = asdict(self)
         record["coordinates"] = list(self.coordinates)
         record["parameters"] = dict(self.parameters)
         record["domains"] = dict(self.domains)
+        if not record["source"]:  # only the external cases carry one
+            del record["source"]
         return json.dumps(record, ensure_ascii=False, sort_keys=False)
 
     @classmethod
