@@ -30,9 +30,15 @@ _MD_SPECIALS = re.compile(r"([\\`*_{}\[\]#!|<>&~$])")
 _MD_LINE_START = re.compile(r"^(\s*)([-+=]|\d+(?=[.)]))")
 
 
+#: TeX's text ligatures: `''` and ``` `` ``` print as curly double quotes, `--` as a dash.
+_LIGATURES = re.compile(r"(?<=')(?=')|(?<=`)(?=`)|(?<=-)(?=-)")
+
+
 def tex_escape(value: Any) -> str:
-    """Text made safe for LaTeX: every special character written as a command or escaped."""
-    return "".join(_TEX_SPECIALS.get(ch, ch) for ch in str(value))
+    """Text made safe for LaTeX: every special character written as a command or escaped, and
+    TeX's ligatures broken (`r''` stays two primes, not a closing double quote)."""
+    escaped = "".join(_TEX_SPECIALS.get(ch, ch) for ch in str(value))
+    return _LIGATURES.sub("{}", escaped)
 
 
 def md_escape(value: Any) -> str:

@@ -67,3 +67,26 @@ def unit_formats(unit: str) -> dict[str, Any]:
         "html": Markup("".join(html)),
         "tex": rf"$\mathrm{{{''.join(tex)}}}$",
     }
+
+
+class Number(str):
+    """A handout value as each format sets it: the plain text as the grader reads it back
+    (`6.42e+23`, the `str` itself) and, for print, 6.42×10²³ (`.text`, Markdown), the same with
+    <sup> in HTML and `6.42\\times10^{23}` (math mode) in LaTeX — never `e+23` on a page."""
+
+    text: str
+    html: Markup
+    tex: str
+
+    def __new__(cls, value: float) -> Number:
+        plain = f"{value:g}"
+        self = super().__new__(cls, plain)
+        mantissa, _, exponent = plain.partition("e")
+        if exponent:
+            power = str(int(exponent))
+            self.text = f"{mantissa}×10{power.translate(_SUPERSCRIPT)}"
+            self.html = Markup(f"{escape(mantissa)}×10<sup>{escape(power.replace('-', '−'))}</sup>")
+            self.tex = f"{mantissa}\\times10^{{{power}}}"
+        else:
+            self.text, self.html, self.tex = plain, Markup(escape(plain)), plain
+        return self

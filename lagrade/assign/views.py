@@ -17,7 +17,7 @@ from lagrade.assign.figures import draw
 from lagrade.assign.prose import Prose, render_prose
 from lagrade.assign.symbols import part_symbols
 from lagrade.assign.templating import toml_literal
-from lagrade.assign.units import unit_formats
+from lagrade.assign.units import Number, unit_formats
 from lagrade.assign.variants import VariantChoice
 from lagrade.mechanics.scene import RigidBody, SceneVariant
 from lagrade.notation import printer as rm
@@ -195,7 +195,7 @@ def _parameters(choice: VariantChoice, variant: SceneVariant) -> list[dict[str, 
             {
                 "name": p.name,
                 "symbol": rm.render(variant.parameter_symbols[p.name]),
-                "value": None if value is None else f"{value:g}",
+                "value": None if value is None else Number(value),
                 "unit": p.unit,
                 "units": unit_formats(p.unit),
                 "description": _described(variant, p.description),

@@ -6,6 +6,7 @@ import tomllib
 from pathlib import Path
 
 from lagrade.assign.templating import md_escape, tex_escape, toml_string
+from lagrade.assign.units import Number
 
 from .conftest import write_roster
 
@@ -46,3 +47,26 @@ def test_filters() -> None:
     assert tex_escape("a_b & c") == r"a\_b \& c"
     assert md_escape("<b>*x*</b>") == r"\<b\>\*x\*\</b\>"
     assert tomllib.loads("v = " + toml_string('a"b\\c\nd\x01'))["v"] == 'a"b\\c\nd\x01'
+
+
+def test_tex_ligatures_are_broken():
+    """Issue 15: `r''` in prose printed as r” (TeX's closing-quote ligature) in the PDF; `--`
+    as a dash. Every statement goes through tex_escape, so no scene can bring one back."""
+    assert tex_escape("m r'' = -grad V") == "m r'{}' = -grad V"
+    assert tex_escape("a--b") == "a-{}-b"
+    assert tex_escape("``x") == "`{}`x"
+    assert tex_escape("Newton's law") == "Newton's law"  # a lone apostrophe is left alone
+
+
+def test_handout_values_are_typeset_not_e_notation():
+    """Issue 15: SI values printed as 6.42e+23 in every format; now 6.42×10²³ (Markdown),
+    6.42×10<sup>23</sup> (HTML), 6.42\\times10^{23} (LaTeX), and the plain text stays what the
+    grader reads back."""
+    n = Number(6.42e23)
+    assert str(n) == "6.42e+23"
+    assert n.text == "6.42×10²³"
+    assert str(n.html) == "6.42×10<sup>23</sup>"
+    assert n.tex == "6.42\\times10^{23}"
+    small = Number(6.674e-11)
+    assert small.text == "6.674×10⁻¹¹" and "<sup>−11</sup>" in str(small.html)
+    assert Number(9.81).tex == Number(9.81).text == "9.81"

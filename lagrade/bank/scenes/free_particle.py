@@ -22,7 +22,7 @@ SCENE = Scene(
         "V(x, y, z); use its Cartesian coordinates {x}, {y}, {z} (z up). Take the {potential} "
         "potential: harmonic means V = k (x^2 + y^2 + z^2)/2, gravity means V = m g z, "
         "anisotropic means V = k (x^2 + y^2)/2 + k_z z^2/2. Show that the Euler-Lagrange "
-        "equations are Newton's second law m r'' = -grad V."
+        "equations are Newton's second law: m times the acceleration equals -grad V."
     ),
     coordinates=("x", "y", "z"),
     parameters=(
