@@ -124,31 +124,63 @@ def values_text(
 
 
 def acceleration_text(
-    problem: Problem, points: Points, outcome: Outcome, equation: Compiled
+    problem: Problem,
+    points: Points,
+    outcome: Outcome,
+    equation: Compiled,
+    position: int | None = None,
 ) -> str:
-    """For one coordinate, ", where your equation gives θ̈ = −3.2 rad/s² and the reference
-    θ̈ = −9.81 rad/s²" at the witness (handout parameter values); nothing for several
-    coordinates (the accelerations are then coupled) or when not clear."""
-    if len(problem.jets) != 1 or outcome.where is None:
+    """ ", where your equation gives θ̈ = −3.2 rad/s² and the reference θ̈ = −9.81 rad/s²" at
+    the witness (handout parameter values). With several coordinates the accelerations are
+    coupled: the equation is read for the coordinate of its `position` in a list of one
+    equation per coordinate (else for the acceleration it weighs most), the others taken as
+    Lagrange's equations give them, and the sentence says so. Nothing when not clear."""
+    if outcome.where is None:
         return ""
-    env = _handout_point(problem, points, outcome.where, {problem.jets[0].q})
+    jets = problem.jets
+    env = _handout_point(problem, points, outcome.where, {j.q for j in jets})
     if env is None:
         return ""
+    n = len(jets)
     try:
         with np.errstate(all="ignore"):
-            mine = equation_rows([equation], problem.jets, env).coef[0, 0]
-            theirs = equation_rows(problem.euler_lagrange, problem.jets, env).coef[0, 0]
-            pair = _shown_pair(-mine[1] / mine[0], -theirs[1] / theirs[0])
-    except UnsupportedExpression:
+            mine = equation_rows([equation], jets, env).coef[0, 0].astype(float)
+            rows = equation_rows(problem.euler_lagrange, jets, env).coef[0].astype(float)
+            reference = np.linalg.solve(rows[:, :n], -rows[:, n])  # every q̈ of the motion
+    except (UnsupportedExpression, np.linalg.LinAlgError):
         return ""
+    k = (
+        position
+        if position is not None and mine[position] != 0
+        else int(np.argmax(np.abs(mine[:n])))
+    )
+    if mine[k] == 0:
+        return ""
+    others = [j for j in range(n) if j != k]
+    with np.errstate(all="ignore"):
+        gives = -(mine[n] + sum(mine[j] * reference[j] for j in others)) / mine[k]
+    pair = _shown_pair(gives, reference[k])
     if pair is None:
         return ""
-    name = symbol_text(problem.jets[0].name, 2)
-    unit = " rad/s²" if problem.jets[0].name in angles(problem) else ""
+    name = symbol_text(jets[k].name, 2)
+    unit = _acceleration_unit(problem, jets[k].name)
+    taken = ""
+    if others:
+        values = [
+            f"{symbol_text(jets[j].name, 2)} = {rounded(float(reference[j]))}"
+            f"{_acceleration_unit(problem, jets[j].name)}"
+            for j in others
+        ]
+        pronoun = "it" if len(others) == 1 else "them"
+        taken = f" (with {', '.join(values)} as Lagrange's equations give {pronoun})"
     return (
         f", where your equation gives {name} = {pair[0]}{unit} and the reference "
-        f"{name} = {pair[1]}{unit}"
+        f"{name} = {pair[1]}{unit}{taken}"
     )
+
+
+def _acceleration_unit(problem: Problem, name: str) -> str:
+    return " rad/s²" if name in angles(problem) else ""
 
 
 def method_name(*outcomes: Outcome) -> str:

@@ -97,7 +97,9 @@ def check_eom(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
                 + where_text(
                     witness_point(points, out),
                     problem,
-                    acceleration_text(problem, points, out, compiled[k]),
+                    acceleration_text(
+                        problem, points, out, compiled[k], entry[k] if total == n else None
+                    ),
                 )
                 + "."
             )
