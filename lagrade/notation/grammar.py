@@ -301,22 +301,22 @@ class Parser(NameRules):
         self.next()
         self.enter(opening)
         first = self.parse_sum()
-        comma = self.peek()
-        if comma.text != ",":
-            if comma.kind == "end":
-                self.fail(self.missing_close(opening), opening.start, opening.end)
-            self.fail(f"{name} takes two arguments: {name}(y, x).", function.start, comma.end)
-        self.next()
+        comma = self.expect_in_call(",", opening, function)
         self.operand_after(comma)
         second = self.parse_sum()
-        closing = self.peek()
-        if closing.text != ")":
-            if closing.kind == "end":
-                self.fail(self.missing_close(opening), opening.start, opening.end)
-            self.fail(f"{name} takes two arguments: {name}(y, x).", function.start, closing.end)
-        self.next()
+        self.expect_in_call(")", opening, function)
         self.depth -= 1
         return first, second
+
+    def expect_in_call(self, text: str, opening: Token, function: Token) -> Token:
+        """The ',' or ')' of a call of two arguments, or the message for what stands there."""
+        tok = self.peek()
+        if tok.text != text:
+            if tok.kind == "end":
+                self.fail(self.missing_close(opening), opening.start, opening.end)
+            name = function.text
+            self.fail(f"{name} takes two arguments: {name}(y, x).", function.start, tok.end)
+        return self.next()
 
     def parse_simple_argument(self) -> Node:
         tok = self.next()
