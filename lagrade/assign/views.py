@@ -17,6 +17,7 @@ from lagrade.assign.figures import draw
 from lagrade.assign.prose import Prose, render_prose
 from lagrade.assign.symbols import part_symbols
 from lagrade.assign.templating import toml_literal
+from lagrade.assign.tidy import tidy
 from lagrade.assign.units import Number, unit_formats
 from lagrade.assign.variants import VariantChoice
 from lagrade.mechanics.scene import RigidBody, SceneVariant
@@ -86,6 +87,11 @@ def symbolic_solution(scene_id: str, names: tuple, options: tuple) -> dict[str, 
     def eq(lhs: sp.Basic, rhs: sp.Basic) -> rm.Math:
         return rm.equation(lhs, rhs, coords)
 
+    motion = [s for j in v.jets for s in (j.dot, j.ddot)]
+
+    def neat(expr: sp.Expr) -> sp.Expr:
+        return tidy(expr, motion)
+
     system = v.system
     parameters = set(v.parameter_symbols)
     energy = next(n for n in ("h", "H", "E_J") if n not in parameters and n not in coords)
@@ -116,17 +122,18 @@ def symbolic_solution(scene_id: str, names: tuple, options: tuple) -> dict[str, 
         "k": len(constraints),
         "dof": v.dof,
         "transformation": [eq(sp.Symbol(k), e) for k, e in v.transformation.items()],
-        "T": math(v.kinetic_energy),
-        "V": math(v.potential_energy),
-        "L": math(v.lagrangian),
+        "T": math(neat(v.kinetic_energy)),
+        "V": math(neat(v.potential_energy)),
+        "L": math(neat(v.lagrangian)),
         "momenta": [
-            eq(label(f"p_{c}"), p) for c, p in zip(coords, system.generalized_momenta, strict=True)
+            eq(label(f"p_{c}"), neat(p))
+            for c, p in zip(coords, system.generalized_momenta, strict=True)
         ],
-        "eom": [eq(e, 0) for e in system.euler_lagrange],
+        "eom": [eq(neat(e), 0) for e in system.euler_lagrange],
         "cyclic": [math(sp.Symbol(c)) for c in system.cyclic_coordinates],
         "cyclic_names": list(system.cyclic_coordinates),
         "conserved": [
-            {"name": name, "math": eq(label(name), q)}
+            {"name": name, "math": eq(label(name), neat(q))}
             for name, q in system.conserved_quantities.items()
         ],
         "figure": draw(v),
