@@ -14,6 +14,7 @@ from fractions import Fraction
 import numpy as np
 import sympy as sp
 
+import lagrade.judge.evaluate as ev
 from lagrade.mechanics.domains import REAL, Domain
 
 Domains = Mapping[sp.Symbol, Domain]
@@ -179,58 +180,75 @@ def _weierstrass_ready(answer: sp.Expr, reference: sp.Expr) -> tuple[sp.Expr, sp
     return out[0], out[1]
 
 
-def _rational_in(lo: float, hi: float, rng: np.random.Generator) -> sp.Rational:
-    """A random rational inside (lo, hi): a float drawn there, read exactly, so that the points
-    keep the scale of the domain (1e-27 stays 1e-27, not a rounded 0)."""
-    value = Fraction(float(rng.uniform(lo, hi)))  # the float itself, exactly (dyadic)
-    return sp.Rational(value.numerator, value.denominator)
-
-
 def _exact_compare(a: sp.Expr, b: sp.Expr, domains: Domains, points: int, rng) -> bool | None:
+    """Compare at `points` random rational points, exactly. Each trig atom stands for a
+    placeholder set from the half-angle tangent u, the pair is compiled once by the project's
+    evaluator and run on Fractions: no sympy arithmetic per point."""
     symbols = sorted_symbols(a, b)
     trig_syms = sorted({f.args[0] for e in (a, b) for f in e.atoms(*_TRIG)}, key=str)
+    stand_in = {f(y): sp.Dummy(f"{f.__name__}_{y}") for y in trig_syms for f in _TRIG}
+    try:
+        prog_a = ev.compile_program([a.xreplace(stand_in)])
+        prog_b = ev.compile_program([b.xreplace(stand_in)])
+    except ev.UnsupportedExpression:
+        return None
+    if any(op[0] not in _RATIONAL_OPS for prog in (prog_a, prog_b) for op in prog.code):
+        return None
     done = 0
     for _ in range(points * 4):
-        subs: dict[sp.Basic, sp.Expr] = {}
+        env: dict[sp.Basic, Fraction] = {}
         for s in symbols:
-            dom = _domain_of(s, domains)
-            lo, hi = dom.sample_range()
-            subs[s] = _rational_in(lo, hi, rng)
+            env[s] = _fraction_in(*_domain_of(s, domains).sample_range(), rng)
         for y in trig_syms:
             lo, hi = _domain_of(y, domains).sample_range()
-            u_lo, u_hi = _half_tan_range(lo, hi)
-            u = _rational_in(u_lo, u_hi, rng)
-            den = 1 + u**2
-            s_val, c_val = 2 * u / den, (1 - u**2) / den
-            subs.update(
-                {
-                    sp.sin(y): s_val,
-                    sp.cos(y): c_val,
-                }
-            )
-            if c_val != 0:
-                subs[sp.tan(y)] = s_val / c_val
-                subs[sp.sec(y)] = 1 / c_val
-            if s_val != 0:
-                subs[sp.cot(y)] = c_val / s_val
-                subs[sp.csc(y)] = 1 / s_val
-        # Functions first (their arguments are symbols that are substituted next).
-        funcs = {k: v for k, v in subs.items() if not k.is_Symbol}
-        plain = {k: v for k, v in subs.items() if k.is_Symbol}
-        va = a.xreplace(funcs).xreplace(plain)
-        vb = b.xreplace(funcs).xreplace(plain)
-        if not (vb.is_Rational and vb.is_finite):
+            u = _fraction_in(*_half_tan_range(lo, hi), rng)
+            den = 1 + u * u
+            sin, cos = 2 * u / den, (1 - u * u) / den
+            env.update({stand_in[sp.sin(y)]: sin, stand_in[sp.cos(y)]: cos})
+            if cos:
+                env.update({stand_in[sp.tan(y)]: sin / cos, stand_in[sp.sec(y)]: 1 / cos})
+            if sin:
+                env.update({stand_in[sp.cot(y)]: cos / sin, stand_in[sp.csc(y)]: 1 / sin})
+        vb = _exact_value(prog_b, env)
+        if vb is None:
             continue  # the reference is undefined here: redraw
-        if not (va.is_Rational and va.is_finite):
-            if va.has(sp.zoo, sp.nan, sp.oo, -sp.oo):
-                return False
-            return None
-        if va != vb:
-            return False
+        va = _exact_value(prog_a, env)
+        if va is None or va != vb:
+            return False  # undefined where the reference is defined, or different
         done += 1
         if done >= points:
             return True
     return True if done else None
+
+
+#: The instructions a rational function compiles to (after the trig atoms are stood in for).
+_RATIONAL_OPS = frozenset({"in", "const", "add", "mul", "powi"})
+
+
+class _FractionBackend:
+    """Exact rational arithmetic for `evaluate.run`: constants are Fractions; anything else
+    never reaches it (`_RATIONAL_OPS`)."""
+
+    @staticmethod
+    def const(value: sp.Expr) -> Fraction:
+        if not isinstance(value, sp.Rational):
+            raise _OutOfScope(f"constant {value}")
+        return Fraction(int(value.p), int(value.q))
+
+
+def _exact_value(program, env: Mapping) -> Fraction | None:
+    """The program's value at a point, exactly; None where it is undefined (a division by
+    zero, or a trig function without a value there)."""
+    try:
+        return ev.run(program, env, _FractionBackend)[0]
+    except (ZeroDivisionError, ev.UnsupportedExpression, _OutOfScope):
+        return None
+
+
+def _fraction_in(lo: float, hi: float, rng: np.random.Generator) -> Fraction:
+    """A random rational inside (lo, hi): a float drawn there, read exactly, so that the points
+    keep the scale of the domain (1e-27 stays 1e-27, not a rounded 0)."""
+    return Fraction(float(rng.uniform(lo, hi)))
 
 
 def _domain_of(symbol: sp.Symbol, domains: Domains) -> Domain:
