@@ -101,6 +101,8 @@ def symbolic_solution(scene_id: str, names: tuple, options: tuple) -> dict[str, 
         if name == "h":
             return sp.Symbol(energy)
         head, _, sub = name.partition("_")
+        if head == "p" and sub in coords:  # the printer sets p with the coordinate below it
+            return sp.Symbol(name)
         return sp.Symbol(f"{head}_{sub.replace('_', '')}" if sub else head)
 
     constraints = [

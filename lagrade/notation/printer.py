@@ -65,7 +65,13 @@ def symbol_names(coordinates: Iterable[str]) -> dict[sp.Symbol, str]:
         j = mech.jet(c)
         names[j.dot] = dotted_latex(c, mech.DOT)
         names[j.ddot] = dotted_latex(c, mech.DDOT)
+        names[sp.Symbol(MOMENTUM + c)] = f"p_{{{_subscripted_latex(c)}}}"
     return names
+
+
+#: The prefix of a generalized momentum's name, p_<coordinate>: printed p with the coordinate
+#: as its subscript (p_θ₁, p_{x_M}), not the coordinate's name spelled out (p_theta1).
+MOMENTUM = "p_"
 
 
 class _JetMathMLPrinter(MathMLPresentationPrinter):
@@ -76,6 +82,12 @@ class _JetMathMLPrinter(MathMLPresentationPrinter):
         self.coordinates = tuple(coordinates)
 
     def _print_Symbol(self, sym, style="plain"):
+        coordinate = sym.name.removeprefix(MOMENTUM)
+        if coordinate != sym.name and coordinate in self.coordinates:
+            msub = self.dom.createElement("msub")
+            msub.appendChild(super()._print_Symbol(sp.Symbol("p"), style))
+            msub.appendChild(super()._print_Symbol(sp.Symbol(coordinate), style))
+            return msub
         split = _split_jet(sym.name, self.coordinates)
         if split is None:
             return super()._print_Symbol(sym, style)
