@@ -122,6 +122,12 @@ def add_check_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--quantity", help="with --scene and --part expression: which quantity")
     parser.add_argument("--lagrangian", help="an ad-hoc reference Lagrangian (with --coordinates)")
     parser.add_argument("--expression", help="an ad-hoc reference expression (with --parameters)")
+    parser.add_argument(
+        "--imaginary-unit",
+        choices=("I", "i", "j"),
+        help="with --expression: how the imaginary unit is spelled in a question about complex "
+        "numbers (otherwise I, i, j are ordinary names)",
+    )
     parser.add_argument("--coordinates", default="", help="comma-separated coordinates, e.g. theta")
     parser.add_argument(
         "--parameters",
@@ -198,6 +204,8 @@ def problem_from_arguments(args: argparse.Namespace) -> dict[str, Any]:
     coords = [c.strip() for c in args.coordinates.split(",") if c.strip()]
     if coords or chosen[0] == "lagrangian":
         spec["coordinates"] = coords
+    if chosen[0] == "expression" and args.imaginary_unit:
+        spec["imaginary_unit"] = args.imaginary_unit
     return spec
 
 

@@ -41,10 +41,16 @@ def draw(
 
 
 def compile_pair(answer: sp.Expr, reference: sp.Expr) -> ev.Program | None:
+    """The pair as one program, or None when these methods cannot judge it: an expression the
+    evaluator does not know, or complex arithmetic (the imaginary unit, where a question
+    declares it), which the real-valued error bounds here do not cover."""
     try:
-        return ev.compile_program([answer, reference])
+        program = ev.compile_program([answer, reference])
     except ev.UnsupportedExpression:
         return None
+    if any(instr[0] == "const" and instr[1] is sp.I for instr in program.code):
+        return None
+    return program
 
 
 def as_float_array(values, n: int) -> np.ndarray:

@@ -55,7 +55,8 @@ def total(items: Iterable):
 def to_length(x, n: int, backend=FLOAT):
     """x as an array of length n (constants come out of the evaluator as scalars)."""
     if np.ndim(x) == 0:
-        return np.full(n, x, dtype=float if backend is FLOAT else object)
+        kind = (complex if np.iscomplexobj(x) else float) if backend is FLOAT else object
+        return np.full(n, x, dtype=kind)
     return x
 
 

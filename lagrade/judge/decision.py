@@ -41,7 +41,8 @@ def decide(residual: Residual) -> Outcome:
     is allowed: several components per point). nan in r means the answer is undefined there."""
     with np.errstate(all="ignore"):
         r, s = residual(FLOAT)
-        r, s = np.asarray(r, dtype=float), np.asarray(s, dtype=float)
+        r, s = np.asarray(r), np.asarray(s, dtype=float)
+        r = r if np.iscomplexobj(r) else r.astype(float)  # never drop an imaginary part
         ratio = _ratio(r, s)
     per_point = ratio.reshape(ratio.shape[0], -1).max(axis=1) if ratio.ndim > 1 else ratio
     if not np.all(np.isfinite(per_point)):

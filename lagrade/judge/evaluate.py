@@ -104,6 +104,8 @@ def _instruction(node: sp.Basic, emit, symbols: set) -> tuple:
         return ("const", node, _as_float(node))
     if node is sp.pi or node is sp.E:  # singletons: `is`, not sympy's slow ==
         return ("const", node, _as_float(node))
+    if node is sp.I:  # only where a question declares the imaginary unit
+        return ("const", node, np.complex128(1j))
     if isinstance(node, sp.Add):
         return ("add", tuple(emit(a) for a in node.args))
     if isinstance(node, sp.Mul):
@@ -140,9 +142,11 @@ def _mp_real(f, nargs: int = 1):
     def real(*xs):
         try:
             y = f(*xs)
-        except (ValueError, ZeroDivisionError, OverflowError):
+        except (ValueError, ZeroDivisionError, OverflowError, TypeError):
             return mpmath.mpf("nan")
-        return mpmath.mpf("nan") if isinstance(y, mpmath.mpc) else y
+        if isinstance(y, mpmath.mpc) and not any(isinstance(x, mpmath.mpc) for x in xs):
+            return mpmath.mpf("nan")  # complex from real arguments: outside the real domain
+        return y  # a complex argument (a question with the imaginary unit): principal value
 
     return np.frompyfunc(real, nargs, 1)
 
@@ -189,6 +193,8 @@ class _Mp:
             return mpmath.mp.pi
         if value == sp.E:
             return mpmath.mp.e
+        if value is sp.I:
+            return mpmath.mpc(0, 1)
         if isinstance(value, sp.Rational):
             return mpmath.mpf(int(value.p)) / int(value.q)
         return mpmath.mpf(value._mpf_) if hasattr(value, "_mpf_") else mpmath.mpf(float(value))

@@ -61,6 +61,7 @@ class Problem:
     variant: SceneVariant | None = None
     coordinate_domains: dict[str, tuple[float, float]] | None = None
     unit: str = ""  # the unit of a scene quantity (a numeric answer may carry it)
+    imaginary_unit: str | None = None  # its spelling, where an expression question declares it
     #: What deriving this question may still take (its preparation budget), and has taken.
     budget: Budget = field(default_factory=lambda: Budget(PREPARE_LIMIT))
 
@@ -83,7 +84,9 @@ class Problem:
         key = tuple(labels)
         cache = self.__dict__.setdefault("_vocabularies", {})
         if key not in cache:
-            cache[key] = parser().Vocabulary(self.coordinates, dict(self.parameters), key)
+            cache[key] = parser().Vocabulary(
+                self.coordinates, dict(self.parameters), key, imaginary_unit=self.imaginary_unit
+            )
         return cache[key]
 
     @cached_property
@@ -284,7 +287,17 @@ def _scene_problem(spec: Mapping[str, Any], key: str) -> Problem:
 
 
 def _adhoc_problem(spec: Mapping[str, Any], key: str, kind: str) -> Problem:
-    _only(spec, {kind, "coordinates", "parameters"})
+    _only(
+        spec,
+        {kind, "coordinates", "parameters"}
+        | ({"imaginary_unit"} if kind == "expression" else set()),
+    )
+    unit = spec.get("imaginary_unit")
+    if unit is not None and unit not in IMAGINARY_UNITS:
+        raise RequestError(
+            f'"imaginary_unit" must be one of {", ".join(map(repr, IMAGINARY_UNITS))}, '
+            f"not {_shown(unit)}"
+        )
     text = spec[kind]
     if not isinstance(text, str) or not text.strip():
         raise RequestError(f'"{kind}" must be a non-empty string')
@@ -301,11 +314,14 @@ def _adhoc_problem(spec: Mapping[str, Any], key: str, kind: str) -> Problem:
     # In a Lagrangian t is time; an expression problem may declare t as an ordinary variable.
     taken = {n for c in coords for n in (c, c + "_dot", c + "_ddot")}
     taken |= {"t"} if kind == "lagrangian" else set()
+    taken |= {unit} if unit is not None else set()
     for name, dom in raw_params.items():
         if not isinstance(name, str) or not _NAME.match(name):
             raise RequestError(f"parameter name {_shown(name)} is not a plain name {_NAME_RULE}")
         if name in taken:
-            raise RequestError(f"parameter {name!r} clashes with a coordinate (or t)")
+            raise RequestError(
+                f"parameter {name!r} clashes with a coordinate (or t, or the imaginary unit)"
+            )
         try:
             domain = Domain.parse(dom)
         except LagradeError as error:
@@ -313,7 +329,16 @@ def _adhoc_problem(spec: Mapping[str, Any], key: str, kind: str) -> Problem:
         params[name] = domain.symbol(name)
         domains[params[name]] = domain
     jets = tuple(jet(c) for c in coords)
-    problem = Problem(key, kind, jets, params, domains, {}, coordinate_domains=coordinate_domains)
+    problem = Problem(
+        key,
+        kind,
+        jets,
+        params,
+        domains,
+        {},
+        coordinate_domains=coordinate_domains,
+        imaginary_unit=unit,
+    )
     try:
         parsed = parser().parse_expression(text, problem.vocabulary())
     except ParseError as error:
@@ -326,6 +351,10 @@ def _adhoc_problem(spec: Mapping[str, Any], key: str, kind: str) -> Problem:
     else:
         problem.expression = expr
     return problem
+
+
+#: How an expression question may spell the imaginary unit.
+IMAGINARY_UNITS = ("I", "i", "j")
 
 
 def _coordinates(raw: Any, required: bool) -> tuple[list[str], dict[str, tuple[float, float]]]:

@@ -142,8 +142,9 @@ def _expanded_terms(base: sp.Expr, n: int) -> int:
     return math.comb(n + k - 1, k - 1) if k <= 64 else MAX_EXPANDED_TERMS + 1
 
 
-def check_finite(side: sp.Expr, node: Node | None, src: Source) -> None:
-    """Refuse a side that evaluated to infinity, NaN or an imaginary number (1/0, ln(0))."""
-    if side.has(*_BAD_VALUES):
+def check_finite(side: sp.Expr, node: Node | None, src: Source, imaginary: bool = False) -> None:
+    """Refuse a side that evaluated to infinity, NaN or, in a question that does not declare
+    the imaginary unit, an imaginary number (1/0, ln(0))."""
+    if side.has(*(_BAD_VALUES[:-1] if imaginary else _BAD_VALUES)):
         start, end = (node.start, node.end) if node is not None else (0, len(src.text))
         src.fail(NOT_FINITE, start, end)

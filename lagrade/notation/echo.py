@@ -29,8 +29,8 @@ def echo(node: Any, text: str) -> str:
 def _render(node: Any, text: str) -> tuple[str, int]:
     """(text, binding strength) of a node."""
     kind = node.kind
-    if kind == "sym":
-        return node.value.name, _ATOM
+    if kind == "sym":  # a symbol, or the declared imaginary unit as the student spelled it
+        return getattr(node.value, "name", None) or text[node.start : node.end], _ATOM
     if kind == "pi":
         return "pi", _ATOM
     if kind == "num":

@@ -7,6 +7,8 @@ from __future__ import annotations
 import re
 from typing import NoReturn
 
+import sympy as sp
+
 from lagrade.notation.build import FUNCTIONS
 from lagrade.notation.lexer import Token
 from lagrade.notation.nodes import Node
@@ -55,7 +57,8 @@ class NameRules(TokenStream):
             end = self.peek(2).end
             self.skip_of_t()
             self.warn(f"{tok.text}(t) is read as {tok.text}.")
-        self.found.add(entry.value.name)  # type: ignore[attr-defined]
+        if entry.value is not sp.I:  # the declared imaginary unit is a number, not a symbol
+            self.found.add(entry.value.name)  # type: ignore[attr-defined]
         return self.node("sym", tok.start, end, entry.value)
 
     def derivative(self, entry: Entry, order: int, start: int, end: int) -> Node:

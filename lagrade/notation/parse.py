@@ -63,7 +63,7 @@ def _parse_source(src: Source, vocabulary: Vocabulary, latex: bool | None, mode:
         rhs = sp.S.Zero
     for side, node in ((lhs, lhs_node), (rhs, rhs_node)):
         if side is not None:
-            check_finite(side, node, src)
+            check_finite(side, node, src, imaginary=lexicon.imaginary_unit is not None)
     shown = _echo(lhs_node, src.text)
     if rhs is not None:
         shown += " = " + (_echo(rhs_node, src.text) if rhs_node is not None else "0")

@@ -37,12 +37,15 @@ def _digit_variants(name: str) -> set[str]:
 class Vocabulary:
     """What a question lets a student write: its coordinates (each with velocity and
     acceleration), its parameters as the very sympy symbols of the reference, extra labels
-    (p_theta, L, h, …) and whether primes mean time derivatives."""
+    (p_theta, L, h, …), whether primes mean time derivatives, and how the imaginary unit is
+    spelled when the question is about complex numbers (None: `I`, `i`, `j` are ordinary
+    names, unknown unless declared, so that a real question never meets a complex number)."""
 
     coordinates: tuple[str, ...]
     parameters: Mapping[str, sp.Symbol]
     labels: tuple[str, ...] = ()
     allow_primes: bool = False
+    imaginary_unit: str | None = None
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "coordinates", tuple(self.coordinates))
@@ -60,7 +63,8 @@ class Vocabulary:
                 problems.append(f"parameter {name!r} must map to a sympy Symbol, not {symbol!r}")
         jet_names = [f"{c}{suffix}" for c in self.coordinates for suffix in ("", "_dot", "_ddot")]
         seen: set[str] = set()
-        for name in jet_names + list(self.parameters) + list(self.labels):
+        unit = [self.imaginary_unit] if self.imaginary_unit is not None else []
+        for name in jet_names + list(self.parameters) + list(self.labels) + unit:
             if name in seen:
                 problems.append(f"{name!r} is declared twice")
             seen.add(name)
@@ -69,7 +73,13 @@ class Vocabulary:
 
     def __hash__(self) -> int:
         return hash(
-            (self.coordinates, tuple(self.parameters.items()), self.labels, self.allow_primes)
+            (
+                self.coordinates,
+                tuple(self.parameters.items()),
+                self.labels,
+                self.allow_primes,
+                self.imaginary_unit,
+            )
         )
 
     @classmethod
@@ -89,6 +99,7 @@ class Vocabulary:
         labels: Iterable[str] = (),
         *,
         allow_primes: bool = False,
+        imaginary_unit: str | None = None,
     ) -> Vocabulary:
         """From names alone; parameter domains as strings ('positive', '(0, pi/2)'), and bare
         parameter names are positive (masses, lengths, g)."""
@@ -98,7 +109,7 @@ class Vocabulary:
             }
         else:
             symbols = {name: Domain.parse("positive").symbol(name) for name in parameters}
-        return cls(tuple(coordinates), symbols, tuple(labels), allow_primes)
+        return cls(tuple(coordinates), symbols, tuple(labels), allow_primes, imaginary_unit)
 
     @cached_property
     def _lexicon(self) -> Lexicon:
@@ -121,6 +132,9 @@ class Lexicon:
             exact[name] = Entry("sym", symbol, None, 0)
         for name in vocabulary.labels:
             exact[name] = Entry("sym", sp.Symbol(name, real=True), None, 0)
+        self.imaginary_unit = vocabulary.imaginary_unit
+        if self.imaginary_unit is not None:  # declared: a number, not a name
+            exact[self.imaginary_unit] = Entry("sym", sp.I, None, 0)
         table = dict(exact)
         for j in self.jets:
             for v in _digit_variants(j.name):
@@ -140,6 +154,8 @@ class Lexicon:
         for j in self.jets:
             allowed += [j.name, j.dot.name, j.ddot.name]
         allowed += list(vocabulary.labels) + ["t"]
+        if self.imaginary_unit is not None:
+            allowed.append(self.imaginary_unit)
         self.allowed = ", ".join(allowed)
 
     def is_function(self, name: str) -> bool:

@@ -112,11 +112,13 @@ def values_text(
         return ""
     try:
         with np.errstate(all="ignore"):
-            mine = float(np.ravel(answer.values(env)[0])[0])
-            theirs = float(np.ravel(reference.values(env)[0])[0])
+            mine = np.ravel(answer.values(env)[0])[0]
+            theirs = np.ravel(reference.values(env)[0])[0]
     except UnsupportedExpression:  # a symbol without a value here: say nothing, never guess
         return ""
-    pair = _shown_pair(mine, theirs)
+    if np.iscomplexobj(mine) or np.iscomplexobj(theirs):  # rounded reals only
+        return ""
+    pair = _shown_pair(float(mine), float(theirs))
     if pair is None:
         return ""
     suffix = f" {unit}" if unit else ""
