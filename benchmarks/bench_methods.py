@@ -323,8 +323,15 @@ def main() -> int:
     parser.add_argument("--every", type=int, default=1, help="every K-th pair only (a quick run)")
     parser.add_argument("--out", type=Path, default=DOCS / "methods.csv", help="CSV path")
     parser.add_argument("--skip-verify", action="store_true", help="do not re-verify the labels")
+    parser.add_argument(
+        "--corpus",
+        choices=("all", "own", "external"),
+        default="all",
+        help="which pairs: ours (pairs.jsonl), the external cases, or both (default)",
+    )
     args = parser.parse_args()
-    own, external = load()[:: args.every], load(EXTERNAL)[:: args.every]
+    own = load()[:: args.every] if args.corpus != "external" else []
+    external = load(EXTERNAL)[:: args.every] if args.corpus != "own" else []
     pairs = own + external
     if not args.skip_verify:
         t0 = time.perf_counter()
