@@ -96,7 +96,8 @@ def render_prose(
     math_fields: Iterable[str] = (),
 ) -> Prose:
     """`template` with its `{field}`s filled from `fill` (a field in `math_fields` set as
-    math), the whole words in `names` set as math, and every caret power as a superscript."""
+    math, any other read as prose), the whole words in `names` set as math, and every caret
+    power as a superscript."""
     fill = fill or {}
     fields = set(math_fields)
     words = frozenset(names) - _ENGLISH
@@ -111,6 +112,6 @@ def render_prose(
             plain.append(value)
             if field_name in fields:
                 out.math(value)
-            else:
-                out.text(value)
+            else:  # an option's wording is prose too ("the potential V = m g z")
+                out.prose(value, words)
     return Prose("".join(plain), "".join(out.md), "".join(out.html), "".join(out.tex))

@@ -32,7 +32,7 @@ def part_symbols(variant: SceneVariant, part: str) -> list[dict[str, Any]]:
     """For one part, groups of names: each {"what": …, "names": […]} as the handout prints it
     ("left-hand sides: x_bob, y_bob"; "may use: theta, theta_dot, l, m, g")."""
     coordinates = list(variant.coordinates)
-    parameters = list(variant.parameter_symbols)
+    parameters = list(variant.used_parameters)
     if part in ("coordinates", "cyclic"):
         return [{"what": "coordinate names", "names": coordinates}]
     if part == "dof":

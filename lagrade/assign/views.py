@@ -108,7 +108,7 @@ def symbolic_solution(scene_id: str, names: tuple, options: tuple) -> dict[str, 
     constraints = [
         {
             "description": render_prose(label if label != "declared" else "constraint"),
-            "math": eq(f, 0),
+            "math": eq(f, 0) if f != 0 else None,  # a tilt has no symbol: words alone
         }
         for label, f in v.constraints
     ]
@@ -196,9 +196,13 @@ def problem_view(problem: Problem, choice: VariantChoice, name: str) -> dict[str
 
 
 def _parameters(choice: VariantChoice, variant: SceneVariant) -> list[dict[str, Any]]:
-    """Each parameter with its symbol, the student's value (None: stays a symbol) and domain."""
+    """Each parameter the variant uses with its symbol, the student's value (None: stays a
+    symbol) and domain."""
     parameters = []
+    used = set(variant.used_parameters)
     for p in variant.scene.parameters:
+        if p.name not in used:
+            continue
         value = choice.values.get(p.name)
         parameters.append(
             {

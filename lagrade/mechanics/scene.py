@@ -10,6 +10,7 @@ solves for the accelerations.
 from __future__ import annotations
 
 import random
+import re
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 from functools import cached_property
@@ -323,8 +324,8 @@ class SceneVariant:
             if b.planar:
                 implied.append(("motion in the x-y plane", getattr(self.cartesian, b.name).z))
             if isinstance(b, RigidBody):
-                implied.append(("rotation about the z axis only (tilt about x)", sp.S.Zero))
-                implied.append(("rotation about the z axis only (tilt about y)", sp.S.Zero))
+                implied.append(("no tilt about the x axis (it turns about z only)", sp.S.Zero))
+                implied.append(("no tilt about the y axis (it turns about z only)", sp.S.Zero))
         return declared + tuple(implied)
 
     @cached_property
@@ -457,6 +458,28 @@ class SceneVariant:
     def quantities(self) -> dict[str, sp.Expr]:
         """The scene's numeric follow-ups as closed forms in the parameters."""
         return {q.name: as_expr(q.expr(self.namespace)) for q in self.scene.quantities}
+
+    @cached_property
+    def used_parameters(self) -> tuple[str, ...]:
+        """The parameters this variant needs, in declaration order: those its bodies, potential,
+        constraints or quantities contain, or its statement names. An option can leave one out
+        (no k for uniform gravity, no M for a massless pulley), and a handout that lists it
+        anyway sends students looking for a term that is not there."""
+        exprs = [x for b in self.bodies for x in self._body_fields(b)]
+        exprs += [self.potential_energy, *self.quantities.values()]
+        exprs += [f for _, f in self.constraints]
+        symbols: set[sp.Basic] = set().union(*(as_expr(x).free_symbols for x in exprs))
+        words = set(re.findall(r"[A-Za-z_][A-Za-z0-9_]*", self.statement()))
+        return tuple(
+            name
+            for name, symbol in self.parameter_symbols.items()
+            if symbol in symbols or name in words
+        )
+
+    @staticmethod
+    def _body_fields(b: Body) -> tuple:
+        fields = (*b.position, b.mass)
+        return fields + (b.inertia, b.angle) if isinstance(b, RigidBody) else fields
 
     @cached_property
     def numeric_values(self) -> dict[sp.Symbol, sp.Expr]:

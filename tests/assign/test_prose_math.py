@@ -11,6 +11,7 @@ import pytest
 from lagrade.assign import prose
 from lagrade.assign.views import _described, _statement
 from lagrade.bank import get_scene, scene_ids
+from lagrade.mechanics.scene import SceneVariant
 
 
 def _all_prose(scene_id: str):
@@ -35,9 +36,13 @@ def test_no_raw_caret_in_any_prose(scene_id: str) -> None:
 
 
 def test_free_particle_potential_is_typeset() -> None:
-    st = _statement(get_scene("free_particle").default)
+    """The potential comes in through the option's wording, which is prose like the rest."""
+    scene = get_scene("free_particle")
+    st = _statement(SceneVariant(scene, options={"potential": "anisotropic"}))
     assert "$x^{2}$" in st["tex"] and "$k_{z}$ $z^{2}$" in st["tex"]
     assert "<msup>" in str(st["html"])
+    gravity = _statement(SceneVariant(scene, options={"potential": "gravity"}))
+    assert "V = $m$ $g$ $z$" in gravity["tex"] and "k" not in gravity["text"].split("V = ")[-1]
 
 
 def test_hoop_description_sets_omega_squared() -> None:

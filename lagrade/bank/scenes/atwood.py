@@ -36,15 +36,14 @@ SCENE = Scene(
     title="Atwood machine",
     statement=(
         "Two masses m_1 and m_2 hang on an inextensible string over a pulley of radius R, whose "
-        "axle is fixed; the pulley is {pulley} (a massive pulley is a uniform disc of mass M, "
-        "turned by the string without slipping). Use the distance {x} that m_1 has descended "
-        "from the level where the two masses hang side by side."
+        "axle is fixed; the pulley is {pulley}. Use the distance {x} that m_1 has descended from "
+        "the level where the two masses hang side by side."
     ),
     coordinates=("x",),
     parameters=(
         param("m_1", "positive", "kg", (1.0, 1.5, 2.0, 3.0), "mass on the left"),
         param("m_2", "positive", "kg", (0.5, 0.8, 1.2), "mass on the right"),
-        param("M", "positive", "kg", (0.2, 0.5, 1.0), "mass of the pulley (massive option)"),
+        param("M", "positive", "kg", (0.2, 0.5, 1.0), "mass of the pulley"),
         param("R", "positive", "m", (0.05, 0.1, 0.2), "radius of the pulley"),
         param("g", "positive", "m/s^2", (9.81,), "gravitational acceleration"),
     ),
@@ -53,6 +52,12 @@ SCENE = Scene(
     constraints=_constraints,
     renames={"x": ("x", "q", "s")},
     options={"pulley": ("massless", "massive")},
+    wording={
+        "pulley": {
+            "massless": "massless",
+            "massive": "a uniform disc of mass M, turned by the string without slipping",
+        }
+    },
     quantities=(
         Quantity("acceleration", "acceleration of m_1 (downwards)", _acceleration, "m/s^2"),
     ),

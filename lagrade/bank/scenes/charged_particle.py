@@ -26,10 +26,9 @@ SCENE = Scene(
     title="Charged particle in a magnetic field",
     statement=(
         "A particle of mass m and charge e moves in a uniform magnetic field B along the z axis. "
-        "Describe the field by the vector potential of the {gauge} gauge (landau_y: A = (0, B x, "
-        "0); landau_x: A = (-B y, 0, 0); symmetric: A = (-B y, B x, 0)/2), so that "
-        "L = m v^2/2 + e v.A. Use the Cartesian coordinates {x}, {y}, {z}. Find the canonical "
-        "momenta p = m v + e A and the cyclic coordinates. Which of them depend on the gauge?"
+        "Describe the field by {gauge}, so that L = m v^2/2 + e v.A. Use the Cartesian "
+        "coordinates {x}, {y}, {z}. Find the canonical momenta p = m v + e A and the cyclic "
+        "coordinates. Which of them would change in another gauge?"
     ),
     coordinates=("x", "y", "z"),
     parameters=(
@@ -40,6 +39,13 @@ SCENE = Scene(
     bodies=lambda s: (PointMass("particle", s.m, (s.x, s.y, s.z)),),
     potential=lambda s, bodies: _magnetic_potential(s),
     options={"gauge": tuple(_VECTOR_POTENTIALS)},
+    wording={
+        "gauge": {
+            "landau_y": "the vector potential A = (0, B x, 0) (a Landau gauge)",
+            "landau_x": "the vector potential A = (-B y, 0, 0) (a Landau gauge)",
+            "symmetric": "the vector potential A = (-B y, B x, 0)/2 (the symmetric gauge)",
+        }
+    },
     quantities=(
         Quantity(
             "cyclotron_frequency",

@@ -19,10 +19,9 @@ SCENE = Scene(
     title="Particle in a potential",
     statement=(
         "A particle of mass m moves freely in space under a conservative force with potential "
-        "V(x, y, z); use its Cartesian coordinates {x}, {y}, {z} (z up). Take the {potential} "
-        "potential: harmonic means V = k (x^2 + y^2 + z^2)/2, gravity means V = m g z, "
-        "anisotropic means V = k (x^2 + y^2)/2 + k_z z^2/2. Show that the Euler-Lagrange "
-        "equations are Newton's second law: m times the acceleration equals -grad V."
+        "V(x, y, z); use its Cartesian coordinates {x}, {y}, {z} (z up). Take {potential}. Show "
+        "that the Euler-Lagrange equations are Newton's second law: m times the acceleration "
+        "equals -grad V."
     ),
     coordinates=("x", "y", "z"),
     parameters=(
@@ -34,5 +33,12 @@ SCENE = Scene(
     bodies=lambda s: (PointMass("particle", s.m, (s.x, s.y, s.z)),),
     potential=lambda s, bodies: _POTENTIALS[s.opt["potential"]](s),
     options={"potential": tuple(_POTENTIALS)},
+    wording={
+        "potential": {
+            "harmonic": "the harmonic potential V = k (x^2 + y^2 + z^2)/2",
+            "gravity": "the potential of uniform gravity, V = m g z",
+            "anisotropic": "the anisotropic harmonic potential V = k (x^2 + y^2)/2 + k_z z^2/2",
+        }
+    },
     tags=("lecture",),
 )

@@ -17,9 +17,7 @@ SCENE = Scene(
     title="Mass on a spring",
     statement=(
         "A body of mass m is attached to a spring of constant k whose other end is fixed; the "
-        "spring is {orientation} (a horizontal spring lies on a smooth table, a vertical one "
-        "hangs from the ceiling in gravity g). Use the extension {x} of the spring beyond its "
-        "natural length."
+        "spring {orientation}. Use the extension {x} of the spring beyond its natural length."
     ),
     coordinates=("x",),
     parameters=(
@@ -32,6 +30,12 @@ SCENE = Scene(
     constraints=lambda s, c: (c.mass.y if s.opt["orientation"] == "horizontal" else c.mass.x,),
     renames={"x": ("x", "q", "u")},
     options={"orientation": ("horizontal", "vertical")},
+    wording={
+        "orientation": {
+            "horizontal": "lies horizontally on a smooth table",
+            "vertical": "hangs vertically from the ceiling, in gravity g",
+        }
+    },
     quantities=(
         Quantity(
             "angular_frequency",

@@ -10,7 +10,7 @@ SCENE = Scene(
     title="Kepler problem",
     statement=(
         "A planet of mass m moves in the gravitational field of a sun of mass M, which stays at "
-        "rest at the origin; the potential is V = -G M m / r. Use the polar coordinates {r} and "
+        "rest at the origin; the potential is V = -G M m/{r}. Use the polar coordinates {r} and "
         "{theta} of the planet in its orbital plane. Follow-up: with what angular velocity does "
         "the planet go round a circular orbit of radius a?"
     ),
