@@ -111,7 +111,22 @@ def hold_folder(folder: Path) -> Iterator[None]:
         os.pwrite(fd, f"{os.getpid()}\n".encode(), 0)
         yield
     finally:
-        os.close(fd)
+        try:
+            _remove_own_temporaries(folder)
+        finally:
+            os.close(fd)
+
+
+def _remove_own_temporaries(folder: Path) -> None:
+    """Delete the temp files this process left in `folder`: an interrupt that strikes between
+    a temp file's creation and its rename (inside mkstemp, say) leaves one that `writing`
+    never learnt the name of."""
+    mine = str(os.getpid())
+    for leftover in Path(folder).rglob(".*.tmp"):
+        match = _TEMPORARY.match(leftover.name)
+        if match is not None and match.group(1) == mine:
+            with contextlib.suppress(OSError):
+                leftover.unlink()
 
 
 def _alive(pid: int) -> bool:

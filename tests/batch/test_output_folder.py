@@ -139,3 +139,19 @@ def test_ids_that_are_paths_never_leave_the_output_folder(workspace, capsys):
     assert main(grade_args(workspace)) == EXIT_BAD_INPUT
     assert "cannot name a file" in capsys.readouterr().err
     assert set(workspace.parent.rglob("*")) - before <= set(workspace.rglob("*"))
+
+
+def test_an_interrupt_inside_mkstemp_leaves_no_temp_file(tmp_path, monkeypatch):
+    """Ctrl-C can strike after mkstemp has made the file but before `writing` knows its name;
+    the run's hold on the folder removes what it left (seen once in the interrupted-run test)."""
+    real_mkstemp = atomic.tempfile.mkstemp
+
+    def interrupted(*args, **kwargs):
+        fd, name = real_mkstemp(*args, **kwargs)
+        os.close(fd)
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(atomic.tempfile, "mkstemp", interrupted)
+    with pytest.raises(KeyboardInterrupt), atomic.hold_folder(tmp_path):
+        atomic.write_text(tmp_path / "students" / "s01.json", "{}")
+    assert not list(tmp_path.rglob("*.tmp"))
