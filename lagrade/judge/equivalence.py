@@ -164,15 +164,23 @@ def affine_match(
 
 
 def lagrangians_match(
-    answer: Compiled, reference: Compiled | Callable, jets: Sequence[Jet], points: Points
+    answer: Compiled,
+    reference: Compiled | Callable,
+    jets: Sequence[Jet],
+    points: Points,
+    answer_el: tuple[np.ndarray, np.ndarray] | None = None,
 ) -> LagrangianMatch:
     """Is E(answer) = c E(reference) for a c constant in (q, q̇, q̈, t)? c is fitted by least
-    squares in each parameter group, then the residual E(L′) − c E(L) is decided."""
+    squares in each parameter group, then the residual E(L′) − c E(L) is decided. `answer_el`:
+    E(answer) and its size in float64 at the points, when the caller has them already."""
     found: dict[str, list] = {}
 
     def residual(backend):
         env = points.arrays(backend)
-        Ea, Sa = euler_lagrange_values(answer, jets, env, backend)
+        if backend is FLOAT and answer_el is not None:
+            Ea, Sa = answer_el
+        else:
+            Ea, Sa = euler_lagrange_values(answer, jets, env, backend)
         Eb, Sb = (
             reference(backend)
             if callable(reference)

@@ -11,8 +11,9 @@ from typing import Any, Protocol
 import numpy as np
 
 from lagrade.judge.compiled import Compiled
+from lagrade.judge.derivatives import euler_lagrange_values
 from lagrade.judge.equivalence import lagrangians_match
-from lagrade.judge.evaluate import UnsupportedExpression
+from lagrade.judge.evaluate import FLOAT, UnsupportedExpression
 from lagrade.judge.mutations import Mutant
 from lagrade.judge.rows import equation_rows, in_span
 from lagrade.judge.sampling import Points
@@ -76,8 +77,19 @@ def keeper(
 
 def same_dynamics(catalogue: Catalogue, m: Mutant, reference: Compiled, points: Points) -> bool:
     """A 'mistake' whose Euler–Lagrange equations are a multiple of the reference's is no
-    mistake: the Lagrangian check accepts it, so the catalogue must not name it."""
-    match = lagrangians_match(catalogue.compiled(m), reference, catalogue.problem.jets, points)
+    mistake: the Lagrangian check accepts it, so the catalogue must not name it. The float64
+    values of both are the ones the fingerprints were made from (computed once, not again per
+    mutant); only a test that float64 cannot settle evaluates anew at high precision."""
+    jets = catalogue.problem.jets
+    mutant = catalogue.compiled(m)
+
+    def reference_values(backend):
+        if backend is FLOAT:
+            return catalogue.el_values(reference, points)
+        return euler_lagrange_values(reference, jets, points.arrays(backend), backend)
+
+    answer_el = catalogue.el_values(mutant, points)
+    match = lagrangians_match(mutant, reference_values, jets, points, answer_el=answer_el)
     return bool(match.outcome.equal) and all(c > 0 for c in match.factors)
 
 
