@@ -169,6 +169,9 @@ def _weierstrass_ready(answer: sp.Expr, reference: sp.Expr) -> tuple[sp.Expr, sp
     out = []
     for e in (answer, reference):
         e = e.xreplace(scale) if scale else e
+        if not e.atoms(*_TRIG):  # a rational function already (π passed only inside trig)
+            out.append(e)
+            continue
         e = sp.expand_trig(e)
         for f in e.atoms(*_TRIG):
             if not f.args[0].is_Symbol:
