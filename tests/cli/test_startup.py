@@ -53,3 +53,27 @@ def test_the_command_lines_part_names_are_the_judges():
 
     assert PART_NAMES == tuple(PARTS)
     assert DEFAULT_TIME_LIMIT == JUDGE_TIME_LIMIT
+
+
+def test_check_batch_loads_the_judge_but_not_the_reports(tmp_path):
+    """`check --batch` writes its results through `lagrade.grading.atomic`; that leaf must not
+    bring in the reports, templates and charts of `grade` (jinja2, matplotlib, lagrade.assign)."""
+    requests = tmp_path / "requests.jsonl"
+    requests.write_text(
+        '{"problem": {"expression": "m*g", "parameters": {"m": "positive", "g": "positive"}}, '
+        '"part": "expression", "answer": "g*m"}\n'
+    )
+    code = (
+        "import sys\nfrom lagrade.cli.main import main\n"
+        f"main(['check', '--batch', {str(requests)!r}, '--out', {str(tmp_path / 'out.jsonl')!r}])\n"
+    )
+    probe = code.replace("main([", "try:\n    main([").replace(
+        "])\n", "])\nexcept SystemExit:\n    pass\n"
+    )
+    probe += (
+        "print(sorted(m for m in ('jinja2', 'matplotlib', 'lagrade.assign', 'lagrade.grading.report')"
+        " if m in sys.modules))"
+    )
+    out = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, check=True)
+    assert out.stdout.strip().splitlines()[-1] == "[]", out.stdout + out.stderr
+    assert '"verdict": "correct"' in (tmp_path / "out.jsonl").read_text()
