@@ -71,8 +71,8 @@ def test_check_batch_loads_the_judge_but_not_the_reports(tmp_path):
         "])\n", "])\nexcept SystemExit:\n    pass\n"
     )
     probe += (
-        "print(sorted(m for m in ('jinja2', 'matplotlib', 'lagrade.assign', 'lagrade.grading.report')"
-        " if m in sys.modules))"
+        "print(sorted(m for m in ('jinja2', 'matplotlib', 'lagrade.assign', "
+        "'lagrade.grading.report') if m in sys.modules))"
     )
     out = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, check=True)
     assert out.stdout.strip().splitlines()[-1] == "[]", out.stdout + out.stderr
