@@ -236,6 +236,7 @@ def iter_equation_mutants(
     """`equation_mutants` one at a time, reading `lagrangian_mutants` only as far as needed
     (deriving a mutant's equations is the costly step)."""
     E = system.euler_lagrange
+    per_monomial: dict[sp.Expr, tuple[sp.Expr, ...]] = {}
     for i, j in enumerate(jets):
         what = f"the equation for {j.name}"
         flipped = sp.expand(E[i] + 2 * sp.diff(system.L, j.q))  # D_t p + ∂L/∂q
@@ -254,7 +255,7 @@ def iter_equation_mutants(
             # two, so only that is differentiated. Both sides expanded, the row is the very
             # expression E(L_mut) expands to (tests/grading/test_diagnose.py holds that).
             try:
-                change = LagrangianSystem(sp.expand(m.expr - system.L), jets).euler_lagrange
+                change = _linear_euler_lagrange(sp.expand(m.expr - system.L), jets, per_monomial)
             except Exception:  # noqa: BLE001 - a mutant we cannot differentiate is skipped
                 continue
             for i, delta in enumerate(change):
@@ -266,6 +267,23 @@ def iter_equation_mutants(
     for i, j in enumerate(jets):
         for m in iter_term_mutants(E[i], f"your equation for {j.name}", parameters):
             yield (i, m)
+
+
+def _linear_euler_lagrange(
+    change: sp.Expr, jets: Sequence[Jet], per_monomial: dict[sp.Expr, tuple[sp.Expr, ...]]
+) -> tuple[sp.Expr, ...]:
+    """E(change), expanded, from E of each of its monomials (E is linear): the kinetic mistakes
+    of L change the same few terms of T (one term, a cross term, a body, all of T), so each
+    monomial is differentiated once for all of them. The sum is expanded again, which gives the
+    very expression deriving E(change) at once expands to."""
+    parts: list[list[sp.Expr]] = [[] for _ in jets]
+    for term in sp.Add.make_args(change):
+        coefficient, monomial = term.as_coeff_Mul()
+        if monomial not in per_monomial:
+            per_monomial[monomial] = LagrangianSystem(monomial, jets).euler_lagrange
+        for row, e in zip(parts, per_monomial[monomial], strict=True):
+            row.append(coefficient * e)
+    return tuple(sp.expand(sp.Add(*row)) for row in parts)
 
 
 def conserved_mutants(
