@@ -40,9 +40,16 @@ class _OutOfScope(Exception):
     """The expression is not a rational function of symbols and trig of their combinations."""
 
 
-def _check_rational_trig(expr: sp.Expr, inside_trig: bool = False) -> None:
+def _check_rational_trig(expr: sp.Expr, inside_trig: bool = False, trig: set | None = None) -> bool:
     """Raise _OutOfScope unless expr is built from rationals, symbols, +, ×, integer powers, and
-    sin/cos/tan/cot/sec/csc of (rational combinations of symbols + rational multiples of π)."""
+    sin/cos/tan/cot/sec/csc of (rational combinations of symbols + rational multiples of π).
+    Returns whether it has a trig function (counted in `trig`, which the recursion shares)."""
+    trig = set() if trig is None else trig
+    _check_rational_trig_in(expr, inside_trig, trig)
+    return bool(trig)
+
+
+def _check_rational_trig_in(expr: sp.Expr, inside_trig: bool, trig: set) -> None:
     if expr.is_Symbol or expr.is_Rational:
         return
     if expr is sp.pi:
@@ -51,14 +58,14 @@ def _check_rational_trig(expr: sp.Expr, inside_trig: bool = False) -> None:
         raise _OutOfScope("π outside a trig argument")
     if expr.is_Add or expr.is_Mul:
         for a in expr.args:
-            _check_rational_trig(a, inside_trig)
+            _check_rational_trig_in(a, inside_trig, trig)
         return
     if expr.is_Pow:
         if not expr.exp.is_Integer or inside_trig:
             raise _OutOfScope(f"power {expr}")
         if abs(int(expr.exp)) > MAX_EXACT_POWER:  # exact numbers of 10^5 bits and more: slow
             raise _OutOfScope(f"power {expr.exp} too high for exact arithmetic")
-        _check_rational_trig(expr.base, inside_trig)
+        _check_rational_trig_in(expr.base, inside_trig, trig)
         return
     if isinstance(expr, _TRIG) and not inside_trig:
         arg = expr.args[0]
@@ -66,7 +73,8 @@ def _check_rational_trig(expr: sp.Expr, inside_trig: bool = False) -> None:
             _is_linear(term) or _monomial_symbol(term) is not None for term in sp.Add.make_args(arg)
         ):
             raise _OutOfScope(f"non-linear trig argument {arg}")
-        _check_rational_trig(arg, inside_trig=True)
+        trig.add(expr)
+        _check_rational_trig_in(arg, True, trig)
         return
     raise _OutOfScope(f"{type(expr).__name__}")
 
@@ -118,12 +126,13 @@ class ExactRational:
 
     def decide(self, answer, reference, domains) -> bool | None:
         try:
-            for e in (answer, reference):
-                _check_rational_trig(e)
-            a, b = _weierstrass_ready(answer, reference)
+            has_trig = [_check_rational_trig(e) for e in (answer, reference)]
+            # rational functions as they stand need no reduction of trig arguments
+            a, b = _weierstrass_ready(answer, reference) if any(has_trig) else (answer, reference)
         except _OutOfScope:
             return None
-        return _exact_compare(a, b, domains, self.points, np.random.default_rng(self.seed))
+        rng = np.random.default_rng(self.seed)
+        return _exact_compare(a, b, domains, self.points, rng, trig=any(has_trig))
 
 
 def _monomial_symbol(arg: sp.Expr) -> sp.Symbol | None:
@@ -183,12 +192,15 @@ def _weierstrass_ready(answer: sp.Expr, reference: sp.Expr) -> tuple[sp.Expr, sp
     return out[0], out[1]
 
 
-def _exact_compare(a: sp.Expr, b: sp.Expr, domains: Domains, points: int, rng) -> bool | None:
+def _exact_compare(
+    a: sp.Expr, b: sp.Expr, domains: Domains, points: int, rng, trig: bool = True
+) -> bool | None:
     """Compare at `points` random rational points, exactly. Each trig atom stands for a
     placeholder set from the half-angle tangent u, the pair is compiled once by the project's
     evaluator and run on Fractions: no sympy arithmetic per point."""
     symbols = sorted_symbols(a, b)
-    trig_syms = sorted({f.args[0] for e in (a, b) for f in e.atoms(*_TRIG)}, key=str)
+    atoms = [f for e in (a, b) for f in e.atoms(*_TRIG)] if trig else []
+    trig_syms = sorted({f.args[0] for f in atoms}, key=str)
     stand_in = {f(y): sp.Dummy(f"{f.__name__}_{y}") for y in trig_syms for f in _TRIG}
     try:
         prog_a = ev.compile_program([a.xreplace(stand_in)])
