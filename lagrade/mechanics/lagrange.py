@@ -19,6 +19,7 @@ L = ½ m l² θ̇² + m g l cos θ, p_θ = m l² θ̇, E_θ = m l² θ̈ + m g l
 
 from __future__ import annotations
 
+from collections import OrderedDict
 from collections.abc import Sequence
 from dataclasses import dataclass
 from functools import cached_property
@@ -112,6 +113,44 @@ def speed_squared(position: Sequence[sp.Expr], jets: Sequence[Jet]) -> sp.Expr:
     return sum((total_derivative(x, jets) ** 2 for x in position), sp.S.Zero)
 
 
+def _derive_euler_lagrange(L: sp.Expr, jets: Sequence[Jet]) -> tuple[sp.Expr, ...]:
+    return tuple(
+        sp.expand(total_derivative(sp.expand(p), jets) - sp.diff(L, j.q))
+        for p, j in zip(generalized_momenta(L, jets), jets, strict=True)
+    )
+
+
+#: Derivations by the canonical form of (L, coordinates), most recently used last.
+_DERIVED: OrderedDict[str, tuple[sp.Expr, ...]] = OrderedDict()
+_DERIVED_SIZE = 256
+
+
+def _derived_once(L: sp.Expr, jets: Sequence[Jet], derive) -> tuple[sp.Expr, ...]:
+    """`derive(L, jets)`, computed for L with its coordinates renamed q0·, q1·, … by position (a
+    name no one can type, so no parameter shares it) and cached under that form: a question
+    asked under renamed coordinates (a variant, a batch that gives one system under several
+    names) is derived once. The cached result is renamed back and expanded, which is the very
+    expression deriving under the own names gives (both are expanded sums over the same atoms;
+    tests/bank/test_shared_derivation.py checks every scene under every renaming)."""
+    canonical = [jet(f"q{k}\N{MIDDLE DOT}") for k in range(len(jets))]
+    forward: dict[sp.Symbol, sp.Symbol] = {}
+    back: dict[sp.Symbol, sp.Symbol] = {}
+    for own, mine in zip(jets, canonical, strict=True):
+        for a, b in ((own.q, mine.q), (own.dot, mine.dot), (own.ddot, mine.ddot)):
+            forward[a], back[b] = b, a
+    form = L.xreplace(forward)
+    key = f"{derive.__name__}:{len(jets)}:{sp.srepr(form)}"
+    found = _DERIVED.get(key)
+    if found is None:
+        found = derive(form, canonical)
+        _DERIVED[key] = found
+        if len(_DERIVED) > _DERIVED_SIZE:
+            _DERIVED.popitem(last=False)
+    else:
+        _DERIVED.move_to_end(key)
+    return tuple(sp.expand(e.xreplace(back)) for e in found)
+
+
 class LagrangianSystem:
     """Everything the five-step method derives from L and the coordinates, each computed lazily.
 
@@ -134,11 +173,10 @@ class LagrangianSystem:
 
     @cached_property
     def euler_lagrange(self) -> tuple[sp.Expr, ...]:
-        """E_j = D_t p_j − ∂L/∂q_j, expanded; E_j = 0 are the equations of motion."""
-        return tuple(
-            sp.expand(total_derivative(p, self.jets) - sp.diff(self.L, j.q))
-            for p, j in zip(self.generalized_momenta, self.jets, strict=True)
-        )
+        """E_j = D_t p_j − ∂L/∂q_j, expanded; E_j = 0 are the equations of motion. Derived once
+        per canonical form of L (`_derived_once`): the same system under renamed coordinates
+        shares the derivation and only renames its result."""
+        return _derived_once(self.L, self.jets, _derive_euler_lagrange)
 
     @cached_property
     def mass_matrix(self) -> sp.Matrix:

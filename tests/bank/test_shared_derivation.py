@@ -1,0 +1,44 @@
+"""Euler–Lagrange expressions are derived once per canonical form of L and renamed back for every
+renaming of the coordinates; the renamed result must be the very expression a derivation under
+the own names gives, term for term (the mistake catalogue names mistakes by those terms)."""
+
+from __future__ import annotations
+
+import itertools
+
+import pytest
+
+from lagrade.bank.registry import SCENES
+from lagrade.mechanics.lagrange import _DERIVED, LagrangianSystem, _derive_euler_lagrange
+from lagrade.mechanics.scene import SceneVariant
+
+
+def _presentations():
+    for scene in SCENES:
+        renamings = [scene.renames.get(c, (c,)) for c in scene.coordinates]
+        for choice in itertools.product(*scene.options.values()):
+            options = dict(zip(scene.options, choice, strict=True))
+            for names in itertools.product(*renamings):
+                yield pytest.param(
+                    scene,
+                    dict(zip(scene.coordinates, names, strict=True)),
+                    options,
+                    id=f"{scene.id}-{'-'.join(names)}-{'-'.join(choice)}",
+                )
+
+
+@pytest.mark.parametrize("scene, names, options", list(_presentations()))
+def test_a_shared_derivation_equals_the_own_one(scene, names, options):
+    variant = SceneVariant(scene, names=names, options=options)
+    shared = LagrangianSystem(variant.lagrangian, variant.jets).euler_lagrange
+    assert shared == _derive_euler_lagrange(variant.lagrangian, variant.jets)
+
+
+def test_renamed_systems_share_one_derivation():
+    scene = next(s for s in SCENES if s.id == "pendulum_on_cart")
+    renamings = [scene.renames.get(c, (c,)) for c in scene.coordinates]
+    _DERIVED.clear()
+    for names in itertools.product(*renamings):
+        v = SceneVariant(scene, names=dict(zip(scene.coordinates, names, strict=True)))
+        _ = LagrangianSystem(v.lagrangian, v.jets).euler_lagrange
+    assert len(_DERIVED) == 1
