@@ -63,7 +63,13 @@ def cached_problem(spec: Any, key: str | None = None) -> Problem:
     key = problem_key(spec) if key is None else key
     found = _problems.get(key)
     if found is None:
+        start = time.perf_counter()
         found = build_problem(spec)
+        # Reading the question (parsing its L or closed form, its domains) is preparation too:
+        # charged to its budget, so that `prepare_ms` hides none of it.
+        elapsed = time.perf_counter() - start
+        found.budget.spent += elapsed
+        found.budget.left -= elapsed
         _problems[key] = found
         if len(_problems) > _CACHE_SIZE:
             old, _ = _problems.popitem(last=False)
@@ -71,6 +77,14 @@ def cached_problem(spec: Any, key: str | None = None) -> Problem:
     else:
         _problems.move_to_end(key)
     return found
+
+
+def _is_new(spec: Any) -> bool:
+    """The problem field has not been read in this process (or has left its cache)."""
+    try:
+        return isinstance(spec, Mapping) and problem_key(spec) not in _problems
+    except (TypeError, ValueError):
+        return True
 
 
 def prepare(problem: Problem, part: str, diagnosis: bool = False) -> None:
@@ -150,9 +164,10 @@ def check_request(
     same timeout at once for every later answer, so it holds a batch up once, not per answer."""
     spec, part, answer, given = _validate(request)
     try:
+        new = not isinstance(spec, Problem) and _is_new(spec)
         problem = cached_problem(spec)
         budget = problem.budget
-        spent = budget.spent
+        spent = 0.0 if new else budget.spent  # a question read just now: its reading counts
         if budget.exhausted:
             return _preparation_timeout(part, budget, spent)
         if (problem.key, part) not in _prepared:

@@ -1,8 +1,11 @@
 """Diagnosis only for wrong answers, and only as far as needed; the question's preparation has
 its own budget, reported as `prepare_ms` and separate from the answer's `ms`."""
 
+import time
+
 from lagrade.judge.check import cached_problem, check_request
 from lagrade.judge.key import key_answer
+from lagrade.judge.problem import build_problem
 from lagrade.notation.printer import plain
 
 
@@ -47,3 +50,24 @@ def test_results_report_prepare_ms_beside_ms():
     again = check_request({"problem": spec, "part": "expression", "answer": "sin(alpha) g"}, 2.0)
     assert list(first.to_dict())[5:7] == ["ms", "prepare_ms"]
     assert first.prepare_ms > 0 and again.prepare_ms == 0
+
+
+def test_reading_the_question_counts_as_its_preparation():
+    """Parsing an ad-hoc problem's L is the instructor's side of the work: the first answer's
+    `prepare_ms` includes it (it once fell outside both clocks)."""
+    from lagrade.judge.check import _problems, problem_key
+
+    spec = {
+        "lagrangian": "m*l^2*theta_dot^2/2 + m*g*l*cos(theta) + 0*k_9021",
+        "coordinates": ["theta"],
+        "parameters": {"m": "positive", "g": "positive", "l": "positive", "k_9021": "positive"},
+    }
+    first = check_request({"problem": spec, "part": "cyclic", "answer": "none"}, 2.0)
+    problem = _problems[problem_key(spec)]
+    assert first.status == "correct"
+    # cyclic needs no derivation: what it reports is the reading of the question, and all of it
+    start = time.perf_counter()
+    build_problem(spec)
+    reading_ms = (time.perf_counter() - start) * 1e3
+    assert first.prepare_ms >= 0.3 * reading_ms > 0
+    assert abs(first.prepare_ms - problem.budget.spent * 1e3) < 1e-6
