@@ -24,6 +24,10 @@ _WORD = re.compile(
 #: A power that follows something other than a name: `(x + y)^2`.
 _POWER = re.compile(r"\^(?P<power>-?\d+|[A-Za-z])")
 _ENGLISH = frozenset({"a", "A", "I"})
+#: After a name that is also an English word, what shows it is the name: the sentence goes on
+#: with punctuation ("of radius a?", "a (Kepler's third law)") or a preposition ("inertia I about
+#: its axle"), never with the noun an article or a pronoun would take.
+_AFTER_A_NAME = re.compile(r"\s*(?:[^\w\s]|$|(?:about|and|or|of|in)\b)")
 _SUPERSCRIPT = str.maketrans(
     "-0123456789", "\u207b\u2070\u00b9\u00b2\u00b3\u2074\u2075\u2076\u2077\u2078\u2079"
 )
@@ -77,12 +81,14 @@ class _Builder:
         self.html.append(str(rendered.mathml))
         self.tex.append(f"${rendered.latex}$")
 
-    def prose(self, literal: str, names: frozenset[str]) -> None:
-        """Free text: the given names, and any word raised to a power, set as math."""
+    def prose(self, literal: str, names: frozenset[str], english: frozenset[str] = frozenset()):
+        """Free text: the given names, and any word raised to a power, set as math; a name in
+        `english` (a parameter called a or I) only where the words after it show it is one."""
         last = 0
         for match in _WORD.finditer(literal):
             name, power = match.group("name"), match.group("power")
-            if name in names or power is not None:
+            named = name in english and _AFTER_A_NAME.match(literal, match.end()) is not None
+            if name in names or power is not None or named:
                 self.text(literal[last : match.start()])
                 self.math(name, power)
                 last = match.end()
@@ -101,17 +107,18 @@ def render_prose(
     fill = fill or {}
     fields = set(math_fields)
     words = frozenset(names) - _ENGLISH
+    english = frozenset(names) & _ENGLISH
     out = _Builder()
     plain: list[str] = []
     parsed = string.Formatter().parse(template) if fill else [(template, None, None, None)]
     for literal, field_name, _spec, _conversion in parsed:
         plain.append(literal)
-        out.prose(literal, words)
+        out.prose(literal, words, english)
         if field_name is not None:
             value = fill[field_name]
             plain.append(value)
             if field_name in fields:
                 out.math(value)
             else:  # an option's wording is prose too ("the potential V = m g z")
-                out.prose(value, words)
+                out.prose(value, words, english)
     return Prose("".join(plain), "".join(out.md), "".join(out.html), "".join(out.tex))

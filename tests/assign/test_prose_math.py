@@ -68,3 +68,13 @@ def test_prose_survives_pickling() -> None:
         rendered.md,
         str(rendered.html),
     )
+
+
+def test_a_parameter_named_like_an_english_word_is_math_only_where_it_is_the_name() -> None:
+    """`a` and `I` are parameters of some scenes and words of every sentence: "of radius a?" and
+    "moment of inertia I about its axle" set the name as math, "a circular orbit" stays prose."""
+    kepler = _statement(get_scene("kepler").default)["tex"]
+    assert "radius $a$?" in kepler and "round a circular orbit" in kepler
+    assert "of a sun" in kepler
+    wheel = _statement(get_scene("wheel").default)["tex"]
+    assert "inertia $I$ about" in wheel and "on a fixed" in wheel
