@@ -19,6 +19,7 @@ L = ½ m l² θ̇² + m g l cos θ, p_θ = m l² θ̇, E_θ = m l² θ̈ + m g l
 
 from __future__ import annotations
 
+import threading
 from collections import OrderedDict
 from collections.abc import Sequence
 from dataclasses import dataclass
@@ -123,6 +124,7 @@ def _derive_euler_lagrange(L: sp.Expr, jets: Sequence[Jet]) -> tuple[sp.Expr, ..
 #: Derivations by the canonical form of (L, coordinates), most recently used last.
 _DERIVED: OrderedDict[str, tuple[sp.Expr, ...]] = OrderedDict()
 _DERIVED_SIZE = 256
+_DERIVED_LOCK = threading.Lock()  # the answer page builds views in threads
 
 
 def _derived_once(L: sp.Expr, jets: Sequence[Jet], derive) -> tuple[sp.Expr, ...]:
@@ -140,14 +142,16 @@ def _derived_once(L: sp.Expr, jets: Sequence[Jet], derive) -> tuple[sp.Expr, ...
             forward[a], back[b] = b, a
     form = L.xreplace(forward)
     key = f"{derive.__name__}:{len(jets)}:{sp.srepr(form)}"
-    found = _DERIVED.get(key)
+    with _DERIVED_LOCK:
+        found = _DERIVED.get(key)
+        if found is not None:
+            _DERIVED.move_to_end(key)
     if found is None:
-        found = derive(form, canonical)
-        _DERIVED[key] = found
-        if len(_DERIVED) > _DERIVED_SIZE:
-            _DERIVED.popitem(last=False)
-    else:
-        _DERIVED.move_to_end(key)
+        found = derive(form, canonical)  # outside the lock: a time limit may interrupt it
+        with _DERIVED_LOCK:
+            _DERIVED[key] = found
+            if len(_DERIVED) > _DERIVED_SIZE:
+                _DERIVED.popitem(last=False)
     return tuple(sp.expand(e.xreplace(back)) for e in found)
 
 
