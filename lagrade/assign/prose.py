@@ -14,6 +14,7 @@ import sympy as sp
 from markupsafe import Markup, escape
 
 from lagrade.assign.templating import md_escape, tex_escape
+from lagrade.assign.units import SUPERSCRIPT
 from lagrade.notation import printer as rm
 
 #: A name in prose: a whole word, not part of a possessive or a contraction ("pendulum's"),
@@ -28,9 +29,6 @@ _ENGLISH = frozenset({"a", "A", "I"})
 #: with punctuation ("of radius a?", "a (Kepler's third law)") or a preposition ("inertia I about
 #: its axle"), never with the noun an article or a pronoun would take.
 _AFTER_A_NAME = re.compile(r"\s*(?:[^\w\s]|$|(?:about|and|or|of|in)\b)")
-_SUPERSCRIPT = str.maketrans(
-    "-0123456789", "\u207b\u2070\u00b9\u00b2\u00b3\u2074\u2075\u2076\u2077\u2078\u2079"
-)
 
 
 class Prose(str):
@@ -62,7 +60,7 @@ class _Builder:
         for m in _POWER.finditer(chunk):
             self._plain(chunk[last : m.start()])
             power = m.group("power")
-            self.md.append(power.translate(_SUPERSCRIPT) if power[-1].isdigit() else f"^{power}")
+            self.md.append(power.translate(SUPERSCRIPT) if power[-1].isdigit() else f"^{power}")
             self.html.append(f"<sup>{escape(power)}</sup>")
             self.tex.append(f"$^{{{power}}}$")
             last = m.end()

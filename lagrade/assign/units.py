@@ -13,7 +13,7 @@ from lagrade.assign.templating import tex_escape
 #: A unit's tokens: a factor with an optional exponent (`s^2`, `s**-1`), `/`, `*`, parentheses,
 #: or the space that multiplies two factors (`kg s^2`).
 _TOKEN = re.compile(r"([A-Za-z]+)(?:\^|\*\*)?(-?\d+)?|([/*()])|(\s+)")
-_SUPERSCRIPT = str.maketrans(
+SUPERSCRIPT = str.maketrans(
     "-0123456789", "\u207b\u2070\u00b9\u00b2\u00b3\u2074\u2075\u2076\u2077\u2078\u2079"
 )
 
@@ -53,7 +53,7 @@ def unit_formats(unit: str) -> dict[str, Any]:
     text, html, tex = [], [], []
     for kind, name, exponent in tokens:
         if kind == "factor":
-            text.append(name + exponent.translate(_SUPERSCRIPT))
+            text.append(name + exponent.translate(SUPERSCRIPT))
             html.append(str(escape(name)) + (f"<sup>{exponent}</sup>" if exponent else ""))
             tex.append(name + (f"^{{{exponent}}}" if exponent else ""))
         else:
@@ -84,7 +84,7 @@ class Number(str):
         mantissa, _, exponent = plain.partition("e")
         if exponent:
             power = str(int(exponent))
-            self.text = f"{mantissa}×10{power.translate(_SUPERSCRIPT)}"
+            self.text = f"{mantissa}×10{power.translate(SUPERSCRIPT)}"
             self.html = Markup(f"{escape(mantissa)}×10<sup>{escape(power.replace('-', '−'))}</sup>")
             self.tex = f"{mantissa}\\times10^{{{power}}}"
         else:

@@ -37,6 +37,8 @@ PART_NAMES = (
 )
 #: `lagrade.judge.check.DEFAULT_TIME_LIMIT` (pinned equal by the same test).
 DEFAULT_TIME_LIMIT = 2.0
+#: `lagrade.judge.problem.IMAGINARY_UNITS` (pinned equal by the same test).
+IMAGINARY_UNITS = ("I", "i", "j")
 
 
 #: Request lines judged per round: the parent holds one round's requests and results at a time,
@@ -124,7 +126,7 @@ def add_check_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--expression", help="an ad-hoc reference expression (with --parameters)")
     parser.add_argument(
         "--imaginary-unit",
-        choices=("I", "i", "j"),
+        choices=IMAGINARY_UNITS,
         help="with --expression: how the imaginary unit is spelled in a question about complex "
         "numbers (otherwise I, i, j are ordinary names)",
     )

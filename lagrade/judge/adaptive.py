@@ -102,7 +102,8 @@ def usable_points(
         ok = np.isfinite(b)
         beyond = np.isinf(b)  # past float range (SI quantities to a power): ask mpmath
         if beyond.any():
-            ok |= beyond & _finite_reference_mp(program, env, beyond)
+            # the reference is the program's second output
+            ok |= beyond & ev.finite_in_mp(lambda p: ev.run(program, p, ev.MP)[1:], env, beyond)
         idx = np.nonzero(ok)[0][:want]
         kept_a.append(a[idx])
         kept_b.append(b[idx])
@@ -257,21 +258,6 @@ _BRANCHED = frozenset({"log", "asin", "acos", "acosh", "atanh"})
 #: Points drawn for the complex comparison, and its working precision.
 BRANCH_POINTS = 12
 BRANCH_DIGITS = 30
-
-
-def _finite_reference_mp(program: ev.Program, env: Mapping, where: np.ndarray) -> np.ndarray:
-    """Whether the reference (the program's second output) is finite in mpmath, whose
-    exponents are unbounded, at the points `where`."""
-    out = np.zeros(len(where), dtype=bool)
-    with mpmath.workdps(ev.MP_DIGITS):
-        for i in np.nonzero(where)[0]:
-            point = {s: ev.MP.array(v[i : i + 1]) for s, v in env.items()}
-            try:
-                value = ev.run(program, point, ev.MP)[1]
-            except (ZeroDivisionError, ValueError, OverflowError):
-                continue
-            out[i] = bool(ev.MP.finite(value).all())
-    return out
 
 
 def _has_branches(program: ev.Program) -> bool:

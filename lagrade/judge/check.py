@@ -79,14 +79,6 @@ def cached_problem(spec: Any, key: str | None = None) -> Problem:
     return found
 
 
-def _is_new(spec: Any) -> bool:
-    """The problem field has not been read in this process (or has left its cache)."""
-    try:
-        return isinstance(spec, Mapping) and problem_key(spec) not in _problems
-    except (TypeError, ValueError):
-        return True
-
-
 def prepare(problem: Problem, part: str, diagnosis: bool = False) -> None:
     """Derive what judging `part` needs before the student's clock starts, and no more: the
     sample points of the parts judged at points (drawing them needs the reference and, for
@@ -164,8 +156,9 @@ def check_request(
     same timeout at once for every later answer, so it holds a batch up once, not per answer."""
     spec, part, answer, given = _validate(request)
     try:
-        new = not isinstance(spec, Problem) and _is_new(spec)
-        problem = cached_problem(spec)
+        key = problem_key(spec) if isinstance(spec, Mapping) else None
+        new = key is not None and key not in _problems
+        problem = cached_problem(spec, key)
         budget = problem.budget
         spent = 0.0 if new else budget.spent  # a question read just now: its reading counts
         if budget.exhausted:

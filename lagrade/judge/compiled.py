@@ -14,6 +14,7 @@ from lagrade.judge.evaluate import (
     MP,
     Program,
     compile_program,
+    finite_in_mp,
     run,
     run_hyperdual,
     top_terms,
@@ -75,21 +76,8 @@ def finite_mask(compiled: Sequence[Compiled]) -> Callable[[dict], np.ndarray]:
                 finite = np.isfinite(to_length(value, n)) & np.isfinite(to_length(size, n))
                 huge = ~finite & np.isinf(to_length(size, n))
                 if huge.any():
-                    finite |= huge & _finite_in_mp(c, env, huge)
+                    finite |= huge & finite_in_mp(lambda p, c=c: c.values(p, MP), env, huge)
                 ok &= finite
         return ok
 
     return valid
-
-
-def _finite_in_mp(compiled: Compiled, env: Mapping, where: np.ndarray) -> np.ndarray:
-    """Whether the value is finite at the points `where`, in mpmath (no overflow)."""
-    out = np.zeros(len(where), dtype=bool)
-    for i in np.nonzero(where)[0]:
-        point = {s: MP.array(np.atleast_1d(v)[i : i + 1]) for s, v in env.items()}
-        try:
-            value, size = compiled.values(point, MP)
-        except (ZeroDivisionError, ValueError, OverflowError):
-            continue
-        out[i] = bool(MP.finite(value).all() and MP.finite(size).all())
-    return out

@@ -14,7 +14,7 @@ sample point, without differentiating symbolically.
 
 from __future__ import annotations
 
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any
 
@@ -215,6 +215,25 @@ class _Mp:
 
 FLOAT = _Float
 MP = _Mp
+
+
+def finite_in_mp(
+    values_at: Callable[[dict], Sequence], env: Mapping, where: np.ndarray
+) -> np.ndarray:
+    """Whether `values_at(point)` (arrays of one mpmath value each) are all finite at the
+    points `where` of env, in mpmath, whose exponents are unbounded: a value past float range
+    (SI quantities to a power) is finite all the same. Undefined there counts as not finite."""
+    out = np.zeros(len(where), dtype=bool)
+    with mpmath.workdps(MP_DIGITS):
+        for i in np.nonzero(where)[0]:
+            point = {s: MP.array(np.atleast_1d(v)[i : i + 1]) for s, v in env.items()}
+            try:
+                values = values_at(point)
+            except (ZeroDivisionError, ValueError, OverflowError):
+                continue
+            out[i] = all(MP.finite(v).all() for v in values)
+    return out
+
 
 # First and second derivatives of each function, as functions of (x, f(x)), for the chain rule
 # f(a + δ) = f(a) + f'(a) δ + ½ f''(a) δ² on hyper-dual numbers.

@@ -40,42 +40,34 @@ class _OutOfScope(Exception):
     """The expression is not a rational function of symbols and trig of their combinations."""
 
 
-def _check_rational_trig(expr: sp.Expr, inside_trig: bool = False, trig: set | None = None) -> bool:
+def _check_rational_trig(expr: sp.Expr, inside_trig: bool = False) -> bool:
     """Raise _OutOfScope unless expr is built from rationals, symbols, +, ×, integer powers, and
     sin/cos/tan/cot/sec/csc of (rational combinations of symbols + rational multiples of π).
-    Returns whether it has a trig function (counted in `trig`, which the recursion shares)."""
-    trig = set() if trig is None else trig
-    _check_rational_trig_in(expr, inside_trig, trig)
-    return bool(trig)
-
-
-def _check_rational_trig_in(expr: sp.Expr, inside_trig: bool, trig: set) -> None:
+    Returns whether it has a trig function (a rational function as it stands needs no
+    reduction of trig arguments)."""
     if expr.is_Symbol or expr.is_Rational:
-        return
+        return False
     if expr is sp.pi:
         if inside_trig:
-            return
+            return False
         raise _OutOfScope("π outside a trig argument")
     if expr.is_Add or expr.is_Mul:
-        for a in expr.args:
-            _check_rational_trig_in(a, inside_trig, trig)
-        return
+        found = [_check_rational_trig(a, inside_trig) for a in expr.args]  # every arg checked
+        return any(found)
     if expr.is_Pow:
         if not expr.exp.is_Integer or inside_trig:
             raise _OutOfScope(f"power {expr}")
         if abs(int(expr.exp)) > MAX_EXACT_POWER:  # exact numbers of 10^5 bits and more: slow
             raise _OutOfScope(f"power {expr.exp} too high for exact arithmetic")
-        _check_rational_trig_in(expr.base, inside_trig, trig)
-        return
+        return _check_rational_trig(expr.base, inside_trig)
     if isinstance(expr, _TRIG) and not inside_trig:
         arg = expr.args[0]
         if not all(
             _is_linear(term) or _monomial_symbol(term) is not None for term in sp.Add.make_args(arg)
         ):
             raise _OutOfScope(f"non-linear trig argument {arg}")
-        trig.add(expr)
-        _check_rational_trig_in(arg, True, trig)
-        return
+        _check_rational_trig(arg, inside_trig=True)
+        return True
     raise _OutOfScope(f"{type(expr).__name__}")
 
 

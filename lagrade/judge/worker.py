@@ -348,7 +348,7 @@ class Pool:
                             self._start(worker, *worker.queued[:2])
                             worker.queued = None
                             busy[conn] = worker
-                        else:  # retired (recycled) before it could take it
+                        else:  # it died before it could take it (none is sent to its last)
                             self._requeue(worker, pending)
                 for conn, worker in list(busy.items()):
                     if time.monotonic() >= worker.until:

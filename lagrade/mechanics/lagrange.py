@@ -121,18 +121,19 @@ def _derive_euler_lagrange(L: sp.Expr, jets: Sequence[Jet]) -> tuple[sp.Expr, ..
     )
 
 
-#: Derivations by the canonical form of (L, coordinates), most recently used last.
+#: Euler–Lagrange expressions by the canonical form of (L, coordinates), most recently used
+#: last.
 _DERIVED: OrderedDict[str, tuple[sp.Expr, ...]] = OrderedDict()
 _DERIVED_SIZE = 256
 _DERIVED_LOCK = threading.Lock()  # the answer page builds views in threads
 
 
-def _derived_once(L: sp.Expr, jets: Sequence[Jet], derive) -> tuple[sp.Expr, ...]:
-    """`derive(L, jets)`, computed for L with its coordinates renamed q0·, q1·, … by position (a
-    name no one can type, so no parameter shares it) and cached under that form: a question
-    asked under renamed coordinates (a variant, a batch that gives one system under several
-    names) is derived once. The cached result is renamed back and expanded, which is the very
-    expression deriving under the own names gives (both are expanded sums over the same atoms;
+def _shared_euler_lagrange(L: sp.Expr, jets: Sequence[Jet]) -> tuple[sp.Expr, ...]:
+    """E of L, derived for L with its coordinates renamed q0·, q1·, … by position (names no one
+    can type, so no parameter shares them) and cached under that form: a question asked under
+    renamed coordinates (a variant, a batch that gives one system under several names) is
+    derived once. The cached result is renamed back and expanded, which is the very expression
+    deriving under the own names gives (both are expanded sums over the same atoms;
     tests/bank/test_shared_derivation.py checks every scene under every renaming)."""
     canonical = [jet(f"q{k}\N{MIDDLE DOT}") for k in range(len(jets))]
     forward: dict[sp.Symbol, sp.Symbol] = {}
@@ -141,13 +142,13 @@ def _derived_once(L: sp.Expr, jets: Sequence[Jet], derive) -> tuple[sp.Expr, ...
         for a, b in ((own.q, mine.q), (own.dot, mine.dot), (own.ddot, mine.ddot)):
             forward[a], back[b] = b, a
     form = L.xreplace(forward)
-    key = f"{derive.__name__}:{len(jets)}:{sp.srepr(form)}"
+    key = f"{len(jets)}:{sp.srepr(form)}"
     with _DERIVED_LOCK:
         found = _DERIVED.get(key)
         if found is not None:
             _DERIVED.move_to_end(key)
     if found is None:
-        found = derive(form, canonical)  # outside the lock: a time limit may interrupt it
+        found = _derive_euler_lagrange(form, canonical)  # outside the lock: a limit may strike
         with _DERIVED_LOCK:
             _DERIVED[key] = found
             if len(_DERIVED) > _DERIVED_SIZE:
@@ -178,9 +179,9 @@ class LagrangianSystem:
     @cached_property
     def euler_lagrange(self) -> tuple[sp.Expr, ...]:
         """E_j = D_t p_j − ∂L/∂q_j, expanded; E_j = 0 are the equations of motion. Derived once
-        per canonical form of L (`_derived_once`): the same system under renamed coordinates
-        shares the derivation and only renames its result."""
-        return _derived_once(self.L, self.jets, _derive_euler_lagrange)
+        per canonical form of L (`_shared_euler_lagrange`): the same system under renamed
+        coordinates shares the derivation and only renames its result."""
+        return _shared_euler_lagrange(self.L, self.jets)
 
     @cached_property
     def mass_matrix(self) -> sp.Matrix:

@@ -355,11 +355,7 @@ class SceneVariant:
             known |= {j.q, j.dot}
         used: set[sp.Symbol] = set()
         for b in self.bodies:
-            for label, expr in [("position", b.position), ("mass", (b.mass,))] + (
-                [("inertia", (b.inertia,)), ("angle", (b.angle,))]
-                if isinstance(b, RigidBody)
-                else []
-            ):
+            for label, expr in _body_fields(b):
                 for x in expr:
                     free = x.free_symbols
                     used |= free
@@ -465,7 +461,7 @@ class SceneVariant:
         constraints or quantities contain, or its statement names. An option can leave one out
         (no k for uniform gravity, no M for a massless pulley), and a handout that lists it
         anyway sends students looking for a term that is not there."""
-        exprs = [x for b in self.bodies for x in self._body_fields(b)]
+        exprs = [x for b in self.bodies for _, field in _body_fields(b) for x in field]
         exprs += [self.potential_energy, *self.quantities.values()]
         exprs += [f for _, f in self.constraints]
         symbols: set[sp.Basic] = set().union(*(as_expr(x).free_symbols for x in exprs))
@@ -475,11 +471,6 @@ class SceneVariant:
             for name, symbol in self.parameter_symbols.items()
             if symbol in symbols or name in words
         )
-
-    @staticmethod
-    def _body_fields(b: Body) -> tuple:
-        fields = (*b.position, b.mass)
-        return fields + (b.inertia, b.angle) if isinstance(b, RigidBody) else fields
 
     @cached_property
     def numeric_values(self) -> dict[sp.Symbol, sp.Expr]:
@@ -503,6 +494,15 @@ class SceneVariant:
     def statement(self) -> str:
         """The problem text with this variant's coordinate names and option words filled in."""
         return self.scene.statement.format(**self.statement_fill)
+
+
+def _body_fields(body: Body) -> list[tuple[str, tuple]]:
+    """A body's declared expressions by field: position, mass, and a rigid body's inertia and
+    angle."""
+    fields = [("position", tuple(body.position)), ("mass", (body.mass,))]
+    if isinstance(body, RigidBody):
+        fields += [("inertia", (body.inertia,)), ("angle", (body.angle,))]
+    return fields
 
 
 def _normalized(body: Body) -> Body:

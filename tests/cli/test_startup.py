@@ -47,12 +47,14 @@ def test_parse_loads_sympy_but_not_numpy_or_the_judge():
 
 
 def test_the_command_lines_part_names_are_the_judges():
-    from lagrade.cli.check import DEFAULT_TIME_LIMIT, PART_NAMES
+    from lagrade.cli.check import DEFAULT_TIME_LIMIT, IMAGINARY_UNITS, PART_NAMES
     from lagrade.judge.check import DEFAULT_TIME_LIMIT as JUDGE_TIME_LIMIT
     from lagrade.judge.parts import PARTS
+    from lagrade.judge.problem import IMAGINARY_UNITS as JUDGE_IMAGINARY_UNITS
 
     assert PART_NAMES == tuple(PARTS)
     assert DEFAULT_TIME_LIMIT == JUDGE_TIME_LIMIT
+    assert IMAGINARY_UNITS == JUDGE_IMAGINARY_UNITS
 
 
 def test_check_batch_loads_the_judge_but_not_the_reports(tmp_path):

@@ -69,17 +69,16 @@ def test_other_spellings_and_only_where_declared():
     plain = {"expression": "x", "parameters": {"x": "real"}}
     verdict = check(plain, "expression", "x + 0*I", time_limit=None)
     assert verdict.status == "invalid" and "declares it" in verdict.feedback[0]
-    with pytest.raises(RequestError, match="imaginary_unit"):
-        check(
-            {"expression": "x", "parameters": {"x": "real"}, "imaginary_unit": "k"},
-            "expression",
-            "x",
-            time_limit=None,
-        )
-    with pytest.raises(RequestError, match="clashes"):
-        check(
-            {"expression": "I", "parameters": {"I": "real"}, "imaginary_unit": "I"},
-            "expression",
-            "I",
-            time_limit=None,
-        )
+
+
+@pytest.mark.parametrize(
+    "problem, message",
+    [
+        ({"expression": "x", "parameters": {"x": "real"}, "imaginary_unit": "k"}, "imaginary_unit"),
+        ({"expression": "I", "parameters": {"I": "real"}, "imaginary_unit": "I"}, "clashes"),
+    ],
+    ids=["unknown-spelling", "clashes-with-a-parameter"],
+)
+def test_a_bad_declaration_is_refused(problem, message):
+    with pytest.raises(RequestError, match=message):
+        check(problem, "expression", problem["expression"], time_limit=None)
