@@ -45,6 +45,8 @@ from lagrade.judge.worker import (
 DEFAULT_TIME_LIMIT = 2.0
 MAX_TIME_LIMIT = 120.0
 _CACHE_SIZE = 256
+#: Verdicts kept per process for answers that come again (same question, part, answer, given).
+_VERDICT_CACHE_SIZE = 4_096
 
 # --- the question a request is about, cached per process -----------------------------------------
 
@@ -109,6 +111,33 @@ def prepare(problem: Problem, part: str, diagnosis: bool = False) -> None:
             problem.catalogue.warm(part, problem.points(part))
 
 
+# --- answers seen before -------------------------------------------------------------------------
+
+#: What was decided for an answer, by (question, part, answer, given): a class types the same
+#: answer many times over (a sixth of the benchmark batch repeats an earlier request), and
+#: judging is a function of these alone (the sample points are seeded by the question).
+_verdicts: OrderedDict[tuple[str, str, str, str], Verdict] = OrderedDict()
+#: Statuses worth remembering: a timeout or an error may not happen again.
+_SETTLED = ("correct", "incorrect", "invalid")
+
+
+def _answer_key(problem: Problem, part: str, answer: Any, given: Mapping | None):
+    """The key of a decided answer, or None when the answer has no canonical JSON form."""
+    try:
+        text = json.dumps([answer, given], sort_keys=True, separators=(",", ":"))
+    except (TypeError, ValueError):
+        return None
+    return (problem.key, part, text)
+
+
+def _remember(key, verdict: Verdict) -> None:
+    if key is None or verdict.status not in _SETTLED:
+        return
+    _verdicts[key] = verdict
+    if len(_verdicts) > _VERDICT_CACHE_SIZE:
+        _verdicts.popitem(last=False)
+
+
 # --- one request ---------------------------------------------------------------------------------
 
 
@@ -153,12 +182,20 @@ def check_request(
     Two clocks: the question's preparation (`prepare`, and catalogue work a wrong answer sets
     aside) is charged to the question's budget and reported as `prepare_ms`; the student's
     part gets `limit` and is reported as `ms`. A question whose budget has run out gets the
-    same timeout at once for every later answer, so it holds a batch up once, not per answer."""
+    same timeout at once for every later answer, so it holds a batch up once, not per answer.
+    An answer this process has decided before (same question, part, answer and given) gets that
+    verdict again without being judged: `ms` is then the lookup, `prepare_ms` 0."""
+    received = time.perf_counter()
     spec, part, answer, given = _validate(request)
     try:
         key = problem_key(spec) if isinstance(spec, Mapping) else None
         new = key is not None and key not in _problems
         problem = cached_problem(spec, key)
+        seen = _answer_key(problem, part, answer, given)
+        if seen in _verdicts:  # judged before: the same verdict, for the time of a lookup
+            _verdicts.move_to_end(seen)
+            ms = (time.perf_counter() - received) * 1e3
+            return Verdict(**{**_verdicts[seen].__dict__, "ms": ms})
         budget = problem.budget
         spent = 0.0 if new else budget.spent  # a question read just now: its reading counts
         if budget.exhausted:
@@ -186,7 +223,9 @@ def check_request(
     except ReferenceUndefined as error:
         raise RequestError(f"the problem cannot be graded: {error}") from None
     prepare_ms = (budget.spent - spent) * 1e3
-    return Verdict(**{**verdict.__dict__, "ms": ms, "prepare_ms": prepare_ms})
+    verdict = Verdict(**{**verdict.__dict__, "ms": ms, "prepare_ms": prepare_ms})
+    _remember(seen, Verdict(**{**verdict.__dict__, "prepare_ms": 0.0}))
+    return verdict
 
 
 def _diagnose(problem: Problem, part: str, budget: Budget, limit: float | None) -> None:

@@ -1,0 +1,72 @@
+"""An answer a process has decided before is not judged again: the same question, part, answer
+and given get the same verdict, with `ms` the lookup and `prepare_ms` 0. What may not happen
+again (a timeout) is not remembered."""
+
+import importlib
+
+import pytest
+
+from lagrade.judge.check import cached_problem, check_request
+
+check_module = importlib.import_module("lagrade.judge.check")
+
+
+@pytest.fixture
+def judged(monkeypatch):
+    """The requests that reached a checker."""
+    calls = []
+    real = check_module.run_checker
+
+    def counting(problem, part, answer, given):
+        calls.append((part, answer, given))
+        return real(problem, part, answer, given)
+
+    monkeypatch.setattr(check_module, "run_checker", counting)
+    return calls
+
+
+EXPRESSION = {"expression": "g*sin(alpha)/3", "parameters": {"g": "positive", "alpha": "(0, 1)"}}
+
+
+def test_a_repeated_answer_gets_the_same_verdict_without_judging(judged):
+    request = {"problem": EXPRESSION, "part": "expression", "answer": "g cos(alpha)/3"}
+    first = check_request(request, 2.0)
+    again = check_request(dict(request), 2.0)
+    assert len(judged) == 1
+    assert first.status == "incorrect" and first.mistakes == ("sin_cos_swapped",)
+    timing = ("ms", "prepare_ms")
+    assert {k: v for k, v in again.__dict__.items() if k not in timing} == {
+        k: v for k, v in first.__dict__.items() if k not in timing
+    }
+    assert again.prepare_ms == 0 and again.ms < first.ms
+
+
+@pytest.mark.parametrize(
+    ("power", "other"),
+    [
+        (2, {"answer": "g*alpha^2 "}),  # other text, though the same expression
+        (3, {"part": "lagrangian"}),  # another part (refused: the problem has no L)
+        (4, {"given": {"lagrangian": "x"}}),
+    ],
+)
+def test_only_the_very_same_request_is_remembered(judged, power, other):
+    spec = {"expression": f"g*alpha^{power}", "parameters": {"g": "positive", "alpha": "(0, 1)"}}
+    request = {"problem": spec, "part": "expression", "answer": f"g alpha^{power}"}
+    check_request(request, 2.0)
+    try:
+        check_request({**request, **other}, 2.0)
+    except Exception:  # noqa: BLE001 - a refused request was still not answered from memory
+        pass
+    assert len(judged) == 2
+
+
+def test_a_timeout_is_not_remembered(judged):
+    spec = {"scene": "wedge", "seed": 9101}
+    problem = cached_problem(spec)
+    request = {"problem": spec, "part": "dof", "answer": "2"}
+    left = problem.budget.left
+    problem.budget.left = 0.0  # the question's budget has run out: every answer times out
+    assert check_request(request, 2.0).status == "timeout"
+    problem.budget.left = left
+    assert check_request(request, 2.0).status == "correct"
+    assert len(judged) == 1
