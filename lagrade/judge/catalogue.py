@@ -51,7 +51,7 @@ from lagrade.judge.mutations import (
     swap_sin_cos,
     velocities_in,
 )
-from lagrade.judge.rows import equation_rows
+from lagrade.judge.rows import Rows, equation_rows
 from lagrade.judge.sampling import Points
 from lagrade.judge.worker import Budget, set_aside
 from lagrade.mechanics.lagrange import Jet, LagrangianSystem
@@ -444,14 +444,11 @@ class Catalogue:
         """Per row mutant, the reference rows with its row in place of row i, at every point,
         reduced to what the span test needs (`span_arrays`)."""
         p = self.problem
-        with np.errstate(all="ignore"):
-            ref = p.cached(
-                "rows", points, lambda: equation_rows(p.euler_lagrange, p.jets, points.env)
-            )
+        ref = self.reference_rows(points)
 
         def evaluate(pair):
             i, m = pair
-            rows = equation_rows([self.compiled(m)], p.jets, points.env)
+            rows = self.mutant_rows(m, points)
             R = ref.coef.astype(float).copy()
             Rs = ref.size.astype(float).copy()
             R[:, i, :] = rows.coef[:, 0, :]
@@ -466,6 +463,25 @@ class Catalogue:
         if id(m) not in cache:
             cache[id(m)] = (m, Compiled.of(m.expr))
         return cache[id(m)][1]
+
+    def reference_rows(self, points: Points) -> Rows:
+        """The reference's Euler–Lagrange rows at `points`, computed once per question."""
+        p = self.problem
+        with np.errstate(all="ignore"):
+            return p.cached(
+                "rows", points, lambda: equation_rows(p.euler_lagrange, p.jets, points.env)
+            )
+
+    def mutant_rows(self, m: Mutant, points: Points) -> Rows:
+        """A row mutant's row at `points`, computed once: the keeper's fingerprint and the row
+        stack read the same values."""
+        p = self.problem
+        with np.errstate(all="ignore"):
+            return p.cached(
+                f"row:{id(m)}",
+                points,
+                lambda: equation_rows([self.compiled(m)], p.jets, points.env),
+            )
 
     def el_values(self, mut: Compiled, points: Points):
         return self.problem.cached(

@@ -15,7 +15,7 @@ from lagrade.judge.derivatives import euler_lagrange_values
 from lagrade.judge.equivalence import lagrangians_match
 from lagrade.judge.evaluate import FLOAT, UnsupportedExpression
 from lagrade.judge.mutations import Mutant
-from lagrade.judge.rows import equation_rows, in_span
+from lagrade.judge.rows import Rows, in_span
 from lagrade.judge.sampling import Points
 
 
@@ -27,6 +27,10 @@ class Catalogue(Protocol):
     def compiled(self, m: Mutant) -> Compiled: ...
 
     def el_values(self, mut: Compiled, points: Points) -> tuple[np.ndarray, np.ndarray]: ...
+
+    def reference_rows(self, points: Points) -> Rows: ...
+
+    def mutant_rows(self, m: Mutant, points: Points) -> Rows: ...
 
 
 def fingerprint(
@@ -51,14 +55,19 @@ def keeper(
     duplicates (the first, most specific, wins), by fingerprint at the part's points; it
     sees the mutants in catalogue order and remembers the ones it kept."""
     part = {"el": "lagrangian", "plain": "momenta", "offset": "V"}[mode]
-    seen: list[np.ndarray | None] = []
+    seen: list[np.ndarray] = []  # the reference's fingerprint (when it has one), then the kept
+    began = False
 
     def keep(m: Mutant) -> bool:
+        nonlocal began
         points = catalogue.problem.points(part)
         reference = reference_of()
         with np.errstate(all="ignore"):
-            if not seen:
-                seen.append(fingerprint(catalogue, reference, mode, points))
+            if not began:
+                began = True
+                own = fingerprint(catalogue, reference, mode, points)
+                if own is not None:
+                    seen.append(own)
             try:
                 fp = fingerprint(catalogue, catalogue.compiled(m), mode, points)
             except (UnsupportedExpression, ValueError, ZeroDivisionError):
@@ -67,7 +76,7 @@ def keeper(
                 return False
             if mode == "el" and same_dynamics(catalogue, m, reference, points):
                 return False  # e.g. ½θ̇² for ½Iθ̇²: a parameter factor, the same motion
-            if any(o is not None and _close(fp, o) for o in seen):
+            if _close_to_any(fp, seen):
                 return False
             seen.append(fp)
             return True
@@ -97,19 +106,16 @@ def row_keeper(catalogue: Catalogue) -> Callable[[tuple[int, Mutant]], bool]:
     """`keeper` for row mutants: a mutated row that still follows from the right equations
     changes nothing, and rows equal up to sign are duplicates."""
     p = catalogue.problem
-    seen: list[tuple[int, np.ndarray]] = []
-    state: dict = {}
+    seen: list[np.ndarray] = []
 
     def keep(pair: tuple[int, Mutant]) -> bool:
-        i, m = pair
+        _, m = pair
         points = p.points("eom")
-        if "ref" not in state:
-            state["ref"] = equation_rows(p.euler_lagrange, p.jets, points.env)
         try:
-            rows = equation_rows([catalogue.compiled(m)], p.jets, points.env)
+            rows = catalogue.mutant_rows(m, points)
         except (UnsupportedExpression, ValueError, ZeroDivisionError):
             return False
-        r, s = in_span(rows, state["ref"], 0)
+        r, s = in_span(rows, catalogue.reference_rows(points), 0)
         if np.all(np.abs(r) <= 1e-8 * s):
             return False  # the mutated row is still a consequence of the right equations
         fp = rows.coef[:, 0, :].ravel()
@@ -117,14 +123,22 @@ def row_keeper(catalogue: Catalogue) -> Callable[[tuple[int, Mutant]], bool]:
         if not np.isfinite(norm) or norm == 0:
             return False
         fp = fp / norm
-        if any(min(np.linalg.norm(fp - o), np.linalg.norm(fp + o)) < 1e-8 for _, o in seen):
-            return False
-        seen.append((i, fp))
+        if seen:
+            kept = np.asarray(seen)
+            apart = np.minimum(np.linalg.norm(kept - fp, axis=1), np.linalg.norm(kept + fp, axis=1))
+            if np.any(apart < 1e-8):
+                return False
+        seen.append(fp)
         return True
 
     return keep
 
 
-def _close(a: np.ndarray, b: np.ndarray) -> bool:
-    scale = max(np.max(np.abs(a)), np.max(np.abs(b)), 1e-300)
-    return a.shape == b.shape and float(np.max(np.abs(a - b))) <= 1e-9 * scale
+def _close_to_any(fp: np.ndarray, seen: list[np.ndarray]) -> bool:
+    """fp equals one of `seen` to 1e-9 of the larger of the two (all compared at once)."""
+    same = [o for o in seen if o.shape == fp.shape]
+    if not same:
+        return False
+    kept = np.asarray(same)
+    scale = np.maximum(np.max(np.abs(kept), axis=1), max(float(np.max(np.abs(fp))), 1e-300))
+    return bool(np.any(np.max(np.abs(kept - fp), axis=1) <= 1e-9 * scale))

@@ -199,7 +199,7 @@ def iter_momentum_mutants(
     yield Mutant(
         "force_not_momentum",
         f"{what} is ∂L/∂{name}; the momentum is ∂L/∂{name}_dot",
-        sp.diff(system.L, jets[k].q),
+        system.generalized_forces[k],
     )
     for m in lagrangian_mutants:
         if m.kind in KINETIC_KINDS:
@@ -239,7 +239,7 @@ def iter_equation_mutants(
     per_monomial: dict[sp.Expr, tuple[sp.Expr, ...]] = {}
     for i, j in enumerate(jets):
         what = f"the equation for {j.name}"
-        flipped = sp.expand(E[i] + 2 * sp.diff(system.L, j.q))  # D_t p + ∂L/∂q
+        flipped = sp.expand(E[i] + 2 * system.generalized_forces[i])  # D_t p + ∂L/∂q
         yield (
             i,
             Mutant(

@@ -114,26 +114,42 @@ def speed_squared(position: Sequence[sp.Expr], jets: Sequence[Jet]) -> sp.Expr:
     return sum((total_derivative(x, jets) ** 2 for x in position), sp.S.Zero)
 
 
-def _derive_euler_lagrange(L: sp.Expr, jets: Sequence[Jet]) -> tuple[sp.Expr, ...]:
-    return tuple(
-        sp.expand(total_derivative(sp.expand(p), jets) - sp.diff(L, j.q))
-        for p, j in zip(generalized_momenta(L, jets), jets, strict=True)
+def _derive(L: sp.Expr, jets: Sequence[Jet]) -> tuple[tuple[sp.Expr, ...], tuple[sp.Expr, ...]]:
+    """(E, F): E_j = D_t p_j − ∂L/∂q_j, expanded, and the generalized forces F_j = ∂L/∂q_j it
+    subtracts, as differentiated (the mistake catalogue flips the sign of Lagrange's equation
+    with F; `LagrangianSystem.generalized_forces` expands them only then)."""
+    forces = tuple(sp.diff(L, j.q) for j in jets)
+    equations = tuple(
+        sp.expand(total_derivative(sp.expand(p), jets) - f)
+        for p, f in zip(generalized_momenta(L, jets), forces, strict=True)
     )
+    return equations, forces
 
 
-#: Euler–Lagrange expressions by the canonical form of (L, coordinates), most recently used
-#: last.
-_DERIVED: OrderedDict[str, tuple[sp.Expr, ...]] = OrderedDict()
+#: (E, F) by the canonical form of (L, coordinates), most recently used last.
+_DERIVED: OrderedDict[str, tuple[tuple[sp.Expr, ...], tuple[sp.Expr, ...]]] = OrderedDict()
 _DERIVED_SIZE = 256
 _DERIVED_LOCK = threading.Lock()  # the answer page builds views in threads
 
 
-def _shared_euler_lagrange(L: sp.Expr, jets: Sequence[Jet]) -> tuple[sp.Expr, ...]:
-    """E of L, derived for L with its coordinates renamed q0·, q1·, … by position (names no one
-    can type, so no parameter shares them) and cached under that form: a question asked under
-    renamed coordinates (a variant, a batch that gives one system under several names) is
-    derived once. The cached result is renamed back and expanded, which is the very expression
-    deriving under the own names gives (both are expanded sums over the same atoms;
+@dataclass(frozen=True)
+class _SharedDerivation:
+    """A derivation under the canonical names, and the renaming back to the own names."""
+
+    equations: tuple[sp.Expr, ...]
+    forces: tuple[sp.Expr, ...]
+    back: dict[sp.Symbol, sp.Symbol]
+
+    def renamed(self, exprs: tuple[sp.Expr, ...]) -> tuple[sp.Expr, ...]:
+        return tuple(sp.expand(e.xreplace(self.back)) for e in exprs)
+
+
+def _shared_derivation(L: sp.Expr, jets: Sequence[Jet]) -> _SharedDerivation:
+    """E and F of L, derived for L with its coordinates renamed q0·, q1·, … by position (names
+    no one can type, so no parameter shares them) and cached under that form: a question asked
+    under renamed coordinates (a variant, a batch that gives one system under several names) is
+    derived once. A result renamed back and expanded is the very expression deriving under the
+    own names gives (both are expanded sums over the same atoms;
     tests/bank/test_shared_derivation.py checks every scene under every renaming)."""
     canonical = [jet(f"q{k}\N{MIDDLE DOT}") for k in range(len(jets))]
     forward: dict[sp.Symbol, sp.Symbol] = {}
@@ -148,12 +164,12 @@ def _shared_euler_lagrange(L: sp.Expr, jets: Sequence[Jet]) -> tuple[sp.Expr, ..
         if found is not None:
             _DERIVED.move_to_end(key)
     if found is None:
-        found = _derive_euler_lagrange(form, canonical)  # outside the lock: a limit may strike
+        found = _derive(form, canonical)  # outside the lock: a limit may strike
         with _DERIVED_LOCK:
             _DERIVED[key] = found
             if len(_DERIVED) > _DERIVED_SIZE:
                 _DERIVED.popitem(last=False)
-    return tuple(sp.expand(e.xreplace(back)) for e in found)
+    return _SharedDerivation(found[0], found[1], back)
 
 
 class LagrangianSystem:
@@ -177,11 +193,20 @@ class LagrangianSystem:
         return tuple(sp.expand(p) for p in generalized_momenta(self.L, self.jets))
 
     @cached_property
+    def _derivation(self) -> _SharedDerivation:
+        return _shared_derivation(self.L, self.jets)
+
+    @cached_property
     def euler_lagrange(self) -> tuple[sp.Expr, ...]:
         """E_j = D_t p_j − ∂L/∂q_j, expanded; E_j = 0 are the equations of motion. Derived once
-        per canonical form of L (`_shared_euler_lagrange`): the same system under renamed
+        per canonical form of L (`_shared_derivation`): the same system under renamed
         coordinates shares the derivation and only renames its result."""
-        return _shared_euler_lagrange(self.L, self.jets)
+        return self._derivation.renamed(self._derivation.equations)
+
+    @cached_property
+    def generalized_forces(self) -> tuple[sp.Expr, ...]:
+        """∂L/∂q_j, expanded, from the derivation of E."""
+        return self._derivation.renamed(self._derivation.forces)
 
     @cached_property
     def mass_matrix(self) -> sp.Matrix:

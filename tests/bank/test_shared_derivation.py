@@ -7,9 +7,10 @@ from __future__ import annotations
 import itertools
 
 import pytest
+import sympy as sp
 
 from lagrade.bank.registry import SCENES
-from lagrade.mechanics.lagrange import _DERIVED, LagrangianSystem, _derive_euler_lagrange
+from lagrade.mechanics.lagrange import _DERIVED, LagrangianSystem, _derive
 from lagrade.mechanics.scene import SceneVariant
 
 
@@ -30,8 +31,10 @@ def _presentations():
 @pytest.mark.parametrize("scene, names, options", list(_presentations()))
 def test_a_shared_derivation_equals_the_own_one(scene, names, options):
     variant = SceneVariant(scene, names=names, options=options)
-    shared = LagrangianSystem(variant.lagrangian, variant.jets).euler_lagrange
-    assert shared == _derive_euler_lagrange(variant.lagrangian, variant.jets)
+    system = LagrangianSystem(variant.lagrangian, variant.jets)
+    equations, forces = _derive(variant.lagrangian, variant.jets)
+    assert system.euler_lagrange == equations
+    assert system.generalized_forces == tuple(sp.expand(f) for f in forces)
 
 
 def test_renamed_systems_share_one_derivation():
