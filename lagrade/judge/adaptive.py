@@ -243,7 +243,7 @@ class ExactThenAdaptive:
                 return False
         if _has_branches(program) and _differ_on_branches(program, symbols, domains, self.seed):
             return False
-        exact = ExactRational(seed=self.seed).decide(answer, reference, domains)
+        exact = ExactRational(seed=self.seed).decide(answer, reference, domains, program)
         if exact is not None:
             return exact
         order = np.argsort(finite, kind="stable")  # points the float test left open first

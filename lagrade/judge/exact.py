@@ -116,7 +116,9 @@ class ExactRational:
     seed: int = 20240
     name: str = "exact_rational"
 
-    def decide(self, answer, reference, domains) -> bool | None:
+    def decide(self, answer, reference, domains, pair: ev.Program | None = None) -> bool | None:
+        """`pair`: answer and reference compiled as one program, when the caller has it (used
+        as it is when no trig function needs reducing)."""
         try:
             has_trig = [_check_rational_trig(e) for e in (answer, reference)]
             # rational functions as they stand need no reduction of trig arguments
@@ -124,7 +126,8 @@ class ExactRational:
         except _OutOfScope:
             return None
         rng = np.random.default_rng(self.seed)
-        return _exact_compare(a, b, domains, self.points, rng, trig=any(has_trig))
+        trig = any(has_trig)
+        return _exact_compare(a, b, domains, self.points, rng, trig, None if trig else pair)
 
 
 def _monomial_symbol(arg: sp.Expr) -> sp.Symbol | None:
@@ -185,30 +188,39 @@ def _weierstrass_ready(answer: sp.Expr, reference: sp.Expr) -> tuple[sp.Expr, sp
 
 
 def _exact_compare(
-    a: sp.Expr, b: sp.Expr, domains: Domains, points: int, rng, trig: bool = True
+    a: sp.Expr,
+    b: sp.Expr,
+    domains: Domains,
+    points: int,
+    rng,
+    trig: bool = True,
+    pair: ev.Program | None = None,
 ) -> bool | None:
     """Compare at `points` random rational points, exactly. Each trig atom stands for a
     placeholder set from the half-angle tangent u, the pair is compiled once by the project's
-    evaluator and run on Fractions: no sympy arithmetic per point."""
+    evaluator (`pair`, when given, is a and b compiled already) and run on Fractions: no sympy
+    arithmetic per point."""
     symbols = sorted_symbols(a, b)
     atoms = [f for e in (a, b) for f in e.atoms(*_TRIG)] if trig else []
     trig_syms = sorted({f.args[0] for f in atoms}, key=str)
     stand_in = {f(y): sp.Dummy(f"{f.__name__}_{y}") for y in trig_syms for f in _TRIG}
+    exprs = [a.xreplace(stand_in), b.xreplace(stand_in)] if stand_in else [a, b]
     try:
-        prog_a = ev.compile_program([a.xreplace(stand_in)])
-        prog_b = ev.compile_program([b.xreplace(stand_in)])
+        program = pair if pair is not None else ev.compile_program(exprs)
     except ev.UnsupportedExpression:
         return None
-    if any(op[0] not in _RATIONAL_OPS for prog in (prog_a, prog_b) for op in prog.code):
+    if any(op[0] not in _RATIONAL_OPS for op in program.code):
         return None
+    alone: list[ev.Program] = []  # each side on its own, for a point where one is undefined
+    ranges = [(s, _domain_of(s, domains).sample_range()) for s in symbols]
+    half_tan = [(y, _half_tan_range(*_domain_of(y, domains).sample_range())) for y in trig_syms]
     done = 0
     for _ in range(points * 4):
         env: dict[sp.Basic, Fraction] = {}
-        for s in symbols:
-            env[s] = _fraction_in(*_domain_of(s, domains).sample_range(), rng)
-        for y in trig_syms:
-            lo, hi = _domain_of(y, domains).sample_range()
-            u = _fraction_in(*_half_tan_range(lo, hi), rng)
+        for s, (lo, hi) in ranges:
+            env[s] = _fraction_in(lo, hi, rng)
+        for y, (lo, hi) in half_tan:
+            u = _fraction_in(lo, hi, rng)
             den = 1 + u * u
             sin, cos = 2 * u / den, (1 - u * u) / den
             env.update({stand_in[sp.sin(y)]: sin, stand_in[sp.cos(y)]: cos})
@@ -216,10 +228,16 @@ def _exact_compare(
                 env.update({stand_in[sp.tan(y)]: sin / cos, stand_in[sp.sec(y)]: 1 / cos})
             if sin:
                 env.update({stand_in[sp.cot(y)]: cos / sin, stand_in[sp.csc(y)]: 1 / sin})
-        vb = _exact_value(prog_b, env)
-        if vb is None:
-            continue  # the reference is undefined here: redraw
-        va = _exact_value(prog_a, env)
+        both = _exact_values(program, env)
+        if both is not None:
+            va, vb = both
+        else:  # one side has no value here: which one decides
+            if not alone:
+                alone = [ev.compile_program([e]) for e in exprs]
+            vb = _exact_value(alone[1], env)
+            if vb is None:
+                continue  # the reference is undefined here: redraw
+            va = _exact_value(alone[0], env)
         if va is None or va != vb:
             return False  # undefined where the reference is defined, or different
         done += 1
@@ -243,13 +261,18 @@ class _FractionBackend:
         return Fraction(int(value.p), int(value.q))
 
 
-def _exact_value(program, env: Mapping) -> Fraction | None:
-    """The program's value at a point, exactly; None where it is undefined (a division by
+def _exact_values(program, env: Mapping) -> list[Fraction] | None:
+    """The program's values at a point, exactly; None where one is undefined (a division by
     zero, or a trig function without a value there)."""
     try:
-        return ev.run(program, env, _FractionBackend)[0]
+        return ev.run(program, env, _FractionBackend)
     except (ZeroDivisionError, ev.UnsupportedExpression, _OutOfScope):
         return None
+
+
+def _exact_value(program, env: Mapping) -> Fraction | None:
+    values = _exact_values(program, env)
+    return None if values is None else values[0]
 
 
 def _fraction_in(lo: float, hi: float, rng: np.random.Generator) -> Fraction:
