@@ -135,9 +135,17 @@ def judged_without_parsing(items: list[Item]) -> list[float]:
     """ms per request for `check_request` in this process with the parser memoised: a first
     pass parses (and derives each question), the timed second pass gets the same Parsed objects
     back, so the time is the judging and the feedback alone — simplify's footing, which also
-    starts from parsed expressions. Everything else is the production code path."""
-    from lagrade.judge.check import check_request
+    starts from parsed expressions. Everything else is the production code path, but for the
+    memory of decided answers, which is off here: the second pass would only look them up."""
+    import importlib
+
     from lagrade.notation import parse
+
+    check_module = importlib.import_module("lagrade.judge.check")
+    check_request = check_module.check_request
+    kept_verdicts = check_module._VERDICT_CACHE_SIZE
+    check_module._VERDICT_CACHE_SIZE = 0
+    check_module._verdicts.clear()
 
     names = ("parse_answer", "parse_equation", "parse_expression", "parse_equations")
     originals = {name: getattr(parse, name) for name in names}
@@ -162,6 +170,7 @@ def judged_without_parsing(items: list[Item]) -> list[float]:
             out.append((time.perf_counter() - start) * 1e3)
         return out
     finally:
+        check_module._VERDICT_CACHE_SIZE = kept_verdicts
         for name, function in originals.items():
             setattr(parse, name, function)
 
