@@ -239,7 +239,7 @@ def iter_equation_mutants(
     per_monomial: dict[sp.Expr, tuple[sp.Expr, ...]] = {}
     for i, j in enumerate(jets):
         what = f"the equation for {j.name}"
-        flipped = sp.expand(E[i] + 2 * system.generalized_forces[i])  # D_t p + ∂L/∂q
+        flipped = sp.Add(E[i], 2 * system.generalized_forces[i])  # D_t p + ∂L/∂q, expanded
         yield (
             i,
             Mutant(
@@ -252,8 +252,9 @@ def iter_equation_mutants(
     for m in lagrangian_mutants:
         if m.kind == "sign_of_V" or m.kind in KINETIC_KINDS:
             # E is linear in L: E(L_mut) = E(L) + E(L_mut − L), and L_mut − L is a term or
-            # two, so only that is differentiated. Both sides expanded, the row is the very
-            # expression E(L_mut) expands to (tests/grading/test_diagnose.py holds that).
+            # two, so only that is differentiated. Both sides are expanded, so their sum (Add
+            # collects like terms; no expand needed) is the very expression E(L_mut) expands
+            # to (tests/grading/test_diagnose.py holds that).
             try:
                 change = _linear_euler_lagrange(sp.expand(m.expr - system.L), jets, per_monomial)
             except Exception:  # noqa: BLE001 - a mutant we cannot differentiate is skipped
@@ -263,7 +264,7 @@ def iter_equation_mutants(
                     msg = m.message.replace(
                         "your L", f"the L behind your equation for {jets[i].name}"
                     )
-                    yield (i, Mutant(m.kind, msg, sp.expand(E[i] + delta)))
+                    yield (i, Mutant(m.kind, msg, sp.Add(E[i], delta)))
     for i, j in enumerate(jets):
         for m in iter_term_mutants(E[i], f"your equation for {j.name}", parameters):
             yield (i, m)

@@ -114,42 +114,46 @@ def speed_squared(position: Sequence[sp.Expr], jets: Sequence[Jet]) -> sp.Expr:
     return sum((total_derivative(x, jets) ** 2 for x in position), sp.S.Zero)
 
 
-def _derive(L: sp.Expr, jets: Sequence[Jet]) -> tuple[tuple[sp.Expr, ...], tuple[sp.Expr, ...]]:
-    """(E, F): E_j = D_t p_j − ∂L/∂q_j, expanded, and the generalized forces F_j = ∂L/∂q_j it
-    subtracts, as differentiated (the mistake catalogue flips the sign of Lagrange's equation
-    with F; `LagrangianSystem.generalized_forces` expands them only then)."""
-    forces = tuple(sp.diff(L, j.q) for j in jets)
-    equations = tuple(
-        sp.expand(total_derivative(sp.expand(p), jets) - f)
-        for p, f in zip(generalized_momenta(L, jets), forces, strict=True)
-    )
-    return equations, forces
+class Derivation:
+    """The derivatives of one (L, coordinates), each computed on first use: the momenta
+    p_j = ∂L/∂q̇_j (expanded), the generalized forces F_j = ∂L/∂q_j (as differentiated; the
+    mistake catalogue flips the sign of Lagrange's equation with them) and E_j = D_t p_j − F_j
+    (expanded)."""
+
+    def __init__(self, L: sp.Expr, jets: Sequence[Jet]):
+        self.L = L
+        self.jets = tuple(jets)
+
+    @cached_property
+    def momenta(self) -> tuple[sp.Expr, ...]:
+        return tuple(sp.expand(p) for p in generalized_momenta(self.L, self.jets))
+
+    @cached_property
+    def forces(self) -> tuple[sp.Expr, ...]:
+        return tuple(sp.diff(self.L, j.q) for j in self.jets)
+
+    @cached_property
+    def equations(self) -> tuple[sp.Expr, ...]:
+        return tuple(
+            sp.expand(total_derivative(p, self.jets) - f)
+            for p, f in zip(self.momenta, self.forces, strict=True)
+        )
 
 
-#: (E, F) by the canonical form of (L, coordinates), most recently used last.
-_DERIVED: OrderedDict[str, tuple[tuple[sp.Expr, ...], tuple[sp.Expr, ...]]] = OrderedDict()
+#: Derivations by the canonical form of (L, coordinates), most recently used last.
+_DERIVED: OrderedDict[str, Derivation] = OrderedDict()
 _DERIVED_SIZE = 256
 _DERIVED_LOCK = threading.Lock()  # the answer page builds views in threads
 
 
-@dataclass(frozen=True)
-class _SharedDerivation:
-    """A derivation under the canonical names, and the renaming back to the own names."""
-
-    equations: tuple[sp.Expr, ...]
-    forces: tuple[sp.Expr, ...]
-    back: dict[sp.Symbol, sp.Symbol]
-
-    def renamed(self, exprs: tuple[sp.Expr, ...]) -> tuple[sp.Expr, ...]:
-        return tuple(sp.expand(e.xreplace(self.back)) for e in exprs)
-
-
-def _shared_derivation(L: sp.Expr, jets: Sequence[Jet]) -> _SharedDerivation:
-    """E and F of L, derived for L with its coordinates renamed q0·, q1·, … by position (names
-    no one can type, so no parameter shares them) and cached under that form: a question asked
-    under renamed coordinates (a variant, a batch that gives one system under several names) is
-    derived once. A result renamed back and expanded is the very expression deriving under the
-    own names gives (both are expanded sums over the same atoms;
+def _shared_derivation(
+    L: sp.Expr, jets: Sequence[Jet]
+) -> tuple[Derivation, dict[sp.Symbol, sp.Symbol]]:
+    """The derivation of L with its coordinates renamed q0·, q1·, … by position (names no one
+    can type, so no parameter shares them), cached under that form, and the renaming back: a
+    question asked under renamed coordinates (a variant, a batch that gives one system under
+    several names) is derived once. A result renamed back and expanded is the very expression
+    deriving under the own names gives (both are expanded sums over the same atoms;
     tests/bank/test_shared_derivation.py checks every scene under every renaming)."""
     canonical = [jet(f"q{k}\N{MIDDLE DOT}") for k in range(len(jets))]
     forward: dict[sp.Symbol, sp.Symbol] = {}
@@ -161,15 +165,13 @@ def _shared_derivation(L: sp.Expr, jets: Sequence[Jet]) -> _SharedDerivation:
     key = f"{len(jets)}:{sp.srepr(form)}"
     with _DERIVED_LOCK:
         found = _DERIVED.get(key)
-        if found is not None:
-            _DERIVED.move_to_end(key)
-    if found is None:
-        found = _derive(form, canonical)  # outside the lock: a limit may strike
-        with _DERIVED_LOCK:
-            _DERIVED[key] = found
+        if found is None:
+            found = _DERIVED[key] = Derivation(form, canonical)  # derives nothing yet
             if len(_DERIVED) > _DERIVED_SIZE:
                 _DERIVED.popitem(last=False)
-    return _SharedDerivation(found[0], found[1], back)
+        else:
+            _DERIVED.move_to_end(key)
+    return found, back
 
 
 class LagrangianSystem:
@@ -187,26 +189,30 @@ class LagrangianSystem:
     def coordinates(self) -> tuple[str, ...]:
         return tuple(j.name for j in self.jets)
 
+    # Derivatives are taken once per canonical form of L (`_shared_derivation`): the same system
+    # under renamed coordinates shares them and only renames the results.
+    @cached_property
+    def _shared(self) -> tuple[Derivation, dict[sp.Symbol, sp.Symbol]]:
+        return _shared_derivation(self.L, self.jets)
+
+    def _renamed(self, part: str) -> tuple[sp.Expr, ...]:
+        derivation, back = self._shared
+        return tuple(sp.expand(e.xreplace(back)) for e in getattr(derivation, part))
+
     @cached_property
     def generalized_momenta(self) -> tuple[sp.Expr, ...]:
         """p_j = ∂L/∂q̇_j, expanded."""
-        return tuple(sp.expand(p) for p in generalized_momenta(self.L, self.jets))
-
-    @cached_property
-    def _derivation(self) -> _SharedDerivation:
-        return _shared_derivation(self.L, self.jets)
+        return self._renamed("momenta")
 
     @cached_property
     def euler_lagrange(self) -> tuple[sp.Expr, ...]:
-        """E_j = D_t p_j − ∂L/∂q_j, expanded; E_j = 0 are the equations of motion. Derived once
-        per canonical form of L (`_shared_derivation`): the same system under renamed
-        coordinates shares the derivation and only renames its result."""
-        return self._derivation.renamed(self._derivation.equations)
+        """E_j = D_t p_j − ∂L/∂q_j, expanded; E_j = 0 are the equations of motion."""
+        return self._renamed("equations")
 
     @cached_property
     def generalized_forces(self) -> tuple[sp.Expr, ...]:
-        """∂L/∂q_j, expanded, from the derivation of E."""
-        return self._derivation.renamed(self._derivation.forces)
+        """∂L/∂q_j, expanded."""
+        return self._renamed("forces")
 
     @cached_property
     def mass_matrix(self) -> sp.Matrix:

@@ -10,7 +10,7 @@ import pytest
 import sympy as sp
 
 from lagrade.bank.registry import SCENES
-from lagrade.mechanics.lagrange import _DERIVED, LagrangianSystem, _derive
+from lagrade.mechanics.lagrange import _DERIVED, Derivation, LagrangianSystem
 from lagrade.mechanics.scene import SceneVariant
 
 
@@ -32,9 +32,10 @@ def _presentations():
 def test_a_shared_derivation_equals_the_own_one(scene, names, options):
     variant = SceneVariant(scene, names=names, options=options)
     system = LagrangianSystem(variant.lagrangian, variant.jets)
-    equations, forces = _derive(variant.lagrangian, variant.jets)
-    assert system.euler_lagrange == equations
-    assert system.generalized_forces == tuple(sp.expand(f) for f in forces)
+    own = Derivation(variant.lagrangian, variant.jets)
+    assert system.euler_lagrange == own.equations
+    assert system.generalized_momenta == own.momenta
+    assert system.generalized_forces == tuple(sp.expand(f) for f in own.forces)
 
 
 def test_renamed_systems_share_one_derivation():
