@@ -116,22 +116,31 @@ def prepare(problem: Problem, part: str, diagnosis: bool = False) -> None:
 #: What was decided for an answer, by (question, part, answer, given): a class types the same
 #: answer many times over (a sixth of the benchmark batch repeats an earlier request), and
 #: judging is a function of these alone (the sample points are seeded by the question).
-_verdicts: OrderedDict[tuple[str, str, str, str], Verdict] = OrderedDict()
+_verdicts: OrderedDict[tuple[str, str, str], Verdict] = OrderedDict()
 #: Statuses worth remembering: a timeout or an error may not happen again.
 _SETTLED = ("correct", "incorrect", "invalid")
+#: The most characters of answer and verdict text one remembered answer may hold, so that the
+#: memory stays bounded (4,096 × 16 KiB at most) whatever a batch sends.
+_REMEMBERED_CHARS = 16_384
 
 
 def _answer_key(problem: Problem, part: str, answer: Any, given: Mapping | None):
-    """The key of a decided answer, or None when the answer has no canonical JSON form."""
+    """The key of a decided answer; None when it has no canonical JSON form or is too long to
+    remember."""
+    if isinstance(answer, str) and len(answer) > _REMEMBERED_CHARS:
+        return None
     try:
         text = json.dumps([answer, given], sort_keys=True, separators=(",", ":"))
     except (TypeError, ValueError):
         return None
-    return (problem.key, part, text)
+    return (problem.key, part, text) if len(text) <= _REMEMBERED_CHARS else None
 
 
 def _remember(key, verdict: Verdict) -> None:
     if key is None or verdict.status not in _SETTLED:
+        return
+    shown = verdict.interpreted if isinstance(verdict.interpreted, list) else [verdict.interpreted]
+    if len(key[2]) + sum(len(t) for t in (*verdict.feedback, *shown)) > _REMEMBERED_CHARS:
         return
     _verdicts[key] = verdict
     if len(_verdicts) > _VERDICT_CACHE_SIZE:

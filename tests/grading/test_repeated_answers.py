@@ -70,3 +70,13 @@ def test_a_timeout_is_not_remembered(judged):
     problem.budget.left = left
     assert check_request(request, 2.0).status == "correct"
     assert len(judged) == 1
+
+
+def test_a_long_answer_is_judged_every_time(judged):
+    """The memory stays bounded: an answer longer than `_REMEMBERED_CHARS` is not kept."""
+    spec = {"expression": "g*alpha^5", "parameters": {"g": "positive", "alpha": "(0, 1)"}}
+    long = " + ".join(["g alpha^5"] + ["0"] * (check_module._REMEMBERED_CHARS // 3))
+    request = {"problem": spec, "part": "expression", "answer": long}
+    first = check_request(request, 10.0)  # too long to parse, too: `invalid`, which is settled
+    assert check_request(request, 10.0).status == first.status == "invalid"
+    assert len(judged) == 2
