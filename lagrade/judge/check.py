@@ -124,16 +124,16 @@ _SETTLED = ("correct", "incorrect", "invalid")
 _REMEMBERED_CHARS = 16_384
 
 
-def _answer_key(problem: Problem, part: str, answer: Any, given: Mapping | None):
-    """The key of a decided answer; None when it has no canonical JSON form or is too long to
-    remember."""
-    if isinstance(answer, str) and len(answer) > _REMEMBERED_CHARS:
+def _answer_key(question: str | None, part: str, answer: Any, given: Mapping | None):
+    """The key of a decided answer to the question with key `question`; None when there is no
+    such key, or no canonical JSON form, or it is too long to remember."""
+    if question is None or (isinstance(answer, str) and len(answer) > _REMEMBERED_CHARS):
         return None
     try:
         text = json.dumps([answer, given], sort_keys=True, separators=(",", ":"))
     except (TypeError, ValueError):
         return None
-    return (problem.key, part, text) if len(text) <= _REMEMBERED_CHARS else None
+    return (question, part, text) if len(text) <= _REMEMBERED_CHARS else None
 
 
 def _remember(key, verdict: Verdict) -> None:
@@ -198,13 +198,14 @@ def check_request(
     spec, part, answer, given = _validate(request)
     try:
         key = problem_key(spec) if isinstance(spec, Mapping) else None
-        new = key is not None and key not in _problems
-        problem = cached_problem(spec, key)
-        seen = _answer_key(problem, part, answer, given)
+        question = spec.key if isinstance(spec, Problem) else key
+        seen = _answer_key(question, part, answer, given)
         if seen in _verdicts:  # judged before: the same verdict, for the time of a lookup
             _verdicts.move_to_end(seen)
             ms = (time.perf_counter() - received) * 1e3
             return Verdict(**{**_verdicts[seen].__dict__, "ms": ms})
+        new = key is not None and key not in _problems
+        problem = cached_problem(spec, key)
         budget = problem.budget
         spent = 0.0 if new else budget.spent  # a question read just now: its reading counts
         if budget.exhausted:

@@ -80,3 +80,16 @@ def test_a_long_answer_is_judged_every_time(judged):
     first = check_request(request, 10.0)  # too long to parse, too: `invalid`, which is settled
     assert check_request(request, 10.0).status == first.status == "invalid"
     assert len(judged) == 2
+
+
+def test_a_remembered_answer_needs_no_question(judged, monkeypatch):
+    """The answer's key is the problem field's: a question dropped from the process's cache is
+    not read again for an answer already decided."""
+    spec = {"expression": "g*alpha^6", "parameters": {"g": "positive", "alpha": "(0, 1)"}}
+    request = {"problem": spec, "part": "expression", "answer": "g alpha^6"}
+    check_request(request, 2.0)
+    check_module._problems.clear()
+    check_module._prepared.clear()
+    monkeypatch.setattr(check_module, "build_problem", lambda spec: pytest.fail("read again"))
+    assert check_request(request, 2.0).status == "correct"
+    assert len(judged) == 1
