@@ -89,6 +89,8 @@ class Question(Protocol):
 
     def peek(self, name: str, points: Points) -> object | None: ...
 
+    def reference_rows(self, points: Points) -> Rows: ...
+
 
 @dataclass(frozen=True)
 class Split:
@@ -444,7 +446,7 @@ class Catalogue:
         """Per row mutant, the reference rows with its row in place of row i, at every point,
         reduced to what the span test needs (`span_arrays`)."""
         p = self.problem
-        ref = self.reference_rows(points)
+        ref = p.reference_rows(points)
 
         def evaluate(pair):
             i, m = pair
@@ -463,14 +465,6 @@ class Catalogue:
         if id(m) not in cache:
             cache[id(m)] = (m, Compiled.of(m.expr))
         return cache[id(m)][1]
-
-    def reference_rows(self, points: Points) -> Rows:
-        """The reference's Euler–Lagrange rows at `points`, computed once per question."""
-        p = self.problem
-        with np.errstate(all="ignore"):
-            return p.cached(
-                "rows", points, lambda: equation_rows(p.euler_lagrange, p.jets, points.env)
-            )
 
     def mutant_rows(self, m: Mutant, points: Points) -> Rows:
         """A row mutant's row at `points`, computed once: the keeper's fingerprint and the row

@@ -203,7 +203,7 @@ def check_request(
         if seen in _verdicts:  # judged before: the same verdict, for the time of a lookup
             _verdicts.move_to_end(seen)
             ms = (time.perf_counter() - received) * 1e3
-            return Verdict(**{**_verdicts[seen].__dict__, "ms": ms})
+            return Verdict(**{**_verdicts[seen].__dict__, "ms": ms, "prepare_ms": 0.0})
         new = key is not None and key not in _problems
         problem = cached_problem(spec, key)
         budget = problem.budget
@@ -234,7 +234,7 @@ def check_request(
         raise RequestError(f"the problem cannot be graded: {error}") from None
     prepare_ms = (budget.spent - spent) * 1e3
     verdict = Verdict(**{**verdict.__dict__, "ms": ms, "prepare_ms": prepare_ms})
-    _remember(seen, Verdict(**{**verdict.__dict__, "prepare_ms": 0.0}))
+    _remember(seen, verdict)
     return verdict
 
 

@@ -28,8 +28,6 @@ class Catalogue(Protocol):
 
     def el_values(self, mut: Compiled, points: Points) -> tuple[np.ndarray, np.ndarray]: ...
 
-    def reference_rows(self, points: Points) -> Rows: ...
-
     def mutant_rows(self, m: Mutant, points: Points) -> Rows: ...
 
 
@@ -115,7 +113,7 @@ def row_keeper(catalogue: Catalogue) -> Callable[[tuple[int, Mutant]], bool]:
             rows = catalogue.mutant_rows(m, points)
         except (UnsupportedExpression, ValueError, ZeroDivisionError):
             return False
-        r, s = in_span(rows, catalogue.reference_rows(points), 0)
+        r, s = in_span(rows, p.reference_rows(points), 0)
         if np.all(np.abs(r) <= 1e-8 * s):
             return False  # the mutated row is still a consequence of the right equations
         fp = rows.coef[:, 0, :].ravel()

@@ -26,6 +26,7 @@ from lagrade.bank.registry import get_scene
 from lagrade.errors import LagradeError, ParseError, RequestError
 from lagrade.judge.catalogue import Catalogue
 from lagrade.judge.compiled import Compiled, finite_mask
+from lagrade.judge.rows import Rows, equation_rows
 from lagrade.judge.sampling import Points, Space, seed_for
 from lagrade.judge.worker import PREPARE_LIMIT, Budget
 from lagrade.mechanics.domains import Domain
@@ -219,6 +220,14 @@ class Problem:
     def peek(self, name: str, points: Points):
         """What `cached(name, points, …)` holds already, or None (computes nothing)."""
         return self.__dict__.get("_derived", {}).get((name, id(points)))
+
+    def reference_rows(self, points: Points) -> Rows:
+        """The reference's Euler–Lagrange rows [A | c] at `points`, computed once (the eom and
+        conserved checks and the mistake catalogue read the same)."""
+        with np.errstate(all="ignore"):
+            return self.cached(
+                "rows", points, lambda: equation_rows(self.euler_lagrange, self.jets, points.env)
+            )
 
 
 # --- building a Problem from a request ------------------------------------------------------------

@@ -37,9 +37,7 @@ from lagrade.judge.verdict import Verdict
 
 
 def _accelerations(problem: Problem, points: Points):
-    rows = problem.cached(
-        "rows", points, lambda: equation_rows(problem.euler_lagrange, problem.jets, points.env)
-    )
+    rows = problem.reference_rows(points)
     acc = problem.cached("acc", points, lambda: solve_accelerations(rows))
 
     def values(backend):

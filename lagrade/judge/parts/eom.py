@@ -53,9 +53,7 @@ def check_eom(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
     jets = problem.jets
     n = len(jets)
     points = problem.points("eom")
-    ref_rows = problem.cached(
-        "rows", points, lambda: equation_rows(problem.euler_lagrange, jets, points.env)
-    )
+    ref_rows = problem.reference_rows(points)
     with np.errstate(all="ignore"):
         rows = equation_rows(compiled, jets, points.env)
     right, outcomes, feedback, mistakes = [], [], lines.feedback(), []
