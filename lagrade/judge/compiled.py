@@ -46,6 +46,51 @@ class Compiled:
         return run_hyperdual(self.program, env, backend)
 
 
+@dataclass(frozen=True)
+class Combination:
+    """Σ c·part over compiled parts: a mutant of the mistake catalogue, the reference plus a few
+    scaled terms. Every evaluation here is linear in the expression, so its values are its
+    parts' values combined, and a part shared by many mutants (the reference above all) is
+    compiled once, not once per mutant. The size is Σ |c|·size(part): a bound on the terms'."""
+
+    parts: tuple[tuple[sp.Rational, Compiled], ...]
+
+    @property
+    def expr(self) -> sp.Expr:
+        return sp.Add(*(c * part.expr for c, part in self.parts))
+
+    @property
+    def symbols(self) -> frozenset[sp.Symbol]:
+        return frozenset().union(*(part.symbols for _, part in self.parts))
+
+    @property
+    def weights(self) -> tuple[float, ...]:
+        """The coefficients as floats (exact: they are ±1, ±2, ½)."""
+        return tuple(float(c) for c, _ in self.parts)
+
+    def values(self, env: Mapping, backend=FLOAT) -> tuple[np.ndarray, np.ndarray]:
+        pairs = [part.values(env, backend) for _, part in self.parts]
+        return combine(self.weights, [v for v, _ in pairs], [s for _, s in pairs])
+
+    def hyperdual(self, env: Mapping, backend=FLOAT) -> list:
+        return [
+            tuple(c * x for x in term)
+            for c, (_, part) in zip(self.weights, self.parts, strict=True)
+            for term in part.hyperdual(env, backend)
+        ]
+
+
+def combine(weights: Sequence[float], values: Sequence, sizes: Sequence) -> tuple:
+    """(Σ c·value, Σ |c|·size): the value and size of a `Combination` from its parts'."""
+    return weighted(weights, values), weighted([abs(c) for c in weights], sizes)
+
+
+def weighted(weights: Sequence[float], arrays: Sequence):
+    """Σ c·array."""
+    with np.errstate(all="ignore"):
+        return total(c * a for c, a in zip(weights, arrays, strict=True))
+
+
 def total(items: Iterable):
     total = 0
     for x in items:

@@ -28,6 +28,8 @@ class Catalogue(Protocol):
 
     def el_values(self, mut: Compiled, points: Points) -> tuple[np.ndarray, np.ndarray]: ...
 
+    def values(self, mut: Compiled, points: Points) -> tuple[np.ndarray, np.ndarray]: ...
+
     def mutant_rows(self, m: Mutant, points: Points) -> Rows: ...
 
 
@@ -40,7 +42,7 @@ def fingerprint(
         v = catalogue.el_values(compiled, points)[0].ravel()
         norm = np.linalg.norm(v)
         return None if norm == 0 else v / norm * np.sign(v[np.argmax(np.abs(v))])
-    v = np.broadcast_to(np.asarray(compiled.values(points.env)[0], float), (points.n,))
+    v = np.asarray(catalogue.values(compiled, points)[0], float)
     if mode == "offset":
         v = v - v[np.searchsorted(points.group, points.group)]
     return v

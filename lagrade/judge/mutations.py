@@ -17,11 +17,28 @@ from lagrade.notation.printer import plain
 @dataclass(frozen=True)
 class Mutant:
     """A wrong answer of a known kind: `kind` for tests and statistics, `message` for the
-    student, `expr` the mutated reference."""
+    student, `expr` the mutated reference.
+
+    A mutant that changes a few terms of a reference holds the reference as `base` and the
+    change as scaled `pieces`, expr = base + Σ c·piece: its values are the base's plus the
+    pieces' (every evaluation is linear in the expression), so the catalogue evaluates the
+    reference once and each small piece once, and forms no sympy sum per mutant."""
 
     kind: str
     message: str
-    expr: sp.Expr
+    base: sp.Expr
+    pieces: tuple[tuple[sp.Rational, sp.Expr], ...] = ()
+
+    @property
+    def expr(self) -> sp.Expr:
+        """The mutated expression (formed on first use: matching needs only the pieces)."""
+        if not self.pieces:
+            return self.base
+        cached = self.__dict__.get("_expr")
+        if cached is None:
+            cached = sp.Add(self.base, *(c * e for c, e in self.pieces))
+            object.__setattr__(self, "_expr", cached)
+        return cached
 
 
 def swap_sin_cos(expr: sp.Expr) -> sp.Expr:
@@ -63,12 +80,18 @@ def iter_term_mutants(
 ) -> Iterator[Mutant]:
     """`term_mutants`, one term at a time (the lazy catalogue stops at the first match)."""
     terms = expanded_terms(expr)
-    for k, term in enumerate(terms):
+    base = sp.Add(*terms)
+    one, two, half = sp.Integer(1), sp.Integer(2), sp.Rational(1, 2)
+    for term in terms:
         out: list[Mutant] = []
-        rest = sp.Add(*(terms[:k] + terms[k + 1 :]))
         shown = plain(term)
         out.append(
-            Mutant("wrong_sign", f"the term {shown} in {what} has the wrong sign", rest - term)
+            Mutant(
+                "wrong_sign",
+                f"the term {shown} in {what} has the wrong sign",
+                base,
+                ((-two, term),),
+            )
         )
         if term.has(sp.sin) or term.has(sp.cos):
             swapped = swap_sin_cos(term)
@@ -77,7 +100,8 @@ def iter_term_mutants(
                     Mutant(
                         "sin_cos_swapped",
                         f"sin and cos are swapped in the term {shown} of {what}",
-                        rest + swapped,
+                        base,
+                        ((-one, term), (one, swapped)),
                     )
                 )
         for p in _factors(term, parameters):
@@ -85,18 +109,22 @@ def iter_term_mutants(
                 Mutant(
                     "missing_factor",
                     f"the term {shown} in {what} lacks the factor {p}",
-                    rest + term / p,
+                    base,
+                    ((-one, term), (one, term / p)),
                 )
             )
-        out.append(Mutant("missing_term", f"{what} lacks the term {shown}", rest))
+        out.append(Mutant("missing_term", f"{what} lacks the term {shown}", base, ((-one, term),)))
         out.append(
-            Mutant("factor_two", f"the term {shown} in {what} is twice too large", rest + 2 * term)
+            Mutant(
+                "factor_two", f"the term {shown} in {what} is twice too large", base, ((one, term),)
+            )
         )
         out.append(
             Mutant(
                 "factor_half",
                 f"the term {shown} in {what} is half what it should be",
-                rest + term / 2,
+                base,
+                ((-half, term),),
             )
         )
         yield from out
@@ -239,14 +267,14 @@ def iter_equation_mutants(
     per_monomial: dict[sp.Expr, tuple[sp.Expr, ...]] = {}
     for i, j in enumerate(jets):
         what = f"the equation for {j.name}"
-        flipped = sp.Add(E[i], 2 * system.generalized_forces[i])  # D_t p + ∂L/∂q, expanded
         yield (
             i,
             Mutant(
                 "el_sign",
                 f"{what} has d/dt(∂L/∂{j.name}_dot) + ∂L/∂{j.name}; Lagrange's "
                 "equation has a minus sign",
-                flipped,
+                E[i],
+                ((sp.Integer(2), system.generalized_forces[i]),),  # D_t p + ∂L/∂q
             ),
         )
     for m in lagrangian_mutants:
@@ -264,7 +292,7 @@ def iter_equation_mutants(
                     msg = m.message.replace(
                         "your L", f"the L behind your equation for {jets[i].name}"
                     )
-                    yield (i, Mutant(m.kind, msg, sp.Add(E[i], delta)))
+                    yield (i, Mutant(m.kind, msg, E[i], ((sp.Integer(1), delta),)))
     for i, j in enumerate(jets):
         for m in iter_term_mutants(E[i], f"your equation for {j.name}", parameters):
             yield (i, m)

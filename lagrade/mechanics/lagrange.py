@@ -115,10 +115,9 @@ def speed_squared(position: Sequence[sp.Expr], jets: Sequence[Jet]) -> sp.Expr:
 
 
 class Derivation:
-    """The derivatives of one (L, coordinates), each computed on first use: the momenta
-    p_j = ∂L/∂q̇_j (expanded), the generalized forces F_j = ∂L/∂q_j (as differentiated; the
-    mistake catalogue flips the sign of Lagrange's equation with them) and E_j = D_t p_j − F_j
-    (expanded)."""
+    """The derivatives of one (L, coordinates), each computed on first use and expanded: the
+    momenta p_j = ∂L/∂q̇_j, the generalized forces F_j = ∂L/∂q_j (the mistake catalogue flips
+    the sign of Lagrange's equation with them) and E_j = D_t p_j − F_j."""
 
     def __init__(self, L: sp.Expr, jets: Sequence[Jet]):
         self.L = L
@@ -130,7 +129,7 @@ class Derivation:
 
     @cached_property
     def forces(self) -> tuple[sp.Expr, ...]:
-        return tuple(sp.diff(self.L, j.q) for j in self.jets)
+        return tuple(sp.expand(sp.diff(self.L, j.q)) for j in self.jets)
 
     @cached_property
     def equations(self) -> tuple[sp.Expr, ...]:
@@ -152,9 +151,9 @@ def _shared_derivation(
     """The derivation of L with its coordinates renamed q0·, q1·, … by position (names no one
     can type, so no parameter shares them), cached under that form, and the renaming back: a
     question asked under renamed coordinates (a variant, a batch that gives one system under
-    several names) is derived once. A result renamed back and expanded is the very expression
-    deriving under the own names gives (both are expanded sums over the same atoms;
-    tests/bank/test_shared_derivation.py checks every scene under every renaming)."""
+    several names) is derived once. A result renamed back is the very expression deriving
+    under the own names gives (tests/bank/test_shared_derivation.py checks every scene under
+    every renaming)."""
     canonical = [jet(f"q{k}\N{MIDDLE DOT}") for k in range(len(jets))]
     forward: dict[sp.Symbol, sp.Symbol] = {}
     back: dict[sp.Symbol, sp.Symbol] = {}
@@ -197,7 +196,9 @@ class LagrangianSystem:
 
     def _renamed(self, part: str) -> tuple[sp.Expr, ...]:
         derivation, back = self._shared
-        return tuple(sp.expand(e.xreplace(back)) for e in getattr(derivation, part))
+        # Renaming is a bijection of symbols with the same assumptions: an expanded sum stays
+        # one, so the result needs no second `expand` (which walks the whole expression again).
+        return tuple(e.xreplace(back) for e in getattr(derivation, part))
 
     @cached_property
     def generalized_momenta(self) -> tuple[sp.Expr, ...]:
