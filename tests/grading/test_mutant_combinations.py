@@ -43,22 +43,21 @@ def test_combined_mutants_evaluate_as_the_whole_expression(spec):
             assert _close(fast.coef[:, 0, :], whole.coef[:, 0, :], fast.size[:, 0, None])
             assert _close(fast.nonlinear, whole.nonlinear, fast.size)
             combined += 1
-        points = problem.points("lagrangian")
-        for m in cat.lagrangian_mutants:
-            if not m.pieces:
-                continue
-            E, S = cat.el_values(cat.compiled(m), points)
-            E_whole, _ = euler_lagrange_values(Compiled.of(m.expr), jets, points.env)
-            assert _close(E, E_whole, S)
-            combined += 1
-        points = problem.points("T")
-        for m in cat.kinetic_mutants:
-            if not m.pieces:
-                continue
-            value, size = cat.values(cat.compiled(m), points)
-            whole, _ = Compiled.of(m.expr).values(points.env)
-            assert _close(value, np.broadcast_to(whole, value.shape), size)
-            combined += 1
+        for part, mutants, fast, whole in (
+            (
+                "lagrangian",
+                cat.lagrangian_mutants,
+                cat.el_values,
+                lambda c, env: euler_lagrange_values(c, jets, env),
+            ),
+            ("T", cat.kinetic_mutants, cat.values, lambda c, env: c.values(env)),
+        ):
+            points = problem.points(part)
+            for m in (m for m in mutants if m.pieces):
+                value, size = fast(cat.compiled(m), points)
+                expected, _ = whole(Compiled.of(m.expr), points.env)
+                assert _close(value, np.broadcast_to(expected, value.shape), size), (part, m)
+                combined += 1
     assert combined > 20
 
 
