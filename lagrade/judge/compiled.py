@@ -65,7 +65,7 @@ class Combination:
 
     @property
     def weights(self) -> tuple[float, ...]:
-        """The coefficients as floats (exact: they are ±1, ±2, ½)."""
+        """The coefficients as floats (the catalogue's are ±1, ±2 and ½: exact in binary)."""
         return tuple(float(c) for c, _ in self.parts)
 
     def values(self, env: Mapping, backend=FLOAT) -> tuple[np.ndarray, np.ndarray]:

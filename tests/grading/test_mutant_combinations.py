@@ -5,6 +5,7 @@ whole mutated expression compiled on its own, and its expression the one the old
 
 from __future__ import annotations
 
+import mpmath
 import numpy as np
 import pytest
 import sympy as sp
@@ -13,6 +14,7 @@ from hypothesis import strategies as st
 
 from lagrade.judge.compiled import Combination, Compiled
 from lagrade.judge.derivatives import euler_lagrange_values
+from lagrade.judge.evaluate import MP, MP_DIGITS
 from lagrade.judge.mutations import Mutant, iter_term_mutants, swap_sin_cos
 from lagrade.judge.problem import build_problem
 from lagrade.judge.rows import equation_rows
@@ -59,6 +61,24 @@ def test_combined_mutants_evaluate_as_the_whole_expression(spec):
                 assert _close(value, np.broadcast_to(expected, value.shape), size), (part, m)
                 combined += 1
     assert combined > 20
+
+
+def test_a_combined_lagrangian_has_the_equations_of_its_sum_at_high_precision():
+    """The keepers decide a float-unsure "same dynamics" in mpmath from the hyper-dual values
+    of the compiled mutant: a Combination's must be those of the whole expression there too."""
+    problem = build_problem(WEDGE)
+    cat, jets = problem.catalogue, problem.jets
+    points = problem.points("lagrangian")
+    env = points.arrays(MP)
+    checked = 0
+    with mpmath.workdps(MP_DIGITS):
+        for m in [m for m in cat.lagrangian_mutants if m.pieces][:6]:
+            E, S = euler_lagrange_values(cat.compiled(m), jets, env, MP)
+            E_whole, _ = euler_lagrange_values(Compiled.of(m.expr), jets, env, MP)
+            for e, w, s in zip(E.ravel(), E_whole.ravel(), S.ravel(), strict=True):
+                assert abs(e - w) <= mpmath.mpf(10) ** (5 - MP_DIGITS) * (s + 1)
+            checked += 1
+    assert checked == 6
 
 
 def test_a_term_mutant_is_the_expression_the_old_construction_formed():
