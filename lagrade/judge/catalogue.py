@@ -23,7 +23,7 @@ import numpy as np
 import sympy as sp
 
 import lagrade.judge.keepers as keepers
-from lagrade.judge.compiled import Combination, Compiled, combine, weighted
+from lagrade.judge.compiled import Combination, Compiled, weighted
 from lagrade.judge.derivatives import euler_lagrange_values
 from lagrade.judge.lazylist import LazyList
 from lagrade.judge.matching import (
@@ -485,8 +485,7 @@ class Catalogue:
         """The mutant's values and sizes at `points`, (points,) each; a Combination's from its
         parts' values, each computed once per set of points."""
         if isinstance(mut, Combination):
-            pairs = [self._part_values(part, points) for _, part in mut.parts]
-            return combine(mut.weights, [v for v, _ in pairs], [s for _, s in pairs])
+            return mut.combine([self._part_values(part, points) for _, part in mut.parts])
         with np.errstate(all="ignore"):
             return full(mut.values(points.env), points.n)
 
@@ -507,7 +506,7 @@ class Catalogue:
             if not isinstance(mut, Combination):
                 return equation_rows([mut], p.jets, points.env)
             rows = [self._part_rows(part, points) for _, part in mut.parts]
-            coef, size = combine(mut.weights, [r.coef for r in rows], [r.size for r in rows])
+            coef, size = mut.combine([(r.coef, r.size) for r in rows])
             return Rows(coef, size, weighted(mut.weights, [r.nonlinear for r in rows]))
 
         with np.errstate(all="ignore"):
@@ -522,8 +521,7 @@ class Catalogue:
     def el_values(self, mut: Compiled | Combination, points: Points):
         """E(mut) and its size at `points`; a Combination's from its parts' (E is linear)."""
         if isinstance(mut, Combination):
-            pairs = [self.el_values(part, points) for _, part in mut.parts]
-            return combine(mut.weights, [e for e, _ in pairs], [s for _, s in pairs])
+            return mut.combine([self.el_values(part, points) for _, part in mut.parts])
         return self.problem.cached(
             f"el:{id(mut)}",
             points,

@@ -69,9 +69,7 @@ def cached_problem(spec: Any, key: str | None = None) -> Problem:
         found = build_problem(spec)
         # Reading the question (parsing its L or closed form, its domains) is preparation too:
         # charged to its budget, so that `prepare_ms` hides none of it.
-        elapsed = time.perf_counter() - start
-        found.budget.spent += elapsed
-        found.budget.left -= elapsed
+        found.budget.charge(time.perf_counter() - start)
         _problems[key] = found
         if len(_problems) > _CACHE_SIZE:
             old, _ = _problems.popitem(last=False)

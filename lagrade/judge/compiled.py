@@ -68,9 +68,17 @@ class Combination:
         """The coefficients as floats (the catalogue's are ±1, ±2 and ½: exact in binary)."""
         return tuple(float(c) for c, _ in self.parts)
 
+    def combine(self, pairs: Sequence[tuple]) -> tuple:
+        """(value, size) of the combination from its parts' (value, size) pairs, in order:
+        (Σ c·value, Σ |c|·size)."""
+        weights = self.weights
+        return (
+            weighted(weights, [v for v, _ in pairs]),
+            weighted([abs(c) for c in weights], [s for _, s in pairs]),
+        )
+
     def values(self, env: Mapping, backend=FLOAT) -> tuple[np.ndarray, np.ndarray]:
-        pairs = [part.values(env, backend) for _, part in self.parts]
-        return combine(self.weights, [v for v, _ in pairs], [s for _, s in pairs])
+        return self.combine([part.values(env, backend) for _, part in self.parts])
 
     def hyperdual(self, env: Mapping, backend=FLOAT) -> list:
         return [
@@ -78,11 +86,6 @@ class Combination:
             for c, (_, part) in zip(self.weights, self.parts, strict=True)
             for term in part.hyperdual(env, backend)
         ]
-
-
-def combine(weights: Sequence[float], values: Sequence, sizes: Sequence) -> tuple:
-    """(Σ c·value, Σ |c|·size): the value and size of a `Combination` from its parts'."""
-    return weighted(weights, values), weighted([abs(c) for c in weights], sizes)
 
 
 def weighted(weights: Sequence[float], arrays: Sequence):

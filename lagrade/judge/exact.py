@@ -120,13 +120,12 @@ class ExactRational:
         """`pair`: answer and reference compiled as one program, when the caller has it (used
         as it is when no trig function needs reducing)."""
         try:
-            has_trig = [_check_rational_trig(e) for e in (answer, reference)]
+            trig = any([_check_rational_trig(e) for e in (answer, reference)])  # both checked
             # rational functions as they stand need no reduction of trig arguments
-            a, b = _weierstrass_ready(answer, reference) if any(has_trig) else (answer, reference)
+            a, b = _weierstrass_ready(answer, reference) if trig else (answer, reference)
         except _OutOfScope:
             return None
         rng = np.random.default_rng(self.seed)
-        trig = any(has_trig)
         return _exact_compare(a, b, domains, self.points, rng, trig, None if trig else pair)
 
 

@@ -72,6 +72,11 @@ class Budget:
     def exhausted(self) -> bool:
         return self.left <= 0
 
+    def charge(self, seconds: float) -> None:
+        """Count `seconds` of the question's work against it."""
+        self.left -= seconds
+        self.spent += seconds
+
 
 _aside = False  # inside set_aside: nested instructor work is charged by the outer one
 
@@ -108,9 +113,7 @@ def set_aside(budget: Budget, timed: bool | None = None):
         yield
     finally:
         _aside = False
-        elapsed = time.perf_counter() - start
-        budget.left -= elapsed
-        budget.spent += elapsed
+        budget.charge(time.perf_counter() - start)
         if timed:
             signal.setitimer(signal.ITIMER_REAL, 0)
             signal.signal(signal.SIGALRM, previous)
