@@ -56,6 +56,7 @@ _TOP_KEYS = {
     "problems",
     "rubric",
     "answer_page",
+    "lms",
 }
 _PROBLEM_KEYS = {"scene", "title", "parts", "points", "variants", "names", "options"}
 _PART_KEYS = {"part", "quantity", "points"}
@@ -119,7 +120,7 @@ def load_assignment(path: str | Path) -> Assignment:
 
 def assignment_table(path: str | Path) -> dict[str, Any]:
     """The TOML of an assignment file, read by the untrusted-input rules, unchecked: what
-    the tables other layers own (`[rubric]`, `[answer_page]`) are read from."""
+    the tables other layers own (`[rubric]`, `[answer_page]`, `[lms]`) are read from."""
     path = Path(path)
     what = f"assignment file {str(path)!r}"
     try:

@@ -37,7 +37,11 @@ def summary_table(summary: BatchSummary) -> str:
 def run(args: argparse.Namespace) -> int:
     from lagrade.cli.progress import ProgressBar
     from lagrade.grading.batch import grade
+    from lagrade.grading.gradebooks import export_file_name, readme_file_name
+    from lagrade.grading.lms import ExportOptions
 
+    kinds = tuple(dict.fromkeys(k for k in args.export if k != "csv"))
+    options = ExportOptions(args.canvas_assignment_id, args.missing_as_zero)
     with ProgressBar() as bar:
         summary = grade(
             args.manifest,
@@ -46,12 +50,17 @@ def run(args: argparse.Namespace) -> int:
             jobs=args.jobs,
             part_time_limit=args.part_time_limit,
             progress=bar,
-            exports=tuple(dict.fromkeys(k for k in args.export if k != "csv")),
+            exports=kinds,
+            export_options=options,
         )
     print(summary_table(summary) + f" ({summary.reused} unchanged, reused)")
     print(f"gradebook: {summary.out_dir / 'gradebook.csv'}")
-    for kind in dict.fromkeys(k for k in args.export if k != "csv"):
-        print(f"{kind + ':':10} {summary.out_dir / f'gradebook-{kind}.csv'}")
+    for book in summary.exports:
+        readme = summary.out_dir / readme_file_name(book.kind)
+        print(f"{book.kind + ':':10} {summary.out_dir / export_file_name(book.kind)}")
+        print(f"{'':10} how to import it: {readme}")
+        if book.warnings:
+            print(f"{'':10} {len(book.warnings)} thing(s) to check first, listed there")
     print(f"summary:   {summary.out_dir / 'summary.md'}")
     return 0 if summary.all_graded else 1
 
@@ -83,6 +92,20 @@ def add_parser(commands: argparse._SubParsersAction) -> None:
         default=[],
         choices=("canvas", "moodle", "csv"),
         help="also write the gradebook as Canvas or Moodle import it (gradebook-canvas.csv, "
-        "gradebook-moodle.csv); repeat for both; csv is gradebook.csv, always written",
+        "gradebook-moodle.csv, each with a README.txt saying how to import it); repeat for "
+        "both; csv is gradebook.csv, always written",
+    )
+    grade.add_argument(
+        "--canvas-assignment-id",
+        default=None,
+        metavar="ID",
+        help="the Canvas assignment to fill (the number in its address, …/assignments/ID); "
+        "default: canvas_assignment_id in the assignment file's [lms] table",
+    )
+    grade.add_argument(
+        "--missing-as-zero",
+        action="store_true",
+        help="give 0 in the Canvas and Moodle gradebooks to students who handed in nothing "
+        "readable (default: no grade, so an import does not overwrite a grade with 0)",
     )
     grade.set_defaults(run=run)

@@ -55,6 +55,8 @@ class BatchSummary:
     results: list[dict[str, Any]] = field(repr=False)
     #: Files in the submissions folder that are no roster student's sheet: name → why.
     stray: dict[str, str] = field(default_factory=dict)
+    #: The LMS gradebooks written (`exports`), each with its warnings for the instructor.
+    exports: tuple[gradebooks.LmsFile, ...] = ()
 
     @property
     def all_graded(self) -> bool:
@@ -319,21 +321,35 @@ def grade(
     limits: Limits | None = None,
     progress: Callable[[int, int, str], None] | None = None,
     exports: Sequence[str] = (),
+    export_options: gradebooks.ExportOptions | None = None,
 ) -> BatchSummary:
     """Grade every roster student's sheet in `submissions`; write results into `out_dir`
     (default: `grades/` beside the manifest); `exports` adds LMS gradebooks ("canvas",
-    "moodle": `lagrade.grading.gradebooks`). See the module docstring for the guarantees."""
+    "moodle", written with `export_options`: `lagrade.grading.gradebooks`). See the module
+    docstring for the guarantees."""
     manifest_path = Path(manifest_path)
     submissions = Path(submissions)
     if not submissions.is_dir():
         raise AssignmentError(f"submissions folder {submissions} does not exist")
     manifest = load_manifest(manifest_path)
     rubric = _rubric(manifest_path, manifest)
+    if exports:  # a bad [lms] table or id stops the run before anything is graded
+        copy = manifest_path.parent / manifest["assignment"].get("file", "assignment.toml")
+        export_options = gradebooks.resolve_options(copy, export_options)
     out = Path(out_dir) if out_dir is not None else manifest_path.parent / "grades"
     with atomic.hold_folder(out):
         atomic.remove_stale_temporaries(out)
         return _grade_into(
-            out, manifest, rubric, submissions, jobs, part_time_limit, limits, progress, exports
+            out,
+            manifest,
+            rubric,
+            submissions,
+            jobs,
+            part_time_limit,
+            limits,
+            progress,
+            exports,
+            export_options,
         )
 
 
@@ -347,6 +363,7 @@ def _grade_into(
     limits: Limits | None,
     progress: Callable[[int, int, str], None] | None,
     exports: Sequence[str] = (),
+    export_options: gradebooks.ExportOptions | None = None,
 ) -> BatchSummary:
     """The body of `grade`, run while this process holds the output folder."""
     version = project_version()
@@ -411,11 +428,9 @@ def _grade_into(
 
     ordered = [results[s["id"]] for s in students]
     report.write_class_reports(out, manifest, ordered, stray)
-    for kind in exports:  # LMS gradebooks, beside our own
-        gradebook = gradebooks.EXPORTS[kind](manifest, ordered)
-        atomic.write_text(out / gradebooks.export_file_name(kind), gradebook)
+    books = gradebooks.write_exports(out, manifest, ordered, exports, export_options)
     counts = {s: sum(1 for r in ordered if r["status"] == s) for s in STATUSES}
-    return BatchSummary(out, counts, reused, ordered, stray)
+    return BatchSummary(out, counts, reused, ordered, stray, tuple(books))
 
 
 def _missing_reason(student_id: str, stray: Mapping[str, str]) -> str:

@@ -1,119 +1,95 @@
-"""Gradebooks in the columns a learning-management system imports, beside lagrade's own
-`gradebook.csv`: `grade --export canvas|moodle`.
+"""Gradebooks in the form a learning-management system imports, beside lagrade's own
+`gradebook.csv`: `grade --export canvas|moodle`. Each is a CSV and a README that says how to
+import it and what the importer will do with it (`lagrade.grading.canvas`,
+`lagrade.grading.moodle`).
 
-Canvas reads a column by its header: Student, ID, SIS User ID, SIS Login ID and Section identify
-the student, and every other column is taken for an assignment (an unknown header creates one).
-So the Canvas file carries only those five and one column for this assignment, with the
-"Points Possible" row Canvas exports; the roster's own extra columns stay in gradebook.csv.
-Moodle's grade import maps one identifier column to a user field and each other column to a
-grade item, or to nothing, at import time; so its file keeps every roster column.
+The assignment file may say which Canvas assignment to fill:
+
+    [lms]
+    canvas_assignment_id = 12345   # the number in the assignment's Canvas address
 """
 
 from __future__ import annotations
 
-import csv
-import io
+import dataclasses
 from collections.abc import Callable, Mapping, Sequence
+from pathlib import Path
 from typing import Any
 
-import lagrade.grading.report as report
+import lagrade.grading.atomic as atomic
+from lagrade.assign.assignment import assignment_table
+from lagrade.errors import AssignmentError, LagradeError
+from lagrade.grading.canvas import canvas_gradebook
+from lagrade.grading.lms import ExportOptions, LmsFile
+from lagrade.grading.moodle import moodle_gradebook
 
-#: Roster columns (compared ignoring case, spaces and _) that hold what Canvas calls ...
-_CANVAS_ID = ("canvas_id", "canvasid", "canvas user id", "id_canvas")
-_CANVAS_LOGIN = ("sis_login_id", "sis login id", "login", "login_id", "email", "e-mail")
-_CANVAS_SECTION = ("section", "sections")
-
-
-def canvas_csv(manifest: Mapping[str, Any], results: Sequence[Mapping[str, Any]]) -> str:
-    """Canvas's gradebook import: Student, ID, SIS User ID (the roster id), SIS Login ID,
-    Section, then the assignment's points; the second row holds the points possible."""
-    info = manifest["assignment"]
-    title = _assignment_title(info)
-    extras = _extras(manifest)
-    rows: list[list[str]] = [
-        ["Student", "ID", "SIS User ID", "SIS Login ID", "Section", title],
-        ["Points Possible", "", "", "", "", report.format_number(_total(manifest, results))],
-    ]
-    for r in results:
-        extra = extras.get(r["student"]["id"], {})
-        rows.append(
-            [
-                r["student"]["name"],
-                _pick(extra, _CANVAS_ID),
-                r["student"]["id"],
-                _pick(extra, _CANVAS_LOGIN),
-                _pick(extra, _CANVAS_SECTION),
-                report.format_number(r["score"]),
-            ]
-        )
-    return _csv(rows)
-
-
-def moodle_csv(manifest: Mapping[str, Any], results: Sequence[Mapping[str, Any]]) -> str:
-    """Moodle's grade import: "ID number" (match it to the user field *ID number* at import),
-    the name and every roster column, one grade item named after the assignment, and its
-    feedback (the status and reason of a student who was not graded)."""
-    title = _assignment_title(manifest["assignment"])
-    extras = _extras(manifest)
-    columns = report.roster_columns(manifest)
-    rows: list[list[str]] = [["ID number", "Full name", *columns, title, f"{title} (feedback)"]]
-    for r in results:
-        extra = extras.get(r["student"]["id"], {})
-        feedback = "" if r["status"] == "graded" else f"{r['status']}: {r['reason']}"
-        rows.append(
-            [
-                r["student"]["id"],
-                r["student"]["name"],
-                *(extra.get(c, "") for c in columns),
-                report.format_number(r["score"]),
-                feedback,
-            ]
-        )
-    return _csv(rows)
-
-
-EXPORTS: dict[str, Callable[[Mapping[str, Any], Sequence[Mapping[str, Any]]], str]] = {
-    "canvas": canvas_csv,
-    "moodle": moodle_csv,
-}
+EXPORTS: dict[
+    str, Callable[[Mapping[str, Any], Sequence[Mapping[str, Any]], ExportOptions], LmsFile]
+] = {"canvas": canvas_gradebook, "moodle": moodle_gradebook}
+_LMS_KEYS = ("canvas_assignment_id",)
 
 
 def export_file_name(kind: str) -> str:
     return f"gradebook-{kind}.csv"
 
 
-def _csv(rows: list[list[str]]) -> str:
-    """Every text cell neutralised as in gradebook.csv (formulas, line breaks)."""
-    buffer = io.StringIO()
-    writer = csv.writer(buffer, lineterminator="\n")
-    for row in rows:
-        writer.writerow([report.csv_cell(cell) for cell in row])
-    return buffer.getvalue()
+def readme_file_name(kind: str) -> str:
+    return f"gradebook-{kind}.README.txt"
 
 
-def _assignment_title(info: Mapping[str, Any]) -> str:
-    return str(info.get("title") or "lagrade assignment")
+def canvas_assignment_id(value: Any, where: str) -> str:
+    """A Canvas assignment id as written in a header (`Title (12345)`): digits only, since
+    Canvas finds the id with `\\((\\d+)\\)` at the end of the header."""
+    text = (
+        str(value).strip() if isinstance(value, int | str) and not isinstance(value, bool) else ""
+    )
+    if not (text.isascii() and text.isdigit() and int(text) > 0):
+        raise AssignmentError(
+            f"{where}: {value!r} is not a Canvas assignment id (the number in the assignment's "
+            "address, …/assignments/12345)"
+        )
+    return str(int(text))
 
 
-def _total(manifest: Mapping[str, Any], results: Sequence[Mapping[str, Any]]) -> float:
-    if results:
-        return float(results[0]["max_score"])
-    return float(manifest["assignment"].get("total_points") or 0)
+def resolve_options(assignment_file: Path, given: ExportOptions | None) -> ExportOptions:
+    """The export options: what the command line gave, else the assignment file's `[lms]`
+    table. Raises AssignmentError for a malformed table or id, before anything is graded."""
+    given = given or ExportOptions()
+    table: Any = None
+    if assignment_file.exists():
+        try:
+            table = assignment_table(assignment_file).get("lms")
+        except LagradeError as error:
+            raise AssignmentError(str(error)) from None
+    if table is not None and not isinstance(table, Mapping):
+        raise AssignmentError("[lms] in the assignment file must be a table")
+    unknown = sorted(set(table or {}) - set(_LMS_KEYS))
+    if unknown:
+        raise AssignmentError(
+            f"[lms]: unknown field {unknown[0]!r} (known: {', '.join(_LMS_KEYS)})"
+        )
+    canvas_id = given.canvas_assignment_id
+    if canvas_id is not None:
+        canvas_id = canvas_assignment_id(canvas_id, "--canvas-assignment-id")
+    elif table and "canvas_assignment_id" in table:
+        canvas_id = canvas_assignment_id(
+            table["canvas_assignment_id"], "[lms] canvas_assignment_id"
+        )
+    return dataclasses.replace(given, canvas_assignment_id=canvas_id)
 
 
-def _extras(manifest: Mapping[str, Any]) -> dict[str, Mapping[str, str]]:
-    return {s["id"]: s.get("extra") or {} for s in manifest["students"]}
-
-
-def _pick(extra: Mapping[str, str], names: Sequence[str]) -> str:
-    """The first roster column whose header is one of `names` (ignoring case, spaces, _)."""
-
-    def norm(text: str) -> str:
-        return text.casefold().replace("_", " ").strip()
-
-    wanted = [norm(n) for n in names]
-    for name in wanted:
-        for header, value in extra.items():
-            if norm(header) == name and value:
-                return str(value)
-    return ""
+def write_exports(
+    out: Path,
+    manifest: Mapping[str, Any],
+    results: Sequence[Mapping[str, Any]],
+    kinds: Sequence[str],
+    options: ExportOptions | None = None,
+) -> list[LmsFile]:
+    """Write each asked-for gradebook and its README into `out` (atomically)."""
+    written = []
+    for kind in kinds:
+        book = EXPORTS[kind](manifest, results, options or ExportOptions())
+        atomic.write_text(out / export_file_name(kind), book.csv)
+        atomic.write_text(out / readme_file_name(kind), book.readme)
+        written.append(book)
+    return written
