@@ -1,5 +1,6 @@
-"""`lagrade export prairielearn`: an assignment as PrairieLearn questions, one folder per
-problem (the format and what `server.py` does: `lagrade.grading.prairielearn`)."""
+"""`lagrade export prairielearn|gradescope`: an assignment for another system. PrairieLearn:
+one question folder per problem (`lagrade.grading.prairielearn`); Gradescope: an autograder zip
+that grades each upload with lagrade (`lagrade.grading.gradescope`)."""
 
 from __future__ import annotations
 
@@ -11,6 +12,8 @@ from lagrade.errors import AssignmentError
 
 
 def run(args: argparse.Namespace) -> int:
+    if args.system == "gradescope":
+        return _gradescope(args)
     from lagrade.grading.prairielearn import export_prairielearn, info_json
 
     source, seed = Path(args.source), args.seed
@@ -33,19 +36,38 @@ def run(args: argparse.Namespace) -> int:
     return 0
 
 
+def _gradescope(args: argparse.Namespace) -> int:
+    from lagrade.grading.gradescope import export_gradescope
+
+    out = export_gradescope(Path(args.source), args.out)
+    print(
+        f"{out}: Gradescope autograder (setup.sh, run_autograder, the lagrade wheel, the "
+        "manifest); upload it under Configure Autograder (README.txt inside says more)"
+    )
+    return 0
+
+
 def add_parser(commands: argparse._SubParsersAction) -> None:
     """Register this command with the `lagrade` parser."""
     export = commands.add_parser(
         "export",
-        help="export an assignment to another system (prairielearn)",
-        description="Write one PrairieLearn question folder per problem (info.json, "
+        help="export an assignment to another system (prairielearn, gradescope)",
+        description="prairielearn: one question folder per problem (info.json, "
         "question.html, server.py): variants drawn from the bank by PrairieLearn's seed, "
-        "unreadable answers returned without costing an attempt, parts graded by lagrade.",
-        epilog="example: lagrade export prairielearn examples/assignment.toml --seed 2025 "
-        "--out pl-questions",
+        "unreadable answers returned without costing an attempt, parts graded by lagrade. "
+        "gradescope: an autograder zip (--out autograder.zip) that grades each student's "
+        "uploaded answer sheet against their own variant, as `lagrade grade` does; give it the "
+        "manifest.json.",
+        epilog="examples: lagrade export prairielearn examples/assignment.toml --seed 2025 "
+        "--out pl-questions; lagrade export gradescope ps3/manifest.json --out autograder.zip",
     )
-    export.add_argument("system", choices=("prairielearn",), help="the target system")
+    export.add_argument("system", choices=("prairielearn", "gradescope"), help="the target system")
     export.add_argument("source", metavar="ASSIGNMENT.toml|manifest.json")
     export.add_argument("--seed", type=int, default=None, help="the assignment seed")
-    export.add_argument("--out", type=Path, required=True, help="folder for the questions")
+    export.add_argument(
+        "--out",
+        type=Path,
+        required=True,
+        help="folder for the questions (prairielearn), or the zip to write (gradescope)",
+    )
     export.set_defaults(run=run)

@@ -47,7 +47,9 @@ def log_error(out: Path, student_id: str, details: str) -> None:
 
 
 def gradescope_results(result: Mapping[str, Any]) -> dict[str, Any]:
-    """Gradescope's results.json: total score and one test per part."""
+    """Gradescope's results.json: total score and one test per part. Every text is marked
+    plain ("text"): Gradescope renders a top-level output as HTML by default ("simple_format"),
+    and the reason of an unreadable sheet can quote the student's file."""
     tests = []
     for problem in result["problems"]:
         for part in problem["parts"]:
@@ -59,7 +61,13 @@ def gradescope_results(result: Mapping[str, Any]) -> dict[str, Any]:
                     "output": " ".join(part["feedback"]) or part["verdict"],
                 }
             )
-    payload: dict[str, Any] = {"score": result["score"], "tests": tests}
+    payload: dict[str, Any] = {
+        "score": result["score"],
+        "output_format": "text",
+        "test_output_format": "text",
+        "test_name_format": "text",
+        "tests": tests,
+    }
     if result["status"] != "graded":
         payload["output"] = f"{result['status']}: {result['reason']}"
     return payload
