@@ -52,14 +52,16 @@ def add_parser(commands: argparse._SubParsersAction) -> None:
     export = commands.add_parser(
         "export",
         help="export an assignment to another system (prairielearn, gradescope)",
-        description="prairielearn: one question folder per problem (info.json, "
-        "question.html, server.py): variants drawn from the bank by PrairieLearn's seed, "
-        "unreadable answers returned without costing an attempt, parts graded by lagrade. "
-        "gradescope: an autograder zip (--out autograder.zip) that grades each student's "
-        "uploaded answer sheet against their own variant, as `lagrade grade` does; give it the "
-        "manifest.json.",
-        epilog="examples: lagrade export prairielearn examples/assignment.toml --seed 2025 "
-        "--out pl-questions; lagrade export gradescope ps3/manifest.json --out autograder.zip",
+        description="prairielearn: one question folder per problem (info.json,\n"
+        "question.html, server.py): variants drawn from the bank by PrairieLearn's seed,\n"
+        "unreadable answers returned without costing an attempt, parts graded by lagrade.\n"
+        "gradescope: an autograder zip (--out autograder.zip) that grades each student's\n"
+        "uploaded answer sheet against their own variant, as `lagrade grade` does (give it\n"
+        "the manifest.json).",
+        epilog="examples:\n"
+        "  lagrade export prairielearn examples/assignment.toml --seed 2025 --out pl-questions\n"
+        "  lagrade export gradescope ps3/manifest.json --out autograder.zip",
+        formatter_class=argparse.RawDescriptionHelpFormatter,
     )
     export.add_argument("system", choices=("prairielearn", "gradescope"), help="the target system")
     export.add_argument("source", metavar="ASSIGNMENT.toml|manifest.json")
