@@ -24,7 +24,6 @@ from lagrade.grading.lms import (
     ExportOptions,
     LmsFile,
     grade_cell,
-    has_grade,
     names,
     repeated,
     roster_extras,
@@ -131,7 +130,7 @@ def _feedback(result: Mapping[str, Any]) -> str:
     score = (
         f"{report.format_number(result['score'])} of {report.format_number(result['max_score'])}"
     )
-    if has_grade(result) and result["status"] == "graded":
+    if result["status"] == "graded":
         return f"Graded by lagrade: {score} points."
     return f"{result['status']}: {result['reason']} ({score} points)"
 
@@ -169,7 +168,9 @@ def _readme(
         "5. Upload grades.",
         "",
         f"The file has {rows} row(s). Moodle stops the whole import at a row whose {key}",
-        "belongs to no Moodle user and names it: delete that row and import again.",
+        "belongs to no Moodle user and names it: delete that row and import again. Moodle",
+        "compares the value exactly (on some databases even the case of an email, MDL-29315),",
+        "so the roster should spell it as Moodle has it.",
     ]
     if no_grade:
         lines += [

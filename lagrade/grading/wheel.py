@@ -83,7 +83,8 @@ def _metadata(meta: importlib.metadata.PackageMetadata) -> str:
         if meta.get(key):
             lines.append(f"{key}: {meta[key]}")
     lines += [f"Provides-Extra: {extra}" for extra in meta.get_all("Provides-Extra") or []]
-    lines += [f"Requires-Dist: {req}" for req in meta.get_all("Requires-Dist") or []]
+    # requires() also reads a development install's egg-info (requires.txt)
+    lines += [f"Requires-Dist: {req}" for req in importlib.metadata.requires(DISTRIBUTION) or []]
     return "\n".join(lines) + "\n"
 
 
