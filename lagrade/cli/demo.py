@@ -8,6 +8,7 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
+from lagrade.cli.arguments import count
 from lagrade.cli.grade import summary_table
 
 
@@ -59,5 +60,5 @@ def add_parser(commands: argparse._SubParsersAction) -> None:
         metavar="DIR",
         help="where to work (default ./lagrade-demo)",
     )
-    demo.add_argument("--jobs", type=int, default=2, help="submissions graded in parallel")
+    demo.add_argument("--jobs", type=count, default=2, help="submissions graded in parallel")
     demo.set_defaults(run=run)

@@ -14,7 +14,7 @@ from pathlib import Path
 
 import pytest
 
-from lagrade.cli.main import EXIT_BAD_INPUT, EXIT_INTERRUPTED, build_parser, main
+from lagrade.cli.main import EXIT_BAD_INPUT, build_parser, main
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -151,8 +151,8 @@ def _serve_until_listening(argv: list[str], workdir: Path) -> None:
     finally:
         process.send_signal(signal.SIGTERM)
         rest = process.communicate(timeout=30)[0]
-    assert process.returncode == EXIT_INTERRUPTED, rest
-    assert "Traceback" not in rest, rest
+    assert process.returncode == 0, rest  # stopping is a server's normal end
+    assert "Traceback" not in rest and "interrupted" not in rest, rest
 
 
 def _generate_example() -> str:
