@@ -55,6 +55,11 @@ def test_an_adhoc_lagrangian_without_parameters_points_to_the_flag(capfd):
     assert '"lagrangian"' not in err and "--lagrangian" in err, err
 
 
+def test_parse_points_to_the_flags_for_an_undeclared_name(capfd):
+    status, out, _ = _run(["parse", "m g", "--coordinates", "x"], capfd)
+    assert status == 1 and "Unknown symbol 'm'" in out and "--parameters" in out, out
+
+
 def test_errors_name_flags_not_json_fields(capfd):
     status, _, err = _run(
         ["check", "--lagrangian", "x_dot^2", "--part", "eom", "--answer", "x"], capfd
