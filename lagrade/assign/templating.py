@@ -101,6 +101,11 @@ def format_points(value: float) -> str:
     return f"{value:g}"
 
 
+def count_points(value: float) -> str:
+    """`1 point`, `0.5 points`, `3 points`: the number with its noun."""
+    return f"{value:g} point" + ("" if value == 1 else "s")
+
+
 def one_line(value: Any) -> str:
     """Text for a TOML comment: line breaks would end the comment, so they become spaces."""
     return " ".join(str(value).split())
@@ -142,6 +147,7 @@ def environment(templates_dir: str | Path | None = None) -> jinja2.Environment:
         toml=toml_string,
         literal=toml_literal,
         points=format_points,
+        pointcount=count_points,
         oneline=one_line,
         mdblock=md_block,
     )
