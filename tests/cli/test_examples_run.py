@@ -66,8 +66,8 @@ def _readme_examples() -> list[str]:
         command = re.sub(r"\s*\[[^\]]*\]", "", template.replace("\\|", "|"))
         words = [PLACEHOLDERS.get(w, w) for w in shlex.split(command, posix=False)]
         found.append(" ".join(words))
-    block = re.search(r"```sh\n(.*?)```", readme, flags=re.S)
-    found += [ln for ln in block.group(1).splitlines() if ln.startswith("lagrade ")]
+    for block in re.findall(r"```sh\n(.*?)```", readme, flags=re.S):  # quick start, round trip
+        found += [ln for ln in block.splitlines() if ln.startswith("lagrade ")]
     return found
 
 
