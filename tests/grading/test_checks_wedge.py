@@ -279,5 +279,5 @@ def test_seeded_variant_uses_its_names_and_wants_symbols():
     )
     v = judge({"scene": "wedge", "seed": 3}, "lagrangian", L + " + m 9.81 q sin(alpha)")
     assert v.status == "incorrect"
-    assert any("Write g as a symbol" in f for f in v.feedback), v.feedback
+    assert any("handout's value for g;" in f for f in v.feedback), v.feedback
     assert judge({"scene": "wedge", "seed": 3}, "lagrangian", "x_M_dot^2").status == "invalid"

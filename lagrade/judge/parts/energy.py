@@ -165,7 +165,7 @@ def _same_dynamics_notes(problem: Problem, answer: Compiled, match, points: Poin
 def check_lagrangian(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
     got = read_single(problem, answer, "lagrangian", "L")
     status, score, feedback, out, witness, mistakes = judge_lagrangian(problem, got.expr)
-    hint = handout_numbers(problem, got) if status != "correct" else ""
+    hint = handout_numbers(problem, got, problem.L) if status != "correct" else ""
     feedback += [hint] if hint else []
     return Verdict(
         "lagrangian",
@@ -196,6 +196,7 @@ def check_kinetic(problem: Problem, answer: Any, given: Mapping | None) -> Verdi
         method_name(out),
         problem,
         values_text(problem, points, out, answer_c, problem.kinetic, "T", "J"),
+        reference=problem.kinetic,
     )
 
 
@@ -222,4 +223,5 @@ def check_potential(problem: Problem, answer: Any, given: Mapping | None) -> Ver
         witness_point(points, out, answer_c),
         method_name(out),
         problem,
+        reference=reference,
     )
