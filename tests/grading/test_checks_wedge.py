@@ -172,9 +172,10 @@ def test_momentum_of_the_wrong_coordinate_is_named():
 def test_cyclic():
     assert judge(WEDGE, "cyclic", ["x_M"]).status == "correct"
     v = judge(WEDGE, "cyclic", "none")
-    assert v.score == 0.5 and v.mistakes == ("missed_cyclic",)
+    assert v.score == 0 and v.mistakes == ("missed_cyclic",)  # a blind guess earns nothing
     v = judge(WEDGE, "cyclic", ["x_M", "q"])
     assert v.mistakes == ("not_cyclic",) and "g*m*q*sin(alpha)" in v.feedback[0]
+    assert v.score == 0
 
 
 def test_conserved_momentum_and_energy():

@@ -165,6 +165,9 @@ def values_text(
             theirs = np.ravel(reference.values(env)[0])[0]
     except UnsupportedExpression:  # a symbol without a value here: say nothing, never guess
         return ""
+    if not (np.isfinite(mine) and np.isfinite(theirs)):  # say which side is undefined there
+        side = f"your {what}" if not np.isfinite(mine) else f"the expected {what}"
+        return f", where {side} is undefined" if np.isfinite(mine) != np.isfinite(theirs) else ""
     if np.iscomplexobj(mine) or np.iscomplexobj(theirs):  # rounded reals only
         return ""
     pair = _shown_pair(float(mine), float(theirs))

@@ -102,12 +102,20 @@ def judge_lagrangian(
         feedback.append(as_sentence(mutant.message))
         mistakes = (mutant.kind,)
     witness = witness_point(points, out, answer)
+    undefined = out.reason == "undefined" and _undefined_at(match.answer_el, out.where)
     feedback.append(
         "Your L does not give the equations of motion of this system"
-        + where_text(witness, problem)
+        + where_text(witness, problem, ", where your L is undefined" if undefined else "")
         + "."
     )
     return ("incorrect", 0.0, feedback, out, witness, mistakes)
+
+
+def _undefined_at(answer_el: tuple[np.ndarray, np.ndarray] | None, where: int | None) -> bool:
+    """Whether the answer's Euler–Lagrange values are not finite at point `where`."""
+    if answer_el is None or where is None:
+        return False
+    return not np.all(np.isfinite(np.asarray(answer_el[0])[where]))
 
 
 _CONSTANT_NOTE = (
