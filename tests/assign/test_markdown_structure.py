@@ -117,3 +117,16 @@ def test_a_formula_in_prose_is_one_math_span(out: Path, kind: str):
     pieces = [p for p in pieces if not re.fullmatch(r"(\$[^$]+\$,? ?)+", p)]
     assert pieces == [], pieces[:5]
     assert "\\+" not in text and "\\>" not in text  # escaped operators between math spans
+
+
+def test_tex_name_lists_start_their_own_line(tmp_path):
+    """In the PDF too, each list of names after a prompt is a paragraph of its own (a single
+    newline in TeX would run it into the prompt, as "…L = T − V. May use: …")."""
+    assignment = write_assignment(
+        tmp_path / "a.toml", [{"scene": "wedge", "parts": all_parts("wedge")}]
+    )
+    roster = write_roster(tmp_path / "r.csv", [("s001", "Ada Lovelace")])
+    generate(assignment, roster, 5, tmp_path / "out", formats=("tex",))
+    tex = (tmp_path / "out" / "handouts" / "s001.tex").read_text(encoding="utf-8")
+    groups = re.findall(r"(.*)\n?(\{\\small (?:May use|Left-hand sides|Coordinate names):)", tex)
+    assert groups and all(before.endswith("\\par") or before == "" for before, _ in groups), groups
