@@ -23,6 +23,13 @@ def latex_symbol_names(variant: SceneVariant) -> dict[sp.Symbol, str]:
     return symbol_names(variant.coordinates)
 
 
+def energy_function_name(variant: SceneVariant) -> str:
+    """What to call the energy function h in this variant's text: h, unless a parameter or
+    coordinate is already called h (the wedge's height), then H, then E_J."""
+    taken = set(variant.parameter_symbols) | set(variant.coordinates)
+    return next(n for n in ("h", "H", "E_J") if n not in taken)
+
+
 def solution_data(variant: SceneVariant) -> dict[str, Any]:
     """The five-step solution as JSON-ready data."""
     system = variant.system
@@ -41,6 +48,7 @@ def solution_data(variant: SceneVariant) -> dict[str, Any]:
                 **({"value": variant.values[p.name]} if p.name in variant.values else {}),
             }
             for p in variant.scene.parameters
+            if p.name in variant.used_parameters  # an option may leave one out
         },
         "options": dict(variant.options),
         "dof": variant.dof,
@@ -85,7 +93,8 @@ def solution_text(variant: SceneVariant) -> str:
     )
     if d["options"]:
         lines.append("options:     " + ", ".join(f"{k}={v}" for k, v in d["options"].items()))
-    lines.append(f"DOF:         {d['dof']}  (3N - k with k = {len(d['constraints'])} constraints)")
+    k = len(d["constraints"])
+    lines.append(f"DOF:         {d['dof']}  (3N - k with k = {k} constraint{'s' * (k != 1)})")
     lines.append("transformation:")
     lines += [f"  {k} = {v}" for k, v in d["transformation"].items()]
     lines += ["", f"T = {d['T']}", f"V = {d['V']}", f"L = {d['L']}", ""]
@@ -94,9 +103,8 @@ def solution_text(variant: SceneVariant) -> str:
     lines += [f"  {e} = 0" for e in d["eom"]]
     lines.append("cyclic: " + (", ".join(d["cyclic"]) or "none"))
     lines.append("conserved:")
-    lines += [
-        f"  {'h (energy function)' if k == 'h' else k} = {v}" for k, v in d["conserved"].items()
-    ]
+    energy = f"{energy_function_name(variant)} (energy function)"
+    lines += [f"  {energy if k == 'h' else k} = {v}" for k, v in d["conserved"].items()]
     if d["quantities"]:
         lines.append("quantities:")
         lines += [f"  {k} = {v}" for k, v in d["quantities"].items()]
@@ -120,7 +128,7 @@ def solution_latex(variant: SceneVariant) -> str:
     for e in system.euler_lagrange:
         out.append(f"0 &= {tex(e)} \\\\")
     for k, v in system.conserved_quantities.items():
-        label = "h" if k == "h" else f"p_{{{k[2:]}}}"
+        label = energy_function_name(variant) if k == "h" else f"p_{{{k[2:]}}}"
         out.append(f"{label} &= {tex(v)} = \\text{{const}} \\\\")
     out[-1] = out[-1].removesuffix(" \\\\")
     out.append("\\end{align*}")

@@ -3,7 +3,9 @@ then the shipped templates) and the filters that make text safe for LaTeX, Markd
 
 from __future__ import annotations
 
+import json
 import re
+import tomllib
 from pathlib import Path
 from typing import Any
 
@@ -39,6 +41,84 @@ def tex_escape(value: Any) -> str:
     TeX's ligatures broken (`r''` stays two primes, not a closing double quote)."""
     escaped = "".join(_TEX_SPECIALS.get(ch, ch) for ch in str(value))
     return _LIGATURES.sub("{}", escaped)
+
+
+#: ASCII characters a typewriter font (OT1 cmtt) sets as commands or ligatures in LaTeX, and the
+#: slot of its own glyph for each: copied from the PDF, `'` is a straight quote (slot 13, not
+#: the curly 39), `_` an underscore (not a drawn rule), `"` a straight double quote.
+_TT_SLOTS = {ch: ord(ch) for ch in '\\{}_^~#$%&"<>|`'} | {"'": 13, "`": 18}
+
+
+def tt_copy(value: Any) -> str:
+    """Text for a typewriter line that a reader copies out of the PDF as it was written: each
+    character that LaTeX would turn into another (a curly quote, a rule for `_`) set as the
+    font's own glyph, and every space kept (runs of spaces do not collapse)."""
+    out = []
+    for ch in str(value):
+        if ch in _TT_SLOTS:
+            out.append(f"{{\\char{_TT_SLOTS[ch]}}}")
+        elif ch == " ":
+            out.append("\\ ")
+        else:
+            out.append(tex_escape(ch))
+    return "".join(out)
+
+
+def toml_wrapped(text: str, width: int = 88) -> str:
+    """A TOML document (an answer sheet) rewritten so that no line is wider than `width` where
+    that can be helped, for a page that must not break a line: a long string becomes a
+    multi-line basic string whose lines end in a backslash, which TOML reads as no break at all
+    (it drops the newline and the indentation after it). Read back, every value is the same."""
+    document = tomllib.loads(text)
+    out: list[str] = []
+    for table in document:
+        out.append(f"[{table}]")
+        for key, value in document[table].items():
+            out += _toml_entry(key, value, width)
+    return "\n".join(out)
+
+
+def _toml_entry(key: str, value: Any, width: int) -> list[str]:
+    if not isinstance(value, str):
+        return [f"{key} = {json.dumps(value)}"]
+    single = f"{key} = {toml_literal(value)}"
+    if "\n" not in value and len(single) <= width:
+        return [single]
+    lines = [f'{key} = """']
+    for item in value.split("\n")[:-1] if value.endswith("\n") else value.split("\n"):
+        lines += _continued(_basic(item), width)
+    last = lines.pop()
+    lines += [last, '"""'] if value.endswith("\n") else [last + '"""']
+    return lines
+
+
+def _basic(text: str) -> str:
+    """Text as it stands inside a multi-line basic string: backslashes and quotes escaped."""
+    return text.replace("\\", "\\\\").replace('"', '\\"')
+
+
+def _continued(line: str, width: int) -> list[str]:
+    """`line` cut after spaces into pieces of at most `width`, each ending in a backslash
+    (TOML's line continuation) but the last; the pieces after the first indented by 2."""
+    pieces: list[str] = []
+    while len(line) > width:
+        cut = _cut(line, width - 1)  # the space stays before the backslash
+        if cut <= 0:
+            break
+        pieces.append(line[: cut + 1] + "\\")
+        line = "  " + line[cut + 1 :]
+    return [*pieces, line]
+
+
+def _cut(line: str, limit: int) -> int:
+    """The last space before `limit` outside brackets (between terms), else the last space."""
+    depth, best, any_space = 0, -1, -1
+    for at, ch in enumerate(line[:limit]):
+        depth += (ch == "(") - (ch == ")")
+        if ch == " " and at > 0:
+            any_space = at
+            best = at if depth == 0 else best
+    return best if best > 0 else any_space
 
 
 def md_escape(value: Any) -> str:
@@ -101,6 +181,11 @@ def format_points(value: float) -> str:
     return f"{value:g}"
 
 
+def count_points(value: float) -> str:
+    """`1 point`, `0.5 points`, `3 points`: the number with its noun."""
+    return f"{value:g} point" + ("" if value == 1 else "s")
+
+
 def one_line(value: Any) -> str:
     """Text for a TOML comment: line breaks would end the comment, so they become spaces."""
     return " ".join(str(value).split())
@@ -137,11 +222,14 @@ def environment(templates_dir: str | Path | None = None) -> jinja2.Environment:
     )
     env.filters.update(
         tex=tex_escape,
+        ttcopy=tt_copy,
+        tomlwrap=toml_wrapped,
         md=md_escape,
         mdcode=md_code,
         toml=toml_string,
         literal=toml_literal,
         points=format_points,
+        pointcount=count_points,
         oneline=one_line,
         mdblock=md_block,
     )

@@ -15,6 +15,7 @@ from markupsafe import Markup
 from lagrade.assign.assignment import EXPRESSION, Problem
 from lagrade.assign.figures import draw
 from lagrade.assign.prose import Prose, render_prose
+from lagrade.assign.solution import energy_function_name
 from lagrade.assign.symbols import part_symbols
 from lagrade.assign.templating import toml_literal
 from lagrade.assign.tidy import tidy
@@ -93,8 +94,7 @@ def symbolic_solution(scene_id: str, names: tuple, options: tuple) -> dict[str, 
         return tidy(expr, motion)
 
     system = v.system
-    parameters = set(v.parameter_symbols)
-    energy = next(n for n in ("h", "H", "E_J") if n not in parameters and n not in coords)
+    energy = energy_function_name(v)
 
     def label(name: str) -> sp.Symbol:
         """`p_x_M` → p_{xM}; the energy function `h` renamed when a parameter is called h."""

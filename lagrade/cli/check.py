@@ -16,6 +16,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any, BinaryIO
 
 import lagrade.untrusted as untrusted
+from lagrade.cli.arguments import count, seconds
 from lagrade.errors import RequestError
 
 if TYPE_CHECKING:
@@ -40,6 +41,14 @@ DEFAULT_TIME_LIMIT = 2.0
 #: `lagrade.judge.problem.IMAGINARY_UNITS` (pinned equal by the same test).
 IMAGINARY_UNITS = ("I", "i", "j")
 
+
+#: The problem's fields as this command line spells them, for the judge's errors about them.
+FLAGS = {
+    "lagrangian": "--lagrangian",
+    "expression": "--expression",
+    "coordinates": "--coordinates, e.g. --coordinates theta",
+    "parameters": "--parameters, e.g. --parameters m,g,R",
+}
 
 #: Request lines judged per round: the parent holds one round's requests and results at a time,
 #: so a batch of any size runs in bounded memory (a 39 MB file held ~500 MB when read whole).
@@ -156,13 +165,13 @@ def add_check_arguments(parser: argparse.ArgumentParser) -> None:
     )
     parser.add_argument(
         "--time-limit",
-        type=float,
+        type=seconds,
         default=DEFAULT_TIME_LIMIT,
         help="seconds per request (default 2)",
     )
     parser.add_argument(
         "--jobs",
-        type=int,
+        type=count,
         default=1,
         help="with --batch: worker processes (results stay in request order; default 1)",
     )
@@ -233,9 +242,7 @@ def run_check_command(args: argparse.Namespace) -> tuple[int, str]:
     from lagrade.judge.problem import build_problem
 
     if args.batch:
-        return check_batch_file(
-            args.batch, args.out, time_limit=args.time_limit, jobs=max(1, args.jobs)
-        )
+        return check_batch_file(args.batch, args.out, time_limit=args.time_limit, jobs=args.jobs)
     if not args.part or args.answer is None:
         raise RequestError("give --part and --answer (or --batch REQUESTS.jsonl)")
     spec = problem_from_arguments(args)
@@ -245,7 +252,7 @@ def run_check_command(args: argparse.Namespace) -> tuple[int, str]:
     given: dict[str, Any] = {"lagrangian": args.given_lagrangian} if args.given_lagrangian else {}
     if args.all:
         given["all"] = True
-    build_problem(spec)  # a malformed problem is a usage error here, not a verdict
+    build_problem(spec, FLAGS)  # a malformed problem is a usage error here, not a verdict
     verdict = check(spec, args.part, answer, time_limit=args.time_limit, given=given or None)
     text = (
         json.dumps(verdict.to_dict(), ensure_ascii=False, indent=2)

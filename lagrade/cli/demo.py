@@ -6,8 +6,12 @@ itself is `lagrade.cli.demo_class`, imported when the command runs (start-up sta
 from __future__ import annotations
 
 import argparse
+import shlex
+import shutil
+import sys
 from pathlib import Path
 
+from lagrade.cli.arguments import count
 from lagrade.cli.grade import summary_table
 
 
@@ -28,18 +32,35 @@ def run(args: argparse.Namespace) -> int:
 
 
 def _next_steps(folder: Path) -> str:
-    """Where the class could go from here: the three ways into instructors' systems."""
+    """Where the class could go from here: the three ways into instructors' systems, each a
+    command that runs as printed (see `how_to_run`)."""
     manifest = folder / "assignment" / "manifest.json"
+    lagrade = how_to_run()
     return "\n".join(
         [
             "",
             "Next, with this class:",
-            f"  answer pages:  lagrade serve {manifest} --submissions {folder}/submissions "
+            f"  answer pages:  {lagrade} serve {manifest} --submissions {folder}/submissions "
             f"--links {folder}/links.csv",
-            f"  PrairieLearn:  lagrade export prairielearn {manifest} --out {folder}/pl-questions",
-            f"  Canvas/Moodle: lagrade grade {manifest} {folder}/submissions --export canvas",
+            f"  PrairieLearn:  {lagrade} export prairielearn {manifest} "
+            f"--out {folder}/pl-questions",
+            f"  Canvas/Moodle: {lagrade} grade {manifest} {folder}/submissions --export canvas",
         ]
     )
+
+
+def how_to_run() -> str:
+    """How to run this same lagrade again from this shell: `lagrade` when that name on PATH
+    is this installation (an activated venv), otherwise the path it was started by
+    (`.venv/bin/lagrade` right after the README's quick start, before `. .venv/bin/activate`),
+    or `python -m lagrade` with this interpreter."""
+    started = Path(sys.argv[0])
+    on_path = shutil.which("lagrade")
+    if started.name == "lagrade" and started.is_file():
+        if on_path and Path(on_path).resolve() == started.resolve():
+            return "lagrade"
+        return shlex.quote(str(started))
+    return f"{shlex.quote(sys.executable)} -m lagrade"
 
 
 def add_parser(commands: argparse._SubParsersAction) -> None:
@@ -59,5 +80,5 @@ def add_parser(commands: argparse._SubParsersAction) -> None:
         metavar="DIR",
         help="where to work (default ./lagrade-demo)",
     )
-    demo.add_argument("--jobs", type=int, default=2, help="submissions graded in parallel")
+    demo.add_argument("--jobs", type=count, default=2, help="submissions graded in parallel")
     demo.set_defaults(run=run)

@@ -6,6 +6,8 @@ import argparse
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from lagrade.cli.arguments import count, seconds
+
 if TYPE_CHECKING:
     from lagrade.grading.batch import BatchSummary
 
@@ -79,10 +81,10 @@ def add_parser(commands: argparse._SubParsersAction) -> None:
     grade.add_argument("manifest", type=Path, metavar="DIR/manifest.json")
     grade.add_argument("submissions", type=Path, metavar="SUBMISSIONS")
     grade.add_argument("--out", type=Path, default=None, help="output folder (default DIR/grades)")
-    grade.add_argument("--jobs", type=int, default=1, help="submissions graded in parallel")
+    grade.add_argument("--jobs", type=count, default=1, help="submissions graded in parallel")
     grade.add_argument(
         "--part-time-limit",
-        type=float,
+        type=seconds,
         default=2.0,
         help="seconds allowed per answer part (default 2)",
     )

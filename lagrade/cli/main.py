@@ -7,7 +7,7 @@ Exit status, the same for every command (documented in `lagrade --help` and the 
   2    bad input or usage: a malformed file, request, option or scene id
   3    environment fault: the disk is full, a folder is read-only or not ours to write
   4    the output folder is in use by another lagrade run
-  130  interrupted (Ctrl-C or SIGTERM)
+  130  interrupted (Ctrl-C or SIGTERM); `serve` exits 0 when stopped, its normal end
 """
 
 from __future__ import annotations
@@ -16,6 +16,7 @@ import argparse
 import signal
 import sys
 from collections.abc import Callable, Sequence
+from typing import NoReturn
 
 from lagrade.errors import LagradeError, OutputBusy, OutputError
 
@@ -35,17 +36,27 @@ EPILOG = """examples:
 
 exit status: 0 success; 1 done, but an answer was not correct or students are missing or
 invalid; 2 bad input or usage; 3 environment fault (disk full, read-only folder); 4 the output
-folder is in use by another run; 130 interrupted.
+folder is in use by another run; 130 interrupted (serve: 0, stopping is its normal end).
 """
 
 
+class OneLineParser(argparse.ArgumentParser):
+    """argparse, with a usage error on one line as the README promises (`lagrade: error: …`),
+    naming the command's --help instead of printing its whole usage block."""
+
+    def error(self, message: str) -> NoReturn:
+        print(f"lagrade: error: {message} (see '{self.prog} --help')", file=sys.stderr)
+        sys.exit(EXIT_BAD_INPUT)
+
+
 def build_parser() -> argparse.ArgumentParser:
-    parser = argparse.ArgumentParser(
+    parser = OneLineParser(
         prog="lagrade",
         description="Generate and grade problem sets in Lagrangian mechanics.",
         epilog=EPILOG,
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
+    parser.add_argument("--version", action=_VersionAction, help="print lagrade's version and exit")
     commands = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
     # Each command module registers itself; imported here so that `import lagrade.cli.main`
     # stays cheap (the modules load what their command needs).
@@ -54,6 +65,24 @@ def build_parser() -> argparse.ArgumentParser:
     for command in (bank, parse, generate, check, grade, export, serve, demo):
         command.add_parser(commands)
     return parser
+
+
+class _VersionAction(argparse.Action):
+    """`--version`: the installed distribution's version (pyproject.toml's, read back from its
+    metadata only when asked, so building the command line stays cheap)."""
+
+    def __init__(self, option_strings: Sequence[str], dest: str, **kwargs: object) -> None:
+        super().__init__(option_strings, dest, nargs=0, default=argparse.SUPPRESS, **kwargs)
+
+    def __call__(self, parser: argparse.ArgumentParser, *_args: object) -> NoReturn:
+        from importlib.metadata import PackageNotFoundError, version
+
+        try:
+            number = version("lagrade")
+        except PackageNotFoundError:  # run from a source tree that was never installed
+            number = "(not installed)"
+        print(f"lagrade {number}")
+        parser.exit()
 
 
 def main(argv: Sequence[str] | None = None) -> int:

@@ -28,7 +28,9 @@ def preview_command(
     try:
         parsed = parse_answer(text, vocabulary, latex=latex)
     except ParseError as error:
-        return 1, str(error)
+        unknown = error.message.startswith("Unknown symbol")
+        flags = "\nDeclare every name with --coordinates or --parameters (e.g. --parameters m,g,R)."
+        return 1, str(error) + (flags if unknown else "")
     lines = [
         f"Interpreted as: {parsed.plain()}",
         f"LaTeX:          {parsed.latex()}",

@@ -5,9 +5,9 @@ from __future__ import annotations
 
 import argparse
 import socket
-import sys
 from pathlib import Path
 
+from lagrade.cli.arguments import count
 from lagrade.errors import OutputError, RequestError
 
 
@@ -21,8 +21,6 @@ def run(args: argparse.Namespace) -> int:
 
     if not 0 <= args.port <= 65535:
         raise RequestError(f"--port {args.port} is not a port number (0 to 65535)")
-    if args.jobs < 1:
-        raise RequestError("--jobs must be at least 1")
     manifest = load_manifest(args.manifest)
     secret_file = args.secret or args.manifest.parent / SECRET_NAME
     secret = load_or_create_secret(secret_file)
@@ -33,16 +31,6 @@ def run(args: argparse.Namespace) -> int:
     base_url = (args.base_url or f"http://{_url_host(host)}:{port}").rstrip("/")
     if args.links:
         atomic.write_text(args.links, links_csv(manifest["students"], secret, base_url))
-    students = len(manifest["students"])
-    print(f"Answer pages for {students} students of {room.assignment.title!r}")
-    print(f"  listening on http://{_url_host(host)}:{port}/  (links use {base_url}/s/<token>)")
-    print(f"  sheets are saved to {args.submissions}/<id>.toml (previous versions in .previous/)")
-    if args.links:
-        print(f"  each student's link: {args.links} (id,name,url)")
-    else:
-        print("  no --links file: give --links LINKS.csv to write every student's link")
-    print(f"  secret: {secret_file} (same secret, same links)")
-    print("Stop with Ctrl-C.", flush=True)
     config = uvicorn.Config(
         make_app(room),
         log_level="warning",
@@ -52,12 +40,32 @@ def run(args: argparse.Namespace) -> int:
     )
     server = uvicorn.Server(config)
     try:
+        _announce(args, room.assignment.title, len(manifest["students"]), listener, base_url)
+        print(f"  secret: {secret_file} (same secret, same links)")
+        print("Stop with Ctrl-C (or SIGTERM).", flush=True)
         server.run(sockets=[listener])
+    except KeyboardInterrupt:
+        # Ctrl-C or SIGTERM once the server is announced (uvicorn shuts down gracefully, then
+        # re-raises the signal): a server's normal end, exit 0 as supervisors expect
+        pass
     finally:
         room.close()
         listener.close()
-        print("Stopped: every save was written before the server stopped.", file=sys.stderr)
+    print("Stopped: every save was written before the server stopped.", flush=True)
     return 0
+
+
+def _announce(
+    args: argparse.Namespace, title: str, students: int, listener: socket.socket, base_url: str
+) -> None:
+    host, port = listener.getsockname()[:2]
+    print(f"Answer pages for {students} students of {title!r}")
+    print(f"  listening on http://{_url_host(host)}:{port}/  (links use {base_url}/s/<token>)")
+    print(f"  sheets are saved to {args.submissions}/<id>.toml (previous versions in .previous/)")
+    if args.links:
+        print(f"  each student's link: {args.links} (id,name,url)")
+    else:
+        print("  no --links file: give --links LINKS.csv to write every student's link")
 
 
 def _listen(host: str, port: int) -> socket.socket:
@@ -114,6 +122,6 @@ def add_parser(commands: argparse._SubParsersAction) -> None:
         "manifest; made when absent)",
     )
     serve.add_argument(
-        "--jobs", type=int, default=2, help="worker processes for previews and grading (2)"
+        "--jobs", type=count, default=2, help="worker processes for previews and grading (2)"
     )
     serve.set_defaults(run=run)

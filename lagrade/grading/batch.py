@@ -329,8 +329,7 @@ def grade(
     docstring for the guarantees."""
     manifest_path = Path(manifest_path)
     submissions = Path(submissions)
-    if not submissions.is_dir():
-        raise AssignmentError(f"submissions folder {submissions} does not exist")
+    _check_arguments(manifest_path, submissions)
     manifest = load_manifest(manifest_path)
     rubric = _rubric(manifest_path, manifest)
     if exports:  # a bad [lms] table or id stops the run before anything is graded
@@ -350,6 +349,27 @@ def grade(
             progress,
             exports,
             export_options,
+        )
+
+
+def _check_arguments(manifest_path: Path, submissions: Path) -> None:
+    """The two paths are what they should be, and the message says which is not (two swapped
+    arguments are not a folder that "does not exist")."""
+    swapped = manifest_path.is_dir() and submissions.is_file()
+    if swapped:
+        raise AssignmentError(
+            f"{manifest_path} is a folder and {submissions} a file: the manifest comes first "
+            f"(lagrade grade {submissions} {manifest_path})"
+        )
+    if not submissions.exists():
+        raise AssignmentError(f"submissions folder {submissions} does not exist")
+    if not submissions.is_dir():
+        raise AssignmentError(f"{submissions} is a file, not the folder of answer sheets")
+    if manifest_path.is_dir():
+        inside = manifest_path / "manifest.json"
+        raise AssignmentError(
+            f"{manifest_path} is a folder, not a manifest"
+            + (f"; did you mean {inside}?" if inside.is_file() else "")
         )
 
 

@@ -16,7 +16,7 @@ from pathlib import Path
 from typing import Any
 
 import lagrade.grading.atomic as atomic
-from lagrade.assign.templating import environment, md_code, md_escape
+from lagrade.assign.templating import environment, md_block, md_code, md_escape
 
 STUDENTS = "students"
 
@@ -242,11 +242,14 @@ def summary_markdown(manifest: Mapping[str, Any], summary: Mapping[str, Any]) ->
             lines.append(f"| {md_escape(p['key'])} | {p['answered']} | {p['correct']} | {rate} |")
         if problem["common_mistakes"]:
             lines += ["", "Most common named mistakes:", ""]
-            lines += [
-                f"- {m['count']} × {md_escape(m['part'])}, {md_code(m['mistake'])}, "
-                f'e.g. "{md_escape(m["feedback"])}"'
-                for m in problem["common_mistakes"]
-            ]
+            for m in problem["common_mistakes"]:
+                first, _, source = str(m["feedback"]).partition("\n")
+                lines.append(
+                    f"- {m['count']} × {md_escape(m['part'])}, {md_code(m['mistake'])}, "
+                    f'e.g. "{md_escape(first)}"'
+                )
+                if source.strip():  # the answer line and its caret, kept as lines in the item
+                    lines += ["", *("  " + ln for ln in md_block(source).splitlines()), ""]
         lines.append("")
     return "\n".join(lines)
 

@@ -1,7 +1,7 @@
 """How verdicts become points: the `[rubric]` table of the assignment file.
 
     [rubric]
-    partial_credit = true     # per-equation / per-momentum fractions count (false: all or nothing)
+    partial_credit = true     # per-equation / per-momentum / cyclic shares count (false: none)
     follow_through = 0.5      # share of a part's points when it follows correctly from the
                               # student's own wrong earlier answer (EOM from their own L)
     convention = 0.5          # share for the right dynamics in the wrong convention (L = V − T)

@@ -46,6 +46,11 @@ def decide(residual: Residual) -> Outcome:
         ratio = _ratio(r, s)
     per_point = ratio.reshape(ratio.shape[0], -1).max(axis=1) if ratio.ndim > 1 else ratio
     if not np.all(np.isfinite(per_point)):
+        # a counter-example where both sides are defined, when there is one: a point where
+        # one side is undefined is quoted only when the answers differ nowhere else
+        differ = np.flatnonzero(np.isfinite(per_point) & (per_point > DIFFERENT_ABOVE))
+        if differ.size:
+            return Outcome(False, "numeric", math.inf, int(differ[per_point[differ].argmax()]))
         where = int(np.flatnonzero(~np.isfinite(per_point))[0])
         return Outcome(False, "numeric", math.inf, where, "undefined")
     worst = float(per_point.max()) if per_point.size else 0.0

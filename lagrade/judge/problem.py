@@ -239,8 +239,20 @@ def problem_key(spec: Mapping[str, Any]) -> str:
     return json.dumps(spec, sort_keys=True, separators=(",", ":"))
 
 
-def build_problem(spec: Any) -> Problem:
-    """A Problem from a request's "problem" field; a RequestError says what is wrong with it."""
+#: How a request's reader names the ad-hoc problem's fields in an error: a JSON request's keys.
+#: The command line passes its flags instead (`lagrade.cli.check`), so that a message points to
+#: what its reader typed.
+JSON_FIELDS: Mapping[str, str] = {
+    "lagrangian": 'the problem\'s "lagrangian"',
+    "expression": 'the problem\'s "expression"',
+    "coordinates": '"coordinates", e.g. ["theta"]',
+    "parameters": '"parameters", e.g. {"m": "positive", "g": "positive"}',
+}
+
+
+def build_problem(spec: Any, fields: Mapping[str, str] = JSON_FIELDS) -> Problem:
+    """A Problem from a request's "problem" field; a RequestError says what is wrong with it,
+    naming the fields as `fields` spells them."""
     if not isinstance(spec, Mapping):
         raise RequestError('"problem" must be an object such as {"scene": "wedge", "seed": 3}')
     key = problem_key(spec)
@@ -252,7 +264,7 @@ def build_problem(spec: Any) -> Problem:
         )
     if kinds[0] == "scene":
         return _scene_problem(spec, key)
-    return _adhoc_problem(spec, key, kinds[0])
+    return _adhoc_problem(spec, key, kinds[0], fields)
 
 
 def _scene_problem(spec: Mapping[str, Any], key: str) -> Problem:
@@ -295,7 +307,9 @@ def _scene_problem(spec: Mapping[str, Any], key: str) -> Problem:
     )
 
 
-def _adhoc_problem(spec: Mapping[str, Any], key: str, kind: str) -> Problem:
+def _adhoc_problem(
+    spec: Mapping[str, Any], key: str, kind: str, fields: Mapping[str, str]
+) -> Problem:
     _only(
         spec,
         {kind, "coordinates", "parameters"}
@@ -309,9 +323,9 @@ def _adhoc_problem(spec: Mapping[str, Any], key: str, kind: str) -> Problem:
         )
     text = spec[kind]
     if not isinstance(text, str) or not text.strip():
-        raise RequestError(f'"{kind}" must be a non-empty string')
+        raise RequestError(f"{fields[kind]} must not be empty")
     coords, coordinate_domains = _coordinates(
-        spec.get("coordinates", []), required=kind == "lagrangian"
+        spec.get("coordinates", []), required=kind == "lagrangian", fields=fields
     )
     raw_params = spec.get("parameters", {})
     if not isinstance(raw_params, Mapping):
@@ -351,7 +365,11 @@ def _adhoc_problem(spec: Mapping[str, Any], key: str, kind: str) -> Problem:
     try:
         parsed = parser().parse_expression(text, problem.vocabulary())
     except ParseError as error:
-        raise RequestError(f'the problem\'s "{kind}" does not parse: {error}') from None
+        unknown = error.message.startswith("Unknown symbol")
+        raise RequestError(
+            f"{fields[kind]} does not parse: {error}"
+            + (f"\nDeclare every parameter in {fields['parameters']}." if unknown else "")
+        ) from None
     expr = problem.canonical(parsed.expr)
     if kind == "lagrangian":
         if any(expr.has(j.ddot) for j in jets):
@@ -366,7 +384,9 @@ def _adhoc_problem(spec: Mapping[str, Any], key: str, kind: str) -> Problem:
 IMAGINARY_UNITS = ("I", "i", "j")
 
 
-def _coordinates(raw: Any, required: bool) -> tuple[list[str], dict[str, tuple[float, float]]]:
+def _coordinates(
+    raw: Any, required: bool, fields: Mapping[str, str]
+) -> tuple[list[str], dict[str, tuple[float, float]]]:
     """Coordinate names, given as a list or as {name: domain} (where to sample them)."""
     ranges: dict[str, tuple[float, float]] = {}
     if isinstance(raw, Mapping):
@@ -382,7 +402,7 @@ def _coordinates(raw: Any, required: bool) -> tuple[list[str], dict[str, tuple[f
     else:
         raise RequestError('"coordinates" must be a list of names such as ["theta"]')
     if required and not names:
-        raise RequestError('an ad-hoc Lagrangian needs "coordinates", e.g. ["theta"]')
+        raise RequestError(f"an ad-hoc Lagrangian needs {fields['coordinates']}")
     for name in names:
         if not isinstance(name, str) or not _NAME.match(name):
             raise RequestError(f"coordinate name {_shown(name)} is not a plain name {_NAME_RULE}")

@@ -125,13 +125,21 @@ class Parser(NameRules):
 
     def note_division(self, term_start: int, divisor: Node, following: Node) -> None:
         """`k/m (x - x0)`, as textbooks print it: read left to right, as mainstream computer
-        algebra reads it (the implicit product binds like '*'), and said in a warning, so that
-        the student sees the reading instead of losing the answer to an ambiguity."""
+        algebra reads it (the implicit product binds like '*'). A warning says so only where
+        the other reading, a/(b c), is plausible: where c is written against the divisor
+        (`g/2l`, `k/m(x - x0)`), as if under the bar with it — but not a bracket after a
+        number (`m/2(…)` is m/2 times the bracket). A space (`m/2 (ṙ² + r²θ̇²)`, `k/m x`)
+        sets the factor apart: no warning on what is read as written (the echo shows it)."""
+        if following.start > divisor.end:
+            return
+        number = divisor.value if divisor.kind == "inv" else divisor
+        if number.kind == "num" and self.text[following.start] == "(":  # type: ignore[union-attr]
+            return
         left = self.text[term_start : divisor.start].rstrip().rstrip("/").rstrip()
         under = self.text[divisor.start : divisor.end]
         after = self.text[following.start : following.end]
         self.warn(
-            f"{left}/{under} {after} is read as ({left}/{under})*{after}; if {after} belongs "
+            f"{left}/{under}{after} is read as ({left}/{under})*{after}; if {after} belongs "
             f"under the fraction bar, write {left}/({under}*{after})."
         )
 

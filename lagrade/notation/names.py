@@ -115,8 +115,16 @@ class NameRules(TokenStream):
         hint = None
         if name == "e":
             hint = "e is not Euler's number here; write exp(x) for the exponential."
-        elif name in ("I", "E"):
-            hint = f"{name} means something only when the question declares it."
+        elif name == "E":
+            hint = (
+                "E is not one of this question's names: write the energy out in the names "
+                "above (and e^x as exp(x))."
+            )
+        elif name == "I":
+            hint = (
+                "I is not one of this question's names: write a moment of inertia out in the "
+                "names above (no imaginary unit is used here)."
+            )
         self.fail(
             f"Unknown symbol '{name}'. Allowed: {self.lexicon.allowed}.", tok.start, tok.end, hint
         )

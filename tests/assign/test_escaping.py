@@ -5,7 +5,16 @@ from __future__ import annotations
 import tomllib
 from pathlib import Path
 
-from lagrade.assign.templating import md_escape, tex_escape, toml_string
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from lagrade.assign.templating import (
+    md_escape,
+    tex_escape,
+    toml_literal,
+    toml_string,
+    toml_wrapped,
+)
 from lagrade.assign.units import Number
 
 from .conftest import write_roster
@@ -70,3 +79,23 @@ def test_handout_values_are_typeset_not_e_notation():
     small = Number(6.674e-11)
     assert small.text == "6.674×10⁻¹¹" and "<sup>−11</sup>" in str(small.html)
     assert Number(9.81).tex == Number(9.81).text == "9.81"
+
+
+@settings(max_examples=300, deadline=None)
+@given(
+    st.lists(
+        st.text(st.characters(codec="utf-8", exclude_categories=("Cs", "Cc")), max_size=300),
+        min_size=1,
+        max_size=4,
+    ),
+    st.integers(min_value=20, max_value=100),
+)
+def test_a_wrapped_sheet_reads_back_the_same(values, width):
+    """The PDF key's sheet (`tomlwrap`): long strings written with TOML's line continuations
+    read back exactly, whatever they hold (quotes, backslashes, spaces at a cut)."""
+    sheet = "[problem1]\n" + "\n".join(
+        f"{key} = {toml_literal(value, multiline=True)}"
+        for key, value in zip(("a", "b", "c", "d"), values, strict=False)
+    )
+    wrapped = toml_wrapped(sheet, width)
+    assert tomllib.loads(wrapped) == tomllib.loads(sheet)

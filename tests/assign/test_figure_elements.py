@@ -252,3 +252,90 @@ def test_at_most_one_pivot(variant: SceneVariant, composed) -> None:
         and a.get_xydata()[0][1] == a.get_xydata()[1][1]
     ]
     assert len(pivots) <= 1, [tuple(p.get_xydata()[0]) for p in pivots]
+
+
+def _ink(figure, renderer) -> list[tuple[str, np.ndarray]]:
+    """Every line, outline and arrow of the figure as (what, polyline in pixels): measured here
+    from the artists themselves (not the layout's own list)."""
+    from matplotlib.lines import Line2D
+    from matplotlib.patches import Patch
+
+    out = []
+    for e in figure.elements:
+        for a in e.artists:
+            arrow = getattr(a, "arrow_patch", None)
+            if arrow is not None:
+                a.update_positions(renderer)
+                path = arrow.get_transform().transform_path(arrow.get_path())
+                out += [
+                    (f"{e.kind} {e.name} arrow", p) for p in path.to_polygons(closed_only=False)
+                ]
+            elif isinstance(a, Line2D):
+                out.append((f"{e.kind} {e.name} line", a.get_transform().transform(a.get_xydata())))
+            elif isinstance(a, Patch):
+                path = a.get_transform().transform_path(a.get_path())
+                out += [
+                    (f"{e.kind} {e.name} outline", p) for p in path.to_polygons(closed_only=False)
+                ]
+    return out
+
+
+def _through(box, polyline: np.ndarray) -> bool:
+    """Whether the polyline enters the box: a vertex inside, or a piece crossing an edge."""
+    pts = np.asarray(polyline, dtype=float)
+    pts = pts[np.all(np.isfinite(pts), axis=1)]
+    x0, y0, x1, y1 = box.x0, box.y0, box.x1, box.y1
+    if np.any((pts[:, 0] > x0) & (pts[:, 0] < x1) & (pts[:, 1] > y0) & (pts[:, 1] < y1)):
+        return True
+    corners = [np.array(c) for c in ((x0, y0), (x1, y0), (x1, y1), (x0, y1))]
+    edges = list(zip(corners, corners[1:] + corners[:1], strict=True))
+    return any(_cross(p, q, r, s) for p, q in zip(pts[:-1], pts[1:], strict=True) for r, s in edges)
+
+
+@pytest.mark.parametrize("variant", CASES)
+def test_no_label_sits_on_a_line_or_an_arrow(variant: SceneVariant, composed) -> None:
+    """A label is clear of every drawn line, outline and arrow: not a bead's m on the hoop's
+    circle, not x_M struck through by its own dimension line, not M on an arrow's end."""
+    figure = composed(variant)
+    renderer = figure.figure.canvas.get_renderer()
+    ink = _ink(figure, renderer)
+    struck = [
+        (t.get_text(), what)
+        for t in labels(figure.axes)
+        for what, line in ink
+        if _through(t.get_window_extent(renderer), line)
+    ]
+    assert struck == []
+
+
+@pytest.mark.parametrize("variant", presentations("wheel"), ids=lambda v: v.coordinates[0])
+def test_a_turning_bodys_angle_is_measured_from_a_drawn_reference(variant, composed) -> None:
+    """The wheel's angle: an arc from a dashed reference ray through the wheel's centre to its
+    mark, not an arc measured from nothing."""
+    from matplotlib.lines import Line2D
+
+    figure = composed(variant)
+    (mark,) = [e for e in figure.elements if e.kind == "mark" and e.name in variant.coordinates]
+    centre = np.asarray([float(c) for c in variant.bodies[0].position[:2]])
+    dashed = [
+        a
+        for a in mark.artists
+        if isinstance(a, Line2D) and a.get_linestyle() != "-" and _straight(a)
+    ]
+    assert any(np.allclose(a.get_xydata()[0], centre, atol=1e-9) for a in dashed), [
+        a.get_xydata()[0] for a in dashed
+    ]
+
+
+@pytest.mark.parametrize(
+    "variant", presentations("charged_particle"), ids=lambda v: v.options["gauge"]
+)
+def test_a_magnetic_field_is_drawn_along_its_direction(variant, composed) -> None:
+    """B along z: an arrow pointing up the page (z is drawn up), labelled B, in every gauge."""
+    figure = composed(variant)
+    (field,) = [e for e in figure.elements if e.kind == "field"]
+    arrows = [a for a in field.artists if getattr(a, "arrow_patch", None) is not None]
+    texts = [a.get_text() for a in field.artists if hasattr(a, "get_text") and a.get_text()]
+    assert texts == ["$B$"] and len(arrows) == 1
+    (x0, y0), (x1, y1) = np.asarray(arrows[0].xyann), np.asarray(arrows[0].xy)
+    assert y1 - y0 > 0 and abs(x1 - x0) < 1e-9 * abs(y1 - y0) + 1e-12

@@ -14,7 +14,7 @@ from pathlib import Path
 
 import pytest
 
-from lagrade.cli.main import EXIT_BAD_INPUT, EXIT_INTERRUPTED, build_parser, main
+from lagrade.cli.main import EXIT_BAD_INPUT, build_parser, main
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -66,8 +66,8 @@ def _readme_examples() -> list[str]:
         command = re.sub(r"\s*\[[^\]]*\]", "", template.replace("\\|", "|"))
         words = [PLACEHOLDERS.get(w, w) for w in shlex.split(command, posix=False)]
         found.append(" ".join(words))
-    block = re.search(r"```sh\n(.*?)```", readme, flags=re.S)
-    found += [ln for ln in block.group(1).splitlines() if ln.startswith("lagrade ")]
+    for block in re.findall(r"```sh\n(.*?)```", readme, flags=re.S):  # quick start, round trip
+        found += [ln for ln in block.splitlines() if ln.startswith("lagrade ")]
     return found
 
 
@@ -151,8 +151,8 @@ def _serve_until_listening(argv: list[str], workdir: Path) -> None:
     finally:
         process.send_signal(signal.SIGTERM)
         rest = process.communicate(timeout=30)[0]
-    assert process.returncode == EXIT_INTERRUPTED, rest
-    assert "Traceback" not in rest, rest
+    assert process.returncode == 0, rest  # stopping is a server's normal end
+    assert "Traceback" not in rest and "interrupted" not in rest, rest
 
 
 def _generate_example() -> str:

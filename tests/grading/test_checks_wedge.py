@@ -172,9 +172,10 @@ def test_momentum_of_the_wrong_coordinate_is_named():
 def test_cyclic():
     assert judge(WEDGE, "cyclic", ["x_M"]).status == "correct"
     v = judge(WEDGE, "cyclic", "none")
-    assert v.score == 0.5 and v.mistakes == ("missed_cyclic",)
+    assert v.score == 0 and v.mistakes == ("missed_cyclic",)  # a blind guess earns nothing
     v = judge(WEDGE, "cyclic", ["x_M", "q"])
     assert v.mistakes == ("not_cyclic",) and "g*m*q*sin(alpha)" in v.feedback[0]
+    assert v.score == 0
 
 
 def test_conserved_momentum_and_energy():
@@ -279,5 +280,5 @@ def test_seeded_variant_uses_its_names_and_wants_symbols():
     )
     v = judge({"scene": "wedge", "seed": 3}, "lagrangian", L + " + m 9.81 q sin(alpha)")
     assert v.status == "incorrect"
-    assert any("Write g as a symbol" in f for f in v.feedback), v.feedback
+    assert any("handout's value for g;" in f for f in v.feedback), v.feedback
     assert judge({"scene": "wedge", "seed": 3}, "lagrangian", "x_M_dot^2").status == "invalid"

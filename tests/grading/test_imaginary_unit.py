@@ -68,7 +68,7 @@ def test_other_spellings_and_only_where_declared():
     assert check(declared, "expression", "cos(x) + i sin(x)", time_limit=None).status == "correct"
     plain = {"expression": "x", "parameters": {"x": "real"}}
     verdict = check(plain, "expression", "x + 0*I", time_limit=None)
-    assert verdict.status == "invalid" and "declares it" in verdict.feedback[0]
+    assert verdict.status == "invalid" and "no imaginary unit is used here" in verdict.feedback[0]
 
 
 @pytest.mark.parametrize(

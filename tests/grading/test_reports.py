@@ -3,7 +3,12 @@ person, a chart without half students; feedback pages that keep a caret under it
 
 from __future__ import annotations
 
+import html
+import json
 import re
+import shutil
+import subprocess
+from pathlib import Path
 
 import pytest
 
@@ -97,3 +102,69 @@ def test_markdown_feedback_keeps_the_caret_in_a_code_block(tmp_path):
     source, caret = block.group(1).split("\n")
     assert caret.strip() == "^" and source[len(caret) - 1] == "("
     assert "| Missing ')'" in md  # the table keeps the message, not the collapsed caret
+
+
+LONG_UNREADABLE = (
+    "1/2 m R^2 theta_dot^2 + 1/2 m R^2 omega^2 sin(theta)^2 + m g R cos(theta) + m g R cos(theta)"
+    " + 1/2 m R^2 )theta_dot^2 + omega^2 sin(theta)^2 + m g R cos(theta) + m g R cos(theta)"
+)
+
+
+def _chromium_measure(page: Path, width: int) -> dict:
+    """Open `page` in headless Chromium at `width` pixels and return what a script measured
+    there: the page column's right edge and each table's."""
+    chromium = shutil.which("chromium") or shutil.which("chromium-browser")
+    if chromium is None:
+        pytest.skip("chromium is not installed (.ci/run installs it)")
+    probe = page.with_name("probe.html")
+    script = (
+        "<script>window.addEventListener('load', () => { const column = document.body"
+        ".getBoundingClientRect().right - parseFloat(getComputedStyle(document.body)"
+        ".paddingRight); const tables = [...document.querySelectorAll('table')].map(t => "
+        "t.getBoundingClientRect().right); document.body.setAttribute('data-measured', "
+        "JSON.stringify({column, tables})); });</script>"
+    )
+    probe.write_text(page.read_text().replace("</body>", script + "</body>"))
+    dom = subprocess.run(
+        [chromium, "--headless", "--no-sandbox", "--disable-gpu", "--dump-dom",
+         f"--window-size={width},900", probe.as_uri()],
+        capture_output=True, text=True, timeout=120,
+    ).stdout  # fmt: skip
+    found = re.search(r"data-measured=\"([^\"]*)\"", dom)
+    assert found, dom[-2000:]
+    return json.loads(html.unescape(found.group(1)))
+
+
+@pytest.mark.parametrize("width", [1000, 700])
+def test_a_caret_block_stays_inside_the_page_column(tmp_path, width):
+    verdict = check({"scene": "hoop"}, "lagrangian", LONG_UNREADABLE)
+    assert len(verdict.feedback[0].split("\n")[1]) > 70  # a whole window of the answer line
+    parts = [_part("lagrangian", verdict.status, (), verdict.feedback), _part("T", "correct")]
+    report.write_student_outputs(tmp_path, MANIFEST, _result("s001", 0.0, parts))
+    measured = _chromium_measure(tmp_path / "feedback" / "s001.html", width)
+    assert measured["tables"] and all(
+        right <= measured["column"] + 1 for right in measured["tables"]
+    ), measured
+
+
+def test_summary_keeps_a_caret_block_as_lines():
+    from markdown_it import MarkdownIt
+
+    verdict = check({"scene": "hoop"}, "lagrangian", "1/2 m R^2 theta_dot^2 + m g R cos(theta")
+    feedback = verdict.feedback
+    results = [
+        _result(s, 0.0, [_part("lagrangian", "invalid", ("unreadable",), feedback)]) for s in "ab"
+    ]
+    manifest = {
+        **MANIFEST,
+        "problems": [{**MANIFEST["problems"][0], "parts": [{"key": "lagrangian"}]}],
+    }
+    text = report.summary_markdown(manifest, report.class_summary(manifest, results))
+    tokens = MarkdownIt("commonmark").parse(text)
+    blocks = [t.content for t in tokens if t.type in ("fence", "code_block")]
+    source, caret = feedback[0].split("\n")[1:]
+    assert blocks == [f"{source}\n{caret}\n"], text  # both lines, as written, under each other
+    item = next(i for i, t in enumerate(tokens) if t.type == "list_item_open")
+    closing = next(i for i, t in enumerate(tokens) if t.type == "list_item_close" and i > item)
+    fence = next(i for i, t in enumerate(tokens) if t.type in ("fence", "code_block"))
+    assert item < fence < closing  # inside the list item it illustrates

@@ -242,7 +242,11 @@ def test_hints_for_e_and_constants() -> None:
     assert caught.value.hint == "e is not Euler's number here; write exp(x) for the exponential."
     with pytest.raises(ParseError) as caught:
         parse_answer("I", VOCAB)
-    assert caught.value.hint == "I means something only when the question declares it."
+    assert caught.value.hint.startswith("I is not one of this question's names")
+    assert "declares" not in caught.value.hint  # words a student knows (issue 30)
+    with pytest.raises(ParseError) as caught:
+        parse_answer("1/2 m x_dot^2 = E", VOCAB)
+    assert caught.value.hint.startswith("E is not one of this question's names: write the energy")
 
 
 def test_str_shows_message_line_and_caret() -> None:

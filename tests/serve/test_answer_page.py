@@ -193,7 +193,7 @@ def test_feedback_on_save_with_a_limit_of_attempts(tmp_path):
         assert status == 200 and reply["feedback"] is None and reply["attempts_left"] == 0
         assert "dof = '2'" in (server.sheets / "s001.toml").read_text()  # saved all the same
     finally:
-        assert stop_server(server) in (0, 130)
+        assert stop_server(server) == 0
 
 
 @pytest.mark.parametrize("how", [signal.SIGTERM, signal.SIGINT], ids=["sigterm", "ctrl-c"])
@@ -204,9 +204,10 @@ def test_a_signal_stops_the_server_cleanly(tmp_path, how):
     server.process.send_signal(how)
     status = server.process.wait(timeout=30)
     assert time.monotonic() - start < 15
-    assert status == 130  # documented: interrupted (Ctrl-C or SIGTERM)
+    assert status == 0  # documented: stopping is a server's normal end, not an interruption
     output = server.output.read_text()
     assert "Stopped" in output and "Traceback" not in output
+    assert "interrupted" not in output and "error" not in output, output
     port = int(server.base.rsplit(":", 1)[1])
     with socket.socket() as sock:  # the port is free again
         sock.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)

@@ -1,7 +1,7 @@
 """The last step of a figure, done on the rendered artists rather than guessed from scene units:
-move each label off the labels and bodies before it, then widen the limits until every artist
-is inside the frame, and repeat until nothing moves (a label is 12 pt whatever the scene's size,
-so only the renderer knows where it ends)."""
+move each label off the labels, bodies, lines and arrows around it, then widen the limits until
+every artist is inside the frame, and repeat until nothing moves (a label is 12 pt whatever the
+scene's size, so only the renderer knows where it ends)."""
 
 from __future__ import annotations
 
@@ -36,25 +36,70 @@ def drawn(ax: Any) -> list[Any]:
     return [a for a in (*ax.lines, *ax.patches, *ax.texts, *ax.collections) if a.get_visible()]
 
 
-def _free(box: Any, taken: Iterable[Any], frame: Any) -> bool:
+def ink_segments(ax: Any, renderer: Any) -> np.ndarray:
+    """Every straight piece of ink that is not a label, as rows (x0, y0, x1, y1) in pixels:
+    lines, the outlines of patches (curves flattened) and the arrows of annotations."""
+    pieces = []
+    for artist in drawn(ax):
+        if hasattr(artist, "get_text"):
+            patch = getattr(artist, "arrow_patch", None)
+            if patch is None:
+                continue  # a label: kept apart by its box
+            artist.update_positions(renderer)
+            artist = patch
+        if hasattr(artist, "get_xydata"):  # Line2D
+            polylines = [artist.get_transform().transform(artist.get_xydata())]
+        elif hasattr(artist, "get_path"):  # a patch or an arrow
+            path = artist.get_transform().transform_path(artist.get_path())
+            polylines = path.to_polygons(closed_only=False)
+        else:
+            continue
+        for pts in polylines:
+            pts = np.asarray(pts, dtype=float)
+            if len(pts) >= 2:
+                pieces.append(np.hstack([pts[:-1], pts[1:]]))
+    rows = np.vstack(pieces) if pieces else np.zeros((0, 4))
+    return rows[np.all(np.isfinite(rows), axis=1)]
+
+
+def crosses(box: Any, segments: np.ndarray) -> bool:
+    """Whether any segment (rows x0, y0, x1, y1) passes through `box` (Liang–Barsky clipping)."""
+    if not len(segments):
+        return False
+    start, step = segments[:, :2], segments[:, 2:] - segments[:, :2]
+    t0, t1 = np.zeros(len(segments)), np.ones(len(segments))
+    for k, (lo, hi) in enumerate(((box.x0, box.x1), (box.y0, box.y1))):
+        p, d = start[:, k], step[:, k]
+        with np.errstate(divide="ignore", invalid="ignore"):
+            a, b = (lo - p) / d, (hi - p) / d
+        flat = d == 0
+        inside = (p >= lo) & (p <= hi)
+        t0 = np.maximum(t0, np.where(flat, np.where(inside, -np.inf, np.inf), np.minimum(a, b)))
+        t1 = np.minimum(t1, np.where(flat, np.where(inside, np.inf, -np.inf), np.maximum(a, b)))
+    return bool(np.any(t0 <= t1))
+
+
+def _free(box: Any, taken: Iterable[Any], frame: Any, ink: np.ndarray) -> bool:
     inside = box.x0 >= frame.x0 and box.y0 >= frame.y0 and box.x1 <= frame.x1 and box.y1 <= frame.y1
-    return inside and not any(box.overlaps(t) for t in taken)
+    return inside and not any(box.overlaps(t) for t in taken) and not crosses(box, ink)
 
 
 def _declutter(ax: Any, renderer: Any, obstacles: Sequence[Any]) -> bool:
-    """Move each label, in drawing order, to the nearest free place; True when one moved."""
+    """Move each label, in drawing order, to the nearest place clear of the labels before it,
+    the bodies and every drawn line and arrow; True when one moved."""
     frame = ax.get_window_extent(renderer)
     taken = [o.get_window_extent(renderer).padded(_GAP) for o in obstacles]
+    ink = ink_segments(ax, renderer)
     moved = False
     for text in labels(ax):
         box = text.get_window_extent(renderer).padded(_GAP)
-        if not _free(box, taken, frame):
+        if not _free(box, taken, frame, ink):
             for ring in _RINGS:
                 shift = next(
                     (
                         (ring * dx, ring * dy)
                         for dx, dy in _DIRECTIONS
-                        if _free(box.translated(ring * dx, ring * dy), taken, frame)
+                        if _free(box.translated(ring * dx, ring * dy), taken, frame, ink)
                     ),
                     None,
                 )

@@ -27,6 +27,7 @@ from lagrade.assign.figures.primitives import (
     arc_arrow,
     arrow_along,
     dimension,
+    field_arrow,
     gravity_arrow,
     incline_angle,
     pivot,
@@ -190,8 +191,37 @@ def _plan_dimensions_and_bodies(d: Drawing, ns: SimpleNamespace, centre_of: np.n
         d.add("body", b.name, lambda ax, u, i=i, b=b: body_disc(ax, u, g, i, b))
     if any(s.name == "g" for s in g.variant.potential_energy.free_symbols):
         d.add("gravity", "g", lambda ax, u: gravity_arrow(ax, u, d.points))
+    _plan_field(d)
     if g.three_d:
         d.add("axes", "xyz", lambda ax, u: axes3d(ax, u, g))
+
+
+def _plan_field(d: Drawing) -> None:
+    """A magnetic field (a parameter in tesla) shown as an arrow along it: its direction is
+    curl A, with the vector potential A read off the velocity-dependent potential of the one
+    body that the coordinates place in space, U = −e v·A (so A ∝ −J⁻ᵀ ∂U/∂q̇, J = ∂r/∂q)."""
+    g = d.g
+    fields = g.parameters_with_unit("T")
+    if not fields or len(g.bodies) != 1 or len(g.jets) != 3:
+        return
+    position = sp.Matrix([as_expr(c) for c in g.bodies[0].position])
+    q = [j.q for j in g.jets]
+    U = g.variant.potential_energy
+    J = position.jacobian(q)
+    if position.shape != (3, 1) or g.identically_zero(J.det()):
+        return
+    A = -(J.T).inv() * sp.Matrix([sp.diff(U, j.dot) for j in g.jets])
+    D = A.jacobian(q) * J.inv()  # ∂A_i/∂x_k
+    curl = [D[2, 1] - D[1, 2], D[0, 2] - D[2, 0], D[1, 0] - D[0, 1]]
+    B = np.array([g.number(c) for c in curl])
+    if not np.all(np.isfinite(B)) or np.hypot.reduce(B) == 0:
+        return
+    on_page = np.array([g.number(c) for c in g.project(tuple(B / np.hypot.reduce(B)))])
+    if np.hypot(*on_page) < 0.3:  # along the line of sight: an arrow would be a dot
+        return
+    on_page = on_page / np.hypot(*on_page)
+    label = f"${name_latex(fields[0].name)}$"
+    d.add("field", fields[0].name, lambda ax, u: field_arrow(ax, u, d.points, on_page, label))
 
 
 def _plan_angle(d: Drawing, body: int, j: mech.Jet, label: str, canonical: str) -> None:
@@ -329,20 +359,38 @@ def _plan_length(
 
 
 def _plan_rotation(d: Drawing, j: mech.Jet, label: str) -> None:
-    """A coordinate that only turns a rigid body: a curved arrow around that body."""
+    """A coordinate that only turns a rigid body: the angle of its mark from where the mark
+    is at zero, which a dashed reference line shows, with an arc between them (an arc alone
+    measures from nothing)."""
     g = d.g
     for i, b in enumerate(g.bodies):
         if isinstance(b, RigidBody) and as_expr(b.angle).has(j.q):
+            start = g.number(as_expr(b.angle).subs(j.q, 0))
+            end = g.number(b.angle)
 
-            def draw(ax: Any, unit: float, i: int = i) -> None:
+            def draw(
+                ax: Any, unit: float, i: int = i, start: float = start, end: float = end
+            ) -> None:
                 centre = g.at(i)[0]
-                r = 1.5 * body_radius(g, i, unit)
-                angles = np.linspace(0.3, 0.3 + g.pose[j.q] + 0.8, 40)
-                pts = centre + r * np.column_stack([np.cos(angles), np.sin(angles)])
+                r = body_radius(g, i, unit)
+                # the reference ray and the mark, both carried past the rim, the arc outside
+                for angle, colour in ((start, GREY), (end, INK)):
+                    ray = np.array([math.cos(angle), math.sin(angle)])
+                    inner = centre if colour == GREY else centre + r * ray
+                    ax.plot(
+                        *np.array([inner, centre + 1.6 * r * ray]).T,
+                        color=colour,
+                        linewidth=0.8,
+                        linestyle=(0, (4, 3)),
+                        zorder=5,
+                    )
+                angles = np.linspace(start, end, 40)
+                pts = centre + 1.4 * r * np.column_stack([np.cos(angles), np.sin(angles)])
                 arc_arrow(ax, pts, label)
+                middle = (start + end) / 2
                 put_text(
                     ax,
-                    centre + 1.3 * r * np.array([math.cos(0.2), math.sin(0.2)]),
+                    centre + 1.75 * r * np.array([math.cos(middle), math.sin(middle)]),
                     label,
                     color=ACCENT,
                 )

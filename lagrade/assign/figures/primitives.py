@@ -149,6 +149,25 @@ def time_mark(
         ax.plot(*ends.T, color=GREY, linewidth=0.8, linestyle=(0, (8, 3, 2, 3)), zorder=1)
 
 
+def field_arrow(
+    ax: Any, unit: float, points: list[np.ndarray], direction: np.ndarray, label: str
+) -> None:
+    """A uniform field beside the figure, on its left: an arrow along its direction on the
+    page (a unit vector there), labelled with its name."""
+    allpts = np.vstack(points)
+    base = np.array([allpts[:, 0].min() - 0.2 * unit, allpts[:, 1].mean()])
+    tip = base + 0.25 * unit * direction
+    ax.annotate(
+        "",
+        xy=tip,
+        xytext=base,
+        arrowprops=dict(
+            arrowstyle="-|>", color=INK, linewidth=1.2, shrinkA=0, shrinkB=0, mutation_scale=10
+        ),
+    )
+    put_text(ax, (base + tip) / 2 + np.array([-0.08 * unit, 0.0]), label)
+
+
 def gravity_arrow(ax: Any, unit: float, points: list[np.ndarray]) -> None:
     allpts = np.vstack(points)
     top = np.array([allpts[:, 0].max() + 0.12 * unit, allpts[:, 1].max()])

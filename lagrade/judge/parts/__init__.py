@@ -89,7 +89,10 @@ def run_checker(problem: Problem, part: str, answer: Any, given: Mapping | None 
 
 
 def with_notes(verdict: Verdict, notes: list[str]) -> Verdict:
-    """The verdict with the parser's notes on how the answer was read, after its feedback."""
+    """The verdict with the parser's notes on how the answer was read, after its feedback; not
+    on a correct answer, whose reading was the right one (there a note is only noise)."""
+    if verdict.status == "correct":
+        return verdict
     new = [n for n in notes if n not in verdict.feedback]
     return replace(verdict, feedback=(*verdict.feedback, *new)) if new else verdict
 

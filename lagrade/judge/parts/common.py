@@ -23,28 +23,77 @@ from lagrade.judge.sampling import Points
 from lagrade.judge.situation import angles, rounded, situation, symbol_text
 from lagrade.judge.verdict import Verdict
 
-_DECIMAL = re.compile(r"(?<![\w.])\d*\.\d+(?:[eE][-+]?\d+)?")
+#: A number as typed: 9.81, 8, 6.674e-11 (not the digits of a name such as m_1).
+_NUMBER = re.compile(r"(?<![\w.])\d+(?:\.\d+)?(?:[eE][-+]?\d+)?(?![\w.])")
+#: How close a value reads as "the handout's": a typed value is rounded (alpha = 0.5236 rad).
+_AS_TYPED = 1e-3
 
 
-def handout_numbers(problem: Problem, got: Read) -> str:
-    """A hint for a wrong symbolic answer that writes a handout value as a decimal (9.81 for
-    g) and leaves that parameter out: the sentence saying so, or nothing. Never a pin."""
-    if not problem.values:
-        return ""
-    echo = got.echo if isinstance(got.echo, str) else " ".join(map(str, got.echo))
-    typed = [float(n) for n in _DECIMAL.findall(echo)]
+def handout_numbers(problem: Problem, got: Read, reference: Compiled | None = None) -> str:
+    """The one rule for handout values put into a wrong symbolic answer: the parameters that
+    the reference uses, that have a handout value and that the answer leaves out, named all
+    when the answer is the reference with their values put in (up to a constant), else those
+    whose value (or its square: ω² = 64) the answer holds as a typed number. The sentence
+    saying so, or nothing."""
     syms = got.expr.free_symbols
-    names = sorted(
-        s.name
-        for s, value in problem.values.items()
-        if s not in syms and value and any(abs(n - abs(value)) <= 1e-3 * abs(value) for n in typed)
-    )
-    if not names:
+    used = reference.symbols if reference is not None else frozenset(problem.domains)
+    left_out = [s for s, value in problem.values.items() if s in used and s not in syms and value]
+    if not left_out:
         return ""
+    if reference is not None and _is_reference_with_values(problem, got, reference, left_out):
+        # those whose value mattered: not h of a dropped constant m g h, say
+        named = [
+            s
+            for s in left_out
+            if not _is_reference_with_values(problem, got, reference, left_out, keep=s)
+        ]
+    else:
+        echo = got.echo if isinstance(got.echo, str) else " ".join(map(str, got.echo))
+        typed = [n for n in _NUMBER.findall(echo) if "." in n or float(n) > 2]
+        named = [s for s in left_out if _typed_value(problem.values[s], typed)]
+    if not named:
+        return ""
+    names = [symbol_text(s.name) for s in sorted(named, key=lambda s: s.name)]
+    listed = names[0] if len(names) == 1 else ", ".join(names[:-1]) + " and " + names[-1]
+    them = "it" if len(names) == 1 else "them"
     return (
-        f"Write {', '.join(names)} as a symbol, not as its handout value: this part is judged "
-        "for every value of the parameters."
+        f"Your answer puts in the handout's value for {listed}; write {them} as "
+        f"{'a symbol' if len(names) == 1 else 'symbols'}: a symbolic answer must hold for "
+        "every value, not only the handout's."
     )
+
+
+def _typed_value(value: float, typed: list[str]) -> bool:
+    value = abs(float(value))
+    return any(abs(float(n) - v) <= _AS_TYPED * v for n in typed for v in (value, value * value))
+
+
+def _is_reference_with_values(
+    problem: Problem,
+    got: Read,
+    reference: Compiled,
+    left_out: list[sp.Symbol],
+    keep: sp.Symbol | None = None,
+) -> bool:
+    """The answer equals the reference with the handout values of `left_out` (but `keep`) put
+    in, up to a constant (the zero of V, a dropped constant of L), at the hint's own points."""
+    values = {s: sp.Float(problem.values[s]) for s in left_out if s != keep}
+    points = problem.points("handout values")
+    try:
+        answer = Compiled.of(got.expr)
+        plugged = Compiled.of(reference.expr.xreplace(values))
+        with np.errstate(all="ignore"):
+            a, sa = answer.values(points.env)
+            b, sb = plugged.values(points.env)
+    except (UnsupportedExpression, ValueError, ZeroDivisionError, OverflowError):
+        return False
+    d = np.broadcast_to(np.asarray(a - b, dtype=complex), (points.n,))
+    size = np.broadcast_to(np.abs(sa) + np.abs(sb), (points.n,))
+    ok = np.isfinite(d) & np.isfinite(size)
+    if ok.sum() < 3:
+        return False
+    first = d[np.searchsorted(points.group, points.group)]  # a constant per parameter draw
+    return bool(np.all(np.abs(d - first)[ok] <= _AS_TYPED * (size + np.abs(first))[ok]))
 
 
 def witness_point(
@@ -116,6 +165,9 @@ def values_text(
             theirs = np.ravel(reference.values(env)[0])[0]
     except UnsupportedExpression:  # a symbol without a value here: say nothing, never guess
         return ""
+    if not (np.isfinite(mine) and np.isfinite(theirs)):  # say which side is undefined there
+        side = f"your {what}" if not np.isfinite(mine) else f"the expected {what}"
+        return f", where {side} is undefined" if np.isfinite(mine) != np.isfinite(theirs) else ""
     if np.iscomplexobj(mine) or np.iscomplexobj(theirs):  # rounded reals only
         return ""
     pair = _shown_pair(float(mine), float(theirs))
@@ -223,12 +275,13 @@ def incorrect(
     method: str,
     problem: Problem | None = None,
     values: str = "",
+    reference: Compiled | None = None,
 ) -> Verdict:
     """A wrong single-expression answer: the named mistake (when the catalogue knows it),
     then what is wrong, with a point where it shows."""
     feedback = [as_sentence(mutant.message)] if mutant is not None else []
     feedback.append(sentence + where_text(witness, problem, values) + ".")
-    hint = handout_numbers(problem, got) if problem is not None else ""
+    hint = handout_numbers(problem, got, reference) if problem is not None else ""
     feedback += [hint] if hint else []
     mistakes = (mutant.kind,) if mutant is not None else ()
     return Verdict(

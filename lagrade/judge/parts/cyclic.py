@@ -90,10 +90,22 @@ def check_cyclic(problem: Problem, answer: Any, given: Mapping | None) -> Verdic
     return Verdict(
         "cyclic",
         "incorrect",
-        right / n * (0.5 if velocity_named else 1.0),
+        _informed_share(claimed, truth, {j.name for j in problem.jets})
+        * (0.5 if velocity_named else 1.0),
         tuple(feedback),
         echo,
         "exact",
         follows_from_own_answer=follows,
         mistakes=tuple(mistakes),
     )
+
+
+def _informed_share(claimed: set[str], truth: set[str], coordinates: set[str]) -> float:
+    """The share of a wrong set: the cyclic coordinates found minus the others named, each as
+    a fraction of its kind (TPR − FPR, never below 0). A set chosen without looking at L —
+    none, every coordinate, any blind guess — earns 0 on average; counting each coordinate
+    rightly left out (as a per-item score would) gave `none` half a two-coordinate part."""
+    others = coordinates - truth
+    found = len(claimed & truth) / len(truth) if truth else 0.0
+    wrong = len(claimed & others) / len(others) if others else 0.0
+    return max(0.0, found - wrong)

@@ -102,12 +102,20 @@ def judge_lagrangian(
         feedback.append(as_sentence(mutant.message))
         mistakes = (mutant.kind,)
     witness = witness_point(points, out, answer)
+    undefined = out.reason == "undefined" and _undefined_at(match.answer_el, out.where)
     feedback.append(
         "Your L does not give the equations of motion of this system"
-        + where_text(witness, problem)
+        + where_text(witness, problem, ", where your L is undefined" if undefined else "")
         + "."
     )
     return ("incorrect", 0.0, feedback, out, witness, mistakes)
+
+
+def _undefined_at(answer_el: tuple[np.ndarray, np.ndarray] | None, where: int | None) -> bool:
+    """Whether the answer's Euler–Lagrange values are not finite at point `where`."""
+    if answer_el is None or where is None:
+        return False
+    return not np.all(np.isfinite(np.asarray(answer_el[0])[where]))
 
 
 _CONSTANT_NOTE = (
@@ -165,7 +173,7 @@ def _same_dynamics_notes(problem: Problem, answer: Compiled, match, points: Poin
 def check_lagrangian(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
     got = read_single(problem, answer, "lagrangian", "L")
     status, score, feedback, out, witness, mistakes = judge_lagrangian(problem, got.expr)
-    hint = handout_numbers(problem, got) if status != "correct" else ""
+    hint = handout_numbers(problem, got, problem.L) if status != "correct" else ""
     feedback += [hint] if hint else []
     return Verdict(
         "lagrangian",
@@ -196,6 +204,7 @@ def check_kinetic(problem: Problem, answer: Any, given: Mapping | None) -> Verdi
         method_name(out),
         problem,
         values_text(problem, points, out, answer_c, problem.kinetic, "T", "J"),
+        reference=problem.kinetic,
     )
 
 
@@ -222,4 +231,5 @@ def check_potential(problem: Problem, answer: Any, given: Mapping | None) -> Ver
         witness_point(points, out, answer_c),
         method_name(out),
         problem,
+        reference=reference,
     )

@@ -242,4 +242,5 @@ def _check_one(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
         out.method if decided is not None else method_name(out),
         problem,
         values_text(problem, points, out, ans, ref, "answer", unit_text(problem.unit)),
+        reference=ref,
     )
