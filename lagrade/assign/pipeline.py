@@ -16,13 +16,14 @@ from typing import Any
 
 import jinja2
 
+import lagrade.untrusted as untrusted
 from lagrade.assign.assignment import Assignment, Part
 from lagrade.assign.manifest import manifest_json, student_manifest
 from lagrade.assign.pdf import PDFLATEX_HINT, compile_pdf
 from lagrade.assign.roster import Student
 from lagrade.assign.variants import VariantChoice, student_variants
 from lagrade.assign.views import figure_name, presentation, problem_view, symbolic_solution
-from lagrade.errors import AssignmentError
+from lagrade.errors import AssignmentError, UnreadableInput
 from lagrade.mechanics.scene import SceneVariant
 
 #: Progress callback: (steps done, steps in all, what is being done).
@@ -156,6 +157,10 @@ class Generator:
         manifest = manifest_json(
             self.assignment, self.assignment_path, self.seed, self.formats, students_manifest
         )
+        try:  # read back as `grade` reads it
+            untrusted.load_json(manifest, "the manifest")
+        except UnreadableInput as error:
+            raise AssignmentError(f"{error}; `lagrade grade` could not read it") from None
         self._write(tmp / "manifest.json", manifest)
 
     def _student_views(
@@ -190,9 +195,9 @@ class Generator:
             for key, template in sorted(templates.items()):
                 kind, _, fmt = key.partition(".")
                 if kind == "answer_sheet":
-                    self._write(
-                        tmp / "answer_sheets" / f"{student.id}.toml", template.render(context)
-                    )
+                    text = template.render(context)
+                    read_back_sheet(text, student, self.assignment)
+                    self._write(tmp / "answer_sheets" / f"{student.id}.toml", text)
                 else:
                     folder = "handouts" if kind == "handout" else "keys"
                     self._write(tmp / folder / f"{student.id}.{fmt}", template.render(context))
@@ -225,3 +230,21 @@ class Generator:
         tmp.rename(self.out)
         if old is not None:
             shutil.rmtree(old, ignore_errors=True)
+
+
+def read_back_sheet(text: str, student: Student, assignment: Assignment) -> None:
+    """Read a blank answer sheet back as `grade` reads it (the untrusted-input TOML rules): it
+    must parse and hold the student's id and name and every part's key, blank; otherwise
+    AssignmentError, before anything is written (a title or name that broke the TOML would
+    otherwise make every sheet of the class `invalid`)."""
+    what = f"the answer sheet of {student.id}"
+    try:
+        table = untrusted.load_toml(text, what)
+    except UnreadableInput as error:
+        raise AssignmentError(f"{error}; check the text that went into it") from None
+    expected: dict[str, Any] = {"student_id": student.id, "name": student.name}
+    for problem in assignment.problems:
+        expected[f"problem{problem.index}"] = {part.key: "" for part in problem.parts}
+    changed = [k for k, v in expected.items() if table.get(k) != v]
+    if changed:
+        raise AssignmentError(f"{what} does not read back as written ({', '.join(changed)})")
