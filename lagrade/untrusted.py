@@ -11,7 +11,8 @@ The rules, each in one place:
   ValueError; nesting however it is spelled (brackets, inline tables, TOML's table headers and
   dotted keys), on the text before parsing and on the parsed structure after;
 - names that become file names (student ids) use one documented safe alphabet;
-- text echoed back (a parser's reading, feedback) is clipped to a bounded size.
+- text echoed back (a parser's reading, feedback) is clipped to a bounded size;
+- text for a terminal, a log or a Markdown report shows its control characters as escapes.
 Each failure raises UnreadableInput with a sentence a person can act on; callers turn it into
 the record's `invalid` verdict or their own error.
 """
@@ -117,6 +118,24 @@ def load_toml(text: str, what: str = "the file") -> dict[str, Any]:
     _check_depth(value, what)
     _check_numbers(value, what)
     return value
+
+
+#: What a terminal or a viewer acts on instead of showing: C0 controls but tab and line break
+#: (a carriage return overwrites a line), DEL, C1 controls (ESC and CSI start the escape
+#: sequences that clear a screen or move the cursor), and the bidirectional overrides and
+#: isolates that show text in another order than it is stored (`exe.pdf` for `fdp.exe`).
+_INVISIBLE = re.compile("[\x00-\x08\x0b-\x1f\x7f-\x9f\u202a-\u202e\u2066-\u2069]")
+
+
+def visible(text: str) -> str:
+    """`text` for a terminal, a log or a Markdown report: every character in _INVISIBLE written
+    as its Python escape (`\\x1b`, `\\r`, `\\u202e`), so it is shown, never acted on; tabs
+    and line breaks stay."""
+    return _INVISIBLE.sub(_escape, text) if _INVISIBLE.search(text) else text
+
+
+def _escape(match: re.Match) -> str:
+    return repr(match.group())[1:-1]
 
 
 def encodable(text: str) -> str:

@@ -10,6 +10,7 @@ from typing import Any
 import jinja2
 
 from lagrade.errors import AssignmentError
+from lagrade.untrusted import visible
 
 _TEX_SPECIALS = {
     "\\": r"\textbackslash{}",
@@ -43,8 +44,8 @@ def tex_escape(value: Any) -> str:
 
 def md_escape(value: Any) -> str:
     """Text made inert in Markdown: punctuation backslash-escaped, so `<script>` is shown, not
-    run, by any CommonMark renderer."""
-    text = _MD_SPECIALS.sub(r"\\\1", str(value).replace("\n", " "))
+    run, by any CommonMark renderer; control characters shown as escapes (`visible`)."""
+    text = _MD_SPECIALS.sub(r"\\\1", visible(str(value).replace("\n", " ")))
     # a leading "- ", "+ " or "1." would start a list: escape its marker
     return _MD_LINE_START.sub(
         lambda m: (
@@ -57,8 +58,9 @@ def md_escape(value: Any) -> str:
 def md_code(value: Any) -> str:
     """A Markdown code span holding `value` verbatim: its fence is one backtick longer than the
     longest run of backticks inside, so no text can close it early (CommonMark's rule), and it
-    is padded with a space when the text starts or ends with a backtick."""
-    text = " ".join(str(value).split())
+    is padded with a space when the text starts or ends with a backtick. Control characters
+    are shown as escapes (`visible`): a code span shows them to a viewer, and `cat` runs them."""
+    text = visible(" ".join(str(value).split()))
     runs = re.findall(r"`+", text)
     fence = "`" * (max((len(r) for r in runs), default=0) + 1)
     pad = " " if text.startswith("`") or text.endswith("`") else ""
@@ -116,8 +118,9 @@ def one_line(value: Any) -> str:
 
 def md_block(value: Any) -> str:
     """A fenced Markdown code block holding `value` verbatim, lines and spacing kept (an
-    answer line with the caret under it): the fence is longer than any backtick run inside."""
-    text = str(value).rstrip("\n")
+    answer line with the caret under it): the fence is longer than any backtick run inside;
+    control characters are shown as escapes (`visible`)."""
+    text = visible(str(value).rstrip("\n"))
     runs = re.findall(r"`+", text)
     fence = "`" * max(3, max((len(r) for r in runs), default=0) + 1)
     return f"{fence}\n{text}\n{fence}"

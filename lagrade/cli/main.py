@@ -17,6 +17,7 @@ import signal
 import sys
 from collections.abc import Callable, Sequence
 
+from lagrade.cli.terminal import guarded
 from lagrade.errors import LagradeError, OutputBusy, OutputError
 
 EXIT_OK, EXIT_NOT_ALL_PASSED, EXIT_BAD_INPUT, EXIT_ENVIRONMENT, EXIT_BUSY = 0, 1, 2, 3, 4
@@ -59,6 +60,11 @@ def build_parser() -> argparse.ArgumentParser:
 def main(argv: Sequence[str] | None = None) -> int:
     """Entry point of the `lagrade` console script: every outcome is an exit status and, on
     failure, one line on stderr (never a traceback for anything a user can cause)."""
+    with guarded():  # control characters in anything printed are shown as escapes
+        return _main(argv)
+
+
+def _main(argv: Sequence[str] | None) -> int:
     try:
         args = build_parser().parse_args(argv)
         run: Callable[[argparse.Namespace], int] = args.run
