@@ -19,7 +19,7 @@ import jinja2
 import lagrade.untrusted as untrusted
 from lagrade.assign.assignment import Assignment, Part
 from lagrade.assign.manifest import manifest_json, student_manifest
-from lagrade.assign.pdf import PDFLATEX_HINT, compile_pdf
+from lagrade.assign.pdf import PDFLATEX_HINT, compile_pdf, engines
 from lagrade.assign.roster import Student
 from lagrade.assign.variants import VariantChoice, student_variants
 from lagrade.assign.views import figure_name, presentation, problem_view, symbolic_solution
@@ -40,6 +40,9 @@ class GenerateResult:
     students: int
     files: int
     warnings: list[str] = field(default_factory=list)
+    #: Files asked for but not made (a PDF LaTeX could not typeset), by student id and kind
+    #: (`handout_pdf`, `key_pdf`), with the reason; the manifest lists them as `unwritten`.
+    unwritten: dict[str, dict[str, str]] = field(default_factory=dict)
 
 
 class Generator:
@@ -62,6 +65,7 @@ class Generator:
         self.progress = progress or (lambda done, total, label: None)
         self.assignment_path = assignment_path
         self.warnings: list[str] = []
+        self.unwritten: dict[str, dict[str, str]] = {}
         self.files = 0
         self.views: dict[tuple[int, int], dict[str, Any]] = {}  # students sharing a variant
         self.figures_written: set[str] = set()
@@ -81,7 +85,7 @@ class Generator:
         except BaseException:
             shutil.rmtree(tmp, ignore_errors=True)
             raise
-        return GenerateResult(self.out, len(self.roster), self.files, self.warnings)
+        return GenerateResult(self.out, len(self.roster), self.files, self.warnings, self.unwritten)
 
     def _verify(self, draws: dict[int, dict[str, VariantChoice]]) -> None:
         if self.verify is None:
@@ -151,7 +155,12 @@ class Generator:
             done += 1
             self.progress(done, total, f"{student.id}")
         if "pdf" in self.formats:
-            self._compile_pdfs(tmp, done, total)
+            self.unwritten = self._compile_pdfs(tmp, done, total)
+            for entry in students_manifest:  # the manifest lists only files that exist
+                for kind in self.unwritten.get(entry["id"], {}):
+                    entry["files"].pop(kind, None)
+                if entry["id"] in self.unwritten:
+                    entry["unwritten"] = dict(sorted(self.unwritten[entry["id"]].items()))
         shutil.copyfile(self.assignment_path, tmp / "assignment.toml")
         self.files += 1
         manifest = manifest_json(
@@ -204,21 +213,31 @@ class Generator:
         except jinja2.TemplateError as exc:
             raise AssignmentError(f"template {key}: {exc}") from exc
 
-    def _compile_pdfs(self, tmp: Path, done: int, total: int) -> None:
-        pdflatex = shutil.which("pdflatex")
-        if pdflatex is None:
+    def _compile_pdfs(self, tmp: Path, done: int, total: int) -> dict[str, dict[str, str]]:
+        """Every handout and key as PDF (`pdf.compile_pdf`); returns those not made, by student
+        and file kind (`handout_pdf`), with the reason, each also a warning."""
+        found = engines()
+        unwritten: dict[str, dict[str, str]] = {}
+        if not found:
             self.warnings.append(PDFLATEX_HINT)
-            return
+            for student in self.roster:
+                unwritten[student.id] = dict.fromkeys(("handout_pdf", "key_pdf"), PDFLATEX_HINT)
+            return unwritten
         env = dict(os.environ, SOURCE_DATE_EPOCH="0", FORCE_SOURCE_DATE="1")
         for folder in ("handouts", "keys"):
             for tex in sorted((tmp / folder).glob("*.tex")):
-                problem = compile_pdf(pdflatex, tex, env)
+                problem = compile_pdf(found, tex, env)
                 if problem:
-                    self.warnings.append(f"{folder}/{tex.name}: {problem}")
+                    kind = "handout_pdf" if folder == "handouts" else "key_pdf"
+                    unwritten.setdefault(tex.stem, {})[kind] = (
+                        f"LaTeX could not typeset it ({problem})"
+                    )
+                    self.warnings.append(f"{folder}/{tex.stem}.pdf was not made: {problem}")
                 else:
                     self.files += 1
                 done += 1
                 self.progress(done, total, f"pdf {tex.stem}")
+        return unwritten
 
     def _move_into_place(self, tmp: Path, force: bool) -> None:
         old = None
