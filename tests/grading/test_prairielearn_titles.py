@@ -19,6 +19,7 @@ from hypothesis import strategies as st
 
 from lagrade.assign.templating import toml_string
 from lagrade.bank import scene_ids
+from lagrade.cli.main import main
 from lagrade.grading.prairielearn import export_prairielearn
 
 from .test_prairielearn import new_data
@@ -132,3 +133,11 @@ def test_the_export_of_every_bank_scene_loads_and_runs(tmp_path):
         server.grade(data)
         assert set(data["partial_scores"]) == {"dof", "lagrangian"}, folder.name
         assert 0.0 <= data["score"] <= 1.0
+
+
+def test_a_manifest_nested_100000_deep_is_one_line_and_exit_2(tmp_path, capsys):
+    """The manifest is read by the untrusted-input rules (json.loads recursed: a traceback)."""
+    (tmp_path / "manifest.json").write_text("[" * 100_000 + "]" * 100_000)
+    status = main(["export", "prairielearn", str(tmp_path / "manifest.json"), "--out", "q"])
+    err = capsys.readouterr().err
+    assert status == 2 and err.count("\n") == 1 and "nests more than 64 deep" in err
