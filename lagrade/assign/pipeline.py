@@ -253,17 +253,27 @@ class Generator:
 
 def read_back_sheet(text: str, student: Student, assignment: Assignment) -> None:
     """Read a blank answer sheet back as `grade` reads it (the untrusted-input TOML rules): it
-    must parse and hold the student's id and name and every part's key, blank; otherwise
-    AssignmentError, before anything is written (a title or name that broke the TOML would
-    otherwise make every sheet of the class `invalid`)."""
+    must parse, and what it says of the student (id, name) and of each part (blank) must be
+    what was meant; otherwise AssignmentError, before anything is written (a title or name
+    that broke the TOML would otherwise make every sheet of the class `invalid`). An
+    instructor's own template may leave a field out."""
     what = f"the answer sheet of {student.id}"
     try:
         table = untrusted.load_toml(text, what)
     except UnreadableInput as error:
         raise AssignmentError(f"{error}; check the text that went into it") from None
-    expected: dict[str, Any] = {"student_id": student.id, "name": student.name}
+    changed = [
+        k for k, v in (("student_id", student.id), ("name", student.name)) if table.get(k, v) != v
+    ]
     for problem in assignment.problems:
-        expected[f"problem{problem.index}"] = {part.key: "" for part in problem.parts}
-    changed = [k for k, v in expected.items() if table.get(k) != v]
+        answers = table.get(f"problem{problem.index}", {})
+        if not isinstance(answers, dict):
+            changed.append(f"problem{problem.index}")
+            continue
+        changed += [
+            f"problem{problem.index}.{part.key}"
+            for part in problem.parts
+            if answers.get(part.key, "") != ""
+        ]
     if changed:
         raise AssignmentError(f"{what} does not read back as written ({', '.join(changed)})")
