@@ -3,7 +3,7 @@
 Exit status, the same for every command (documented in `lagrade --help` and the README):
   0    success
   1    done, but not everything passed: an answer judged not correct (`check`), students
-       missing, invalid or timed out (`grade`)
+       missing, invalid or timed out (`grade`), a PDF that could not be made (`generate`)
   2    bad input or usage: a malformed file, request, option or scene id
   3    environment fault: the disk is full, a folder is read-only or not ours to write
   4    the output folder is in use by another lagrade run

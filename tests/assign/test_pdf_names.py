@@ -91,11 +91,11 @@ def test_a_name_in_any_script_gets_its_handout_and_key_pdf(assignment, tmp_path)
 def test_a_pdf_of_a_name_pdflatex_cannot_typeset_is_byte_identical_across_runs(
     assignment, tmp_path
 ):
-    roster = write_roster(tmp_path / "r.csv", [("s2", NAMES["s2"]), ("s1", NAMES["s1"])])
+    roster = write_roster(tmp_path / "r.csv", [("s2", NAMES["s2"])])
     for run in ("a", "b"):
         generate(assignment, roster, 5, tmp_path / run, "pdf")
     for folder in ("handouts", "keys"):
-        for sid in ("s1", "s2"):
+        for sid in ("s2",):
             a = (tmp_path / "a" / folder / f"{sid}.pdf").read_bytes()
             assert a == (tmp_path / "b" / folder / f"{sid}.pdf").read_bytes(), (folder, sid)
 
