@@ -206,7 +206,7 @@ def test_a_seed_whose_manifest_grade_could_not_read_is_refused(tmp_path, capsys)
     assert not (tmp_path / "out").exists()
 
 
-def test_a_sheet_that_would_not_read_back_is_not_saved(tmp_path, monkeypatch):
+def test_a_sheet_that_would_not_read_back_is_not_saved(monkeypatch):
     """The old writer's DEL bug planted again: the page refuses to save, saying why."""
     import lagrade.grading.answer_page.sheets as sheets
     from lagrade.errors import OutputError
@@ -214,4 +214,3 @@ def test_a_sheet_that_would_not_read_back_is_not_saved(tmp_path, monkeypatch):
     monkeypatch.setattr(sheets, "toml_literal", lambda text, multiline=False: f"'{text}'")
     with pytest.raises(OutputError, match="would not read back"):
         sheets.sheet_text(MANIFEST, STUDENT, {1: {"lagrangian": "m v^2\x7f"}})
-    assert not (tmp_path / "s001.toml").exists()
