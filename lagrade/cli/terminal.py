@@ -12,17 +12,20 @@ import sys
 from collections.abc import Iterator
 from typing import Any, TextIO
 
-from lagrade.untrusted import visible
-
 
 class VisibleText(io.TextIOBase):
     """A text stream that writes `visible(text)` to the stream it wraps."""
 
     def __init__(self, stream: TextIO):
+        # Imported here, not at the top: the command's start-up (before its Ctrl-C handling is
+        # in place) stays as short as it was.
+        from lagrade.untrusted import visible
+
         self.raw = stream
+        self._visible = visible
 
     def write(self, text: str) -> int:
-        self.raw.write(visible(text))
+        self.raw.write(self._visible(text))
         return len(text)
 
     def flush(self) -> None:
