@@ -8,9 +8,11 @@ The rules, each in one place:
   every string read may reach an output file, which must stay valid UTF-8;
 - nesting and integers are bounded before or while parsing, so a hostile record costs
   microseconds and yields a clear reason instead of a RecursionError or Python's 4,300-digit
-  ValueError;
+  ValueError; nesting however it is spelled (brackets, inline tables, TOML's table headers and
+  dotted keys), on the text before parsing and on the parsed structure after;
 - names that become file names (student ids) use one documented safe alphabet;
-- text echoed back (a parser's reading, feedback) is clipped to a bounded size.
+- text echoed back (a parser's reading, feedback) is clipped to a bounded size;
+- text for a terminal, a log or a Markdown report shows its control characters as escapes.
 Each failure raises UnreadableInput with a sentence a person can act on; callers turn it into
 the record's `invalid` verdict or their own error.
 """
@@ -78,7 +80,7 @@ def unsafe_name_reason(name: object, what: str = "the id") -> str | None:
 def load_json(text: str, what: str = "the record") -> Any:
     """json.loads with bounds: nesting at most MAX_NESTING, integers at most MAX_INT_DIGITS
     digits, no NaN or Infinity (not JSON), no lone surrogate in any string or key."""
-    _check_nesting(text, what)
+    _check_nesting(text, what, toml=False)
     try:
         value = json.loads(
             text,
@@ -92,14 +94,17 @@ def load_json(text: str, what: str = "the record") -> Any:
         ) from None
     except RecursionError:  # the scan above is loose about quotes; this is its backstop
         raise UnreadableInput(f"{what} nests brackets too deep") from None
+    _check_depth(value, what)
     _check_strings(value, what)
     return value
 
 
 def load_toml(text: str, what: str = "the file") -> dict[str, Any]:
-    """tomllib.loads with the same bounds as load_json (TOML itself has no lone surrogates:
-    tomllib refuses the escape)."""
-    _check_nesting(text, what)
+    """tomllib.loads with the same bounds as load_json, however the nesting is spelled: brackets,
+    inline tables, table headers or dotted keys (`a.a.a = 1` nests without a bracket, and
+    tomllib's time and memory grow with the square of a dotted key's length). TOML itself has
+    no lone surrogates: tomllib refuses the escape."""
+    _check_nesting(text, what, toml=True)
     try:
         value = tomllib.loads(text)
     except tomllib.TOMLDecodeError as error:
@@ -110,8 +115,27 @@ def load_toml(text: str, what: str = "the file") -> dict[str, Any]:
         raise UnreadableInput(
             f"{what} holds a number with more than {MAX_INT_DIGITS} digits"
         ) from None
+    _check_depth(value, what)
     _check_numbers(value, what)
     return value
+
+
+#: What a terminal or a viewer acts on instead of showing: C0 controls but tab and line break
+#: (a carriage return overwrites a line), DEL, C1 controls (ESC and CSI start the escape
+#: sequences that clear a screen or move the cursor), and the bidirectional overrides and
+#: isolates that show text in another order than it is stored (`exe.pdf` for `fdp.exe`).
+_INVISIBLE = re.compile("[\x00-\x08\x0b-\x1f\x7f-\x9f\u202a-\u202e\u2066-\u2069]")
+
+
+def visible(text: str) -> str:
+    """`text` for a terminal, a log or a Markdown report: every character in _INVISIBLE written
+    as its Python escape (`\\x1b`, `\\r`, `\\u202e`), so it is shown, never acted on; tabs
+    and line breaks stay."""
+    return _INVISIBLE.sub(_escape, text) if _INVISIBLE.search(text) else text
+
+
+def _escape(match: re.Match) -> str:
+    return repr(match.group())[1:-1]
 
 
 def encodable(text: str) -> str:
@@ -134,33 +158,71 @@ def bounded(text: str, limit: int = MAX_ECHO) -> str:
 # --- the bounds -----------------------------------------------------------------------------------
 
 
-def _check_nesting(text: str, what: str) -> None:
-    """Count bracket depth outside strings before parsing: 100,000 nested brackets must cost a
-    scan, not a RecursionError deep inside a parser. Quotes are tracked loosely (JSON's "…"
-    with backslash escapes, TOML's '…' too); a bracket inside a string can only overcount."""
-    if text.count("[") + text.count("{") <= MAX_NESTING:
+#: The tokens that matter for nesting, in JSON and TOML: strings and comments (skipped whole,
+#: so a bracket or dot inside one counts for nothing), brackets, dots between key parts.
+_JSON_TOKENS = re.compile(r'"(?:\\.|[^"\\\n])*"?|[\[{]|[\]}]|[^"\[\]{}]+', re.DOTALL)
+_TOML_TOKENS = re.compile(
+    r"""\#[^\n]*"""
+    r"""|'''.*?(?:'''|\Z)|'[^'\n]*'?"""
+    r'|"""(?:\\.|[^\\])*?(?:"""|\Z)|"(?:\\.|[^"\\\n])*"?'
+    r"""|[\[{]|[\]}]|\.|[A-Za-z0-9_-]+|[ \t]+|[^\#'"\[\]{}.A-Za-z0-9_ \t-]+""",
+    re.DOTALL,
+)
+
+
+def _check_nesting(text: str, what: str, toml: bool) -> None:
+    """Bound nesting before parsing: 100,000 nested brackets, or a TOML dotted key of 100,000
+    parts, must cost a scan, not a RecursionError deep inside a parser or a parse whose cost
+    grows with the square of the key. Strings and comments are skipped whole; in TOML a chain
+    of key parts joined by dots (`a.b."c"`) counts its parts (a float such as 1.5 is two)."""
+    brackets = text.count("[") + text.count("{")
+    if brackets <= MAX_NESTING and (not toml or text.count(".") < MAX_NESTING):
         return
-    depth, quote, escaped = 0, "", False
-    for ch in text:
-        if quote:
-            if escaped:
-                escaped = False
-            elif ch == "\\" and quote == '"':
-                escaped = True
-            elif ch == quote or ch == "\n":
-                quote = ""
-            continue
-        if ch in "\"'":
-            quote = ch
-        elif ch in "[{":
+    depth, parts, after_dot = 0, 0, False
+    for token in (_TOML_TOKENS if toml else _JSON_TOKENS).finditer(text):
+        first = token.group()[0]
+        if first in "[{":
             depth += 1
             if depth > MAX_NESTING:
-                raise UnreadableInput(
-                    f"{what} nests brackets more than {MAX_NESTING} deep; no request or answer "
-                    "sheet needs that"
-                )
-        elif ch in "]}":
+                raise _too_deep(what)
+        elif first in "]}":
             depth = max(0, depth - 1)
+        if not toml or first in " \t#":
+            continue
+        if first == ".":
+            after_dot = True
+            continue
+        if first.isalnum() or first in "_-'\"":  # a key part: bare or quoted
+            parts = parts + 1 if after_dot else 1
+            if parts > MAX_NESTING:
+                raise _too_deep(what)
+        else:
+            parts = 0
+        after_dot = False
+
+
+def _check_depth(value: Any, what: str) -> None:
+    """The parsed structure nests at most MAX_NESTING deep, checked without recursion (before
+    anything recursive walks it): TOML nests by table headers and dotted keys together too."""
+    stack = [(value, 1)]
+    while stack:
+        item, depth = stack.pop()
+        if isinstance(item, dict):
+            children: Iterable[Any] = item.values()
+        elif isinstance(item, list):
+            children = item
+        else:
+            continue
+        if depth > MAX_NESTING:
+            raise _too_deep(what)
+        stack.extend((child, depth + 1) for child in children)
+
+
+def _too_deep(what: str) -> UnreadableInput:
+    return UnreadableInput(
+        f"{what} nests more than {MAX_NESTING} deep (brackets, tables or dotted keys); no "
+        "request or answer sheet needs that"
+    )
 
 
 def _bounded_int(what: str):

@@ -16,13 +16,14 @@ from typing import Any
 
 import jinja2
 
+import lagrade.untrusted as untrusted
 from lagrade.assign.assignment import Assignment, Part
 from lagrade.assign.manifest import manifest_json, student_manifest
-from lagrade.assign.pdf import PDFLATEX_HINT, compile_pdf
+from lagrade.assign.pdf import PDFLATEX_HINT, compile_pdf, engines
 from lagrade.assign.roster import Student
 from lagrade.assign.variants import VariantChoice, student_variants
 from lagrade.assign.views import figure_name, presentation, problem_view, symbolic_solution
-from lagrade.errors import AssignmentError
+from lagrade.errors import AssignmentError, UnreadableInput
 from lagrade.mechanics.scene import SceneVariant
 
 #: Progress callback: (steps done, steps in all, what is being done).
@@ -39,6 +40,9 @@ class GenerateResult:
     students: int
     files: int
     warnings: list[str] = field(default_factory=list)
+    #: Files asked for but not made (a PDF LaTeX could not typeset), by student id and kind
+    #: (`handout_pdf`, `key_pdf`), with the reason; the manifest lists them as `unwritten`.
+    unwritten: dict[str, dict[str, str]] = field(default_factory=dict)
 
 
 class Generator:
@@ -61,6 +65,7 @@ class Generator:
         self.progress = progress or (lambda done, total, label: None)
         self.assignment_path = assignment_path
         self.warnings: list[str] = []
+        self.unwritten: dict[str, dict[str, str]] = {}
         self.files = 0
         self.views: dict[tuple[int, int], dict[str, Any]] = {}  # students sharing a variant
         self.figures_written: set[str] = set()
@@ -80,7 +85,7 @@ class Generator:
         except BaseException:
             shutil.rmtree(tmp, ignore_errors=True)
             raise
-        return GenerateResult(self.out, len(self.roster), self.files, self.warnings)
+        return GenerateResult(self.out, len(self.roster), self.files, self.warnings, self.unwritten)
 
     def _verify(self, draws: dict[int, dict[str, VariantChoice]]) -> None:
         if self.verify is None:
@@ -150,12 +155,21 @@ class Generator:
             done += 1
             self.progress(done, total, f"{student.id}")
         if "pdf" in self.formats:
-            self._compile_pdfs(tmp, done, total)
+            self.unwritten = self._compile_pdfs(tmp, done, total)
+            for entry in students_manifest:  # the manifest lists only files that exist
+                for kind in self.unwritten.get(entry["id"], {}):
+                    entry["files"].pop(kind, None)
+                if entry["id"] in self.unwritten:
+                    entry["unwritten"] = dict(sorted(self.unwritten[entry["id"]].items()))
         shutil.copyfile(self.assignment_path, tmp / "assignment.toml")
         self.files += 1
         manifest = manifest_json(
             self.assignment, self.assignment_path, self.seed, self.formats, students_manifest
         )
+        try:  # read back as `grade` reads it
+            untrusted.load_json(manifest, "the manifest")
+        except UnreadableInput as error:
+            raise AssignmentError(f"{error}; `lagrade grade` could not read it") from None
         self._write(tmp / "manifest.json", manifest)
 
     def _student_views(
@@ -190,30 +204,40 @@ class Generator:
             for key, template in sorted(templates.items()):
                 kind, _, fmt = key.partition(".")
                 if kind == "answer_sheet":
-                    self._write(
-                        tmp / "answer_sheets" / f"{student.id}.toml", template.render(context)
-                    )
+                    text = template.render(context)
+                    read_back_sheet(text, student, self.assignment)
+                    self._write(tmp / "answer_sheets" / f"{student.id}.toml", text)
                 else:
                     folder = "handouts" if kind == "handout" else "keys"
                     self._write(tmp / folder / f"{student.id}.{fmt}", template.render(context))
         except jinja2.TemplateError as exc:
             raise AssignmentError(f"template {key}: {exc}") from exc
 
-    def _compile_pdfs(self, tmp: Path, done: int, total: int) -> None:
-        pdflatex = shutil.which("pdflatex")
-        if pdflatex is None:
+    def _compile_pdfs(self, tmp: Path, done: int, total: int) -> dict[str, dict[str, str]]:
+        """Every handout and key as PDF (`pdf.compile_pdf`); returns those not made, by student
+        and file kind (`handout_pdf`), with the reason, each also a warning."""
+        found = engines()
+        unwritten: dict[str, dict[str, str]] = {}
+        if not found:
             self.warnings.append(PDFLATEX_HINT)
-            return
+            for student in self.roster:
+                unwritten[student.id] = dict.fromkeys(("handout_pdf", "key_pdf"), PDFLATEX_HINT)
+            return unwritten
         env = dict(os.environ, SOURCE_DATE_EPOCH="0", FORCE_SOURCE_DATE="1")
         for folder in ("handouts", "keys"):
             for tex in sorted((tmp / folder).glob("*.tex")):
-                problem = compile_pdf(pdflatex, tex, env)
+                problem = compile_pdf(found, tex, env)
                 if problem:
-                    self.warnings.append(f"{folder}/{tex.name}: {problem}")
+                    kind = "handout_pdf" if folder == "handouts" else "key_pdf"
+                    unwritten.setdefault(tex.stem, {})[kind] = (
+                        f"LaTeX could not typeset it ({problem})"
+                    )
+                    self.warnings.append(f"{folder}/{tex.stem}.pdf was not made: {problem}")
                 else:
                     self.files += 1
                 done += 1
                 self.progress(done, total, f"pdf {tex.stem}")
+        return unwritten
 
     def _move_into_place(self, tmp: Path, force: bool) -> None:
         old = None
@@ -225,3 +249,31 @@ class Generator:
         tmp.rename(self.out)
         if old is not None:
             shutil.rmtree(old, ignore_errors=True)
+
+
+def read_back_sheet(text: str, student: Student, assignment: Assignment) -> None:
+    """Read a blank answer sheet back as `grade` reads it (the untrusted-input TOML rules): it
+    must parse, and what it says of the student (id, name) and of each part (blank) must be
+    what was meant; otherwise AssignmentError, before anything is written (a title or name
+    that broke the TOML would otherwise make every sheet of the class `invalid`). An
+    instructor's own template may leave a field out."""
+    what = f"the answer sheet of {student.id}"
+    try:
+        table = untrusted.load_toml(text, what)
+    except UnreadableInput as error:
+        raise AssignmentError(f"{error}; check the text that went into it") from None
+    changed = [
+        k for k, v in (("student_id", student.id), ("name", student.name)) if table.get(k, v) != v
+    ]
+    for problem in assignment.problems:
+        answers = table.get(f"problem{problem.index}", {})
+        if not isinstance(answers, dict):
+            changed.append(f"problem{problem.index}")
+            continue
+        changed += [
+            f"problem{problem.index}.{part.key}"
+            for part in problem.parts
+            if answers.get(part.key, "") != ""
+        ]
+    if changed:
+        raise AssignmentError(f"{what} does not read back as written ({', '.join(changed)})")

@@ -12,6 +12,7 @@ from typing import Any
 import jinja2
 
 from lagrade.errors import AssignmentError
+from lagrade.untrusted import visible
 
 _TEX_SPECIALS = {
     "\\": r"\textbackslash{}",
@@ -123,8 +124,8 @@ def _cut(line: str, limit: int) -> int:
 
 def md_escape(value: Any) -> str:
     """Text made inert in Markdown: punctuation backslash-escaped, so `<script>` is shown, not
-    run, by any CommonMark renderer."""
-    text = _MD_SPECIALS.sub(r"\\\1", str(value).replace("\n", " "))
+    run, by any CommonMark renderer; control characters shown as escapes (`visible`)."""
+    text = _MD_SPECIALS.sub(r"\\\1", visible(str(value).replace("\n", " ")))
     # a leading "- ", "+ " or "1." would start a list: escape its marker
     return _MD_LINE_START.sub(
         lambda m: (
@@ -137,23 +138,30 @@ def md_escape(value: Any) -> str:
 def md_code(value: Any) -> str:
     """A Markdown code span holding `value` verbatim: its fence is one backtick longer than the
     longest run of backticks inside, so no text can close it early (CommonMark's rule), and it
-    is padded with a space when the text starts or ends with a backtick."""
-    text = " ".join(str(value).split())
+    is padded with a space when the text starts or ends with a backtick. Control characters
+    are shown as escapes (`visible`): a code span shows them to a viewer, and `cat` runs them."""
+    text = visible(" ".join(str(value).split()))
     runs = re.findall(r"`+", text)
     fence = "`" * (max((len(r) for r in runs), default=0) + 1)
     pad = " " if text.startswith("`") or text.endswith("`") else ""
     return f"{fence}{pad}{text}{pad}{fence}"
 
 
+#: What TOML forbids raw in strings and comments: control characters but tab (a line break
+#: only ends a comment or a one-line string), and DEL (TOML 1.0, "Comment" and "String").
+TOML_FORBIDDEN = re.compile(r"[\x00-\x08\x0a-\x1f\x7f]")
+
+
 def toml_string(value: Any) -> str:
-    """A TOML basic string (quoted) holding `value`."""
+    """A TOML basic string (quoted) holding `value`: quotes and backslashes escaped, and every
+    character TOML forbids raw written as its `\\uXXXX` escape (a line break `\\u000a`). Never a
+    letter escape such as `\\n` or `\\t`: the sheet reader takes a line break or tab from one,
+    followed by letters, for LaTeX that the escape ate (`\\nu`, `\\theta`) and restores it."""
     out = []
     for ch in str(value):
         if ch in ('"', "\\"):
             out.append("\\" + ch)
-        elif ch == "\n":
-            out.append("\\n")
-        elif ord(ch) < 0x20 or ord(ch) == 0x7F:
+        elif TOML_FORBIDDEN.match(ch):
             out.append(f"\\u{ord(ch):04x}")
         else:
             out.append(ch)
@@ -163,11 +171,12 @@ def toml_string(value: Any) -> str:
 def toml_literal(value: str | list[str], multiline: bool = False) -> str:
     """A TOML literal string: `'…'`, or `'''` with one item per line. Literal strings keep
     backslashes as typed, so LaTeX (`\\theta`, `\\frac`) means what it says; in a "…" string
-    TOML would read `\\t` as a tab and `\\f` as a form feed. Falls back to a basic string only
-    when the text itself holds a quote that a literal string cannot."""
+    TOML would read `\\t` as a tab and `\\f` as a form feed. Falls back to a basic string
+    (`toml_string`) when the text holds what a literal string cannot: its own quote, or a
+    character TOML forbids raw (a control character, DEL; a line break in a one-line string)."""
     items = value if isinstance(value, list) else [value]
     text = "\n".join(str(item) for item in items)
-    control = any(ord(ch) < 0x20 and ch not in "\t\n" for ch in text)
+    control = any(TOML_FORBIDDEN.match(ch) and ch != "\n" for ch in text)
     if multiline or len(items) > 1:
         if "'''" not in text and not control and not text.endswith("'"):
             return "'''\n" + text + ("\n" if text else "") + "'''"
@@ -187,14 +196,16 @@ def count_points(value: float) -> str:
 
 
 def one_line(value: Any) -> str:
-    """Text for a TOML comment: line breaks would end the comment, so they become spaces."""
-    return " ".join(str(value).split())
+    """Text for a TOML comment (or any one-line slot): line breaks would end the comment and
+    TOML forbids control characters in it, so each becomes a space, and runs of space one."""
+    return " ".join(TOML_FORBIDDEN.sub(" ", str(value)).split())
 
 
 def md_block(value: Any) -> str:
     """A fenced Markdown code block holding `value` verbatim, lines and spacing kept (an
-    answer line with the caret under it): the fence is longer than any backtick run inside."""
-    text = str(value).rstrip("\n")
+    answer line with the caret under it): the fence is longer than any backtick run inside;
+    control characters are shown as escapes (`visible`)."""
+    text = visible(str(value).rstrip("\n"))
     runs = re.findall(r"`+", text)
     fence = "`" * max(3, max((len(r) for r in runs), default=0) + 1)
     return f"{fence}\n{text}\n{fence}"

@@ -21,6 +21,7 @@ import sympy as sp
 import lagrade.grading.atomic as atomic
 from lagrade.assign.generate import generate
 from lagrade.assign.solution import latex_symbol_names
+from lagrade.assign.templating import toml_string
 from lagrade.grading.batch import BatchSummary, grade, question
 from lagrade.grading.manifest import student_variant
 from lagrade.judge.key import key_answer
@@ -278,7 +279,7 @@ def write_submissions(
             continue
         rng = random.Random(f"demo:{sid}")
         profile = profiles[i % len(profiles)]
-        lines = [f"student_id = {json.dumps(sid)}", f"name = {json.dumps(student['name'])}"]
+        lines = [f"student_id = {toml_string(sid)}", f"name = {toml_string(student['name'])}"]
         notes = [f"profile: {profile}"]
         for problem, entry in zip(manifest["problems"], student["problems"], strict=True):
             variant = student_variant(entry["scene"], entry["seed"])

@@ -5,10 +5,10 @@ that grades each upload with lagrade (`lagrade.grading.gradescope`)."""
 from __future__ import annotations
 
 import argparse
-import json
 from pathlib import Path
 
-from lagrade.errors import AssignmentError
+import lagrade.untrusted as untrusted
+from lagrade.errors import AssignmentError, LagradeError
 
 
 def run(args: argparse.Namespace) -> int:
@@ -19,10 +19,11 @@ def run(args: argparse.Namespace) -> int:
     source, seed = Path(args.source), args.seed
     if source.suffix == ".json":  # a manifest: its assignment copy and seed
         try:
-            manifest = json.loads(source.read_text(encoding="utf-8"))
+            what = str(args.source)
+            manifest = untrusted.load_json(untrusted.decode(source.read_bytes(), what), what)
             source = source.parent / manifest["assignment"]["file"]
             seed = manifest["seed"] if seed is None else seed
-        except (OSError, ValueError, KeyError, TypeError) as error:
+        except (OSError, LagradeError, KeyError, TypeError) as error:
             raise AssignmentError(f"{args.source} is not a lagrade manifest ({error})") from None
     if seed is None:
         raise AssignmentError("give --seed (or export from a manifest.json, which has one)")

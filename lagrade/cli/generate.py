@@ -27,6 +27,14 @@ def run(args: argparse.Namespace) -> int:
     for warning in result.warnings:
         print(f"warning: {warning}", file=sys.stderr)
     print(f"wrote {result.files} files for {result.students} students to {result.out_dir}")
+    if result.unwritten:
+        count = sum(len(kinds) for kinds in result.unwritten.values())
+        print(
+            f"{count} files of {len(result.unwritten)} students were not made (the warnings say "
+            'why; manifest.json lists them under "unwritten")',
+            file=sys.stderr,
+        )
+        return 1
     return 0
 
 

@@ -3,7 +3,7 @@
 Exit status, the same for every command (documented in `lagrade --help` and the README):
   0    success
   1    done, but not everything passed: an answer judged not correct (`check`), students
-       missing, invalid or timed out (`grade`)
+       missing, invalid or timed out (`grade`), a PDF that could not be made (`generate`)
   2    bad input or usage: a malformed file, request, option or scene id
   3    environment fault: the disk is full, a folder is read-only or not ours to write
   4    the output folder is in use by another lagrade run
@@ -18,6 +18,7 @@ import sys
 from collections.abc import Callable, Sequence
 from typing import NoReturn
 
+from lagrade.cli.terminal import guarded
 from lagrade.errors import LagradeError, OutputBusy, OutputError
 
 EXIT_OK, EXIT_NOT_ALL_PASSED, EXIT_BAD_INPUT, EXIT_ENVIRONMENT, EXIT_BUSY = 0, 1, 2, 3, 4
@@ -88,6 +89,11 @@ class _VersionAction(argparse.Action):
 def main(argv: Sequence[str] | None = None) -> int:
     """Entry point of the `lagrade` console script: every outcome is an exit status and, on
     failure, one line on stderr (never a traceback for anything a user can cause)."""
+    with guarded():  # control characters in anything printed are shown as escapes
+        return _main(argv)
+
+
+def _main(argv: Sequence[str] | None) -> int:
     try:
         args = build_parser().parse_args(argv)
         run: Callable[[argparse.Namespace], int] = args.run

@@ -13,6 +13,9 @@ import sys
 import time
 from typing import TextIO
 
+from lagrade.cli.terminal import raw_stream
+from lagrade.untrusted import visible
+
 
 class ProgressBar:
     """`bar(done, total, label)` redraws one line (terminal) or writes one now and then (log);
@@ -52,7 +55,8 @@ class ProgressBar:
         fraction = done / total if total else 1.0
         filled = int(round(self.width * fraction))
         bar = "#" * filled + "-" * (self.width - filled)
-        self.stream.write(f"\r[{bar}] {done}/{total} {label[:40]:<40}")
+        line = visible(f"[{bar}] {done}/{total} {label[:40]:<40}")
+        raw_stream(self.stream).write("\r" + line)  # the bar's own return, written raw
         self.stream.flush()
         self._drawn = True
 

@@ -62,9 +62,15 @@ def write_bytes(path: Path, data: bytes) -> None:
 
 
 def write_text(path: Path, text: str) -> None:
-    """Write text as UTF-8. A lone surrogate cannot be UTF-8: the readers refuse them, and
-    should one come through anyway it is written as its escape (`\\udc80`), never a crash."""
-    write_bytes(path, text.encode("utf-8", errors="backslashreplace"))
+    """Write text as UTF-8 (`encode_text`)."""
+    write_bytes(path, encode_text(text))
+
+
+def encode_text(text: str) -> bytes:
+    """Text as `write_text` writes it: UTF-8. A lone surrogate cannot be UTF-8: the readers refuse
+    them, and should one come through anyway it is written as its escape (`\\udc80`), never a
+    crash."""
+    return text.encode("utf-8", errors="backslashreplace")
 
 
 def write_json(path: Path, data: Any) -> None:

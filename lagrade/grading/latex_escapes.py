@@ -6,6 +6,7 @@ answer is read as the student meant it; either way the student is told to use si
 
 from __future__ import annotations
 
+import functools
 import re
 
 from lagrade.notation.latex import COMMANDS
@@ -16,35 +17,54 @@ _NAMES = {"\b": "a backspace", "\t": "a tab", "\n": "a line break", "\f": "a for
 _NAMES["\r"] = "a carriage return"
 #: A control character and the letters after it.
 _CONTROL = re.compile(r"([\x00-\x1f\x7f])([A-Za-z]*)")
-#: Control characters a sheet's string may hold raw: a tab and a line break (TOML allows both
-#: in multi-line strings); any other came from an escape.
-_RAW_ALLOWED = frozenset("\t\n")
 
 
 def repair(answer: str, raw: str) -> tuple[str, list[str], list[str]]:
     """(the answer as meant, the LaTeX commands restored, the control characters left in it
     that came from an escape). `raw` is the sheet's text, where an escape shows as its
-    backslash sequence (`\\theta`)."""
+    backslash sequence (`\\theta`) inside a double-quoted string; a tab or line break typed
+    raw (or written as `\\u0009`) is not an escape and is left alone, without a warning."""
     restored: list[str] = []
     kept: list[str] = []
+    escaped = escaped_words(raw)
 
     def fix(m: re.Match) -> str:
         char, letters = m.group(1), m.group(2)
         letter = _ESCAPES.get(char)
-        if letter is not None and letters:
-            command = letter + letters
-            if command in COMMANDS and "\\" + command in raw:
-                restored.append("\\" + command)
-                return "\\" + command
-            if char in _RAW_ALLOWED and "\\" + command not in raw:
-                return m.group()  # a real tab or line break (a multi-line answer)
-        elif char in _RAW_ALLOWED:
-            return m.group()
-        kept.append(_NAMES.get(char, f"the control character U+{ord(char):04X}"))
+        if letter is None or letter + letters not in escaped:
+            return m.group()  # no `\\t…` escape in a "…" string of the sheet made it
+        if not letters and char in "\t\n":
+            return m.group()  # `\\t` or `\\n` before a non-letter: white space, meant or not
+        command = letter + letters
+        if letters and command in COMMANDS:
+            restored.append("\\" + command)
+            return "\\" + command
+        kept.append(_NAMES[char])
         return m.group()
 
     text = _CONTROL.sub(fix, answer)
     return text, restored, kept
+
+
+#: The strings and comments of a TOML or JSON text: comments and literal strings hold no escape;
+#: only double-quoted ("…" or """…""") strings do.
+_STRINGS = re.compile(
+    r"#[^\n]*|'''.*?'''|'[^'\n]*'?|(\"\"\"(?:\\.|[^\\])*?\"\"\"|\"(?:\\.|[^\"\\\n])*\"?)",
+    re.DOTALL,
+)
+_ESCAPE = re.compile(r"\\([A-Za-z]+|.)", re.DOTALL)
+
+
+@functools.lru_cache(maxsize=4)
+def escaped_words(raw: str) -> frozenset[str]:
+    """The letters after each backslash escape inside the double-quoted strings of `raw`
+    (`"\\theta"` gives "theta"; `"\\\\theta"`, an escaped backslash, gives none), so that a tab
+    is taken for an eaten `\\t` only where the sheet holds that escape."""
+    words = set()
+    for string in _STRINGS.finditer(raw):
+        if string.group(1):
+            words.update(m.group(1) for m in _ESCAPE.finditer(string.group(1)))
+    return frozenset(words)
 
 
 def warning(where: str, restored: list[str], kept: list[str]) -> str:

@@ -25,6 +25,7 @@ from pathlib import Path
 from typing import Any
 
 import lagrade.grading.atomic as atomic
+import lagrade.untrusted as untrusted
 from lagrade.assign.assignment import Assignment, Problem, load_assignment, parse_assignment
 from lagrade.assign.templating import environment
 from lagrade.assign.variants import VariantChoice, build_pool
@@ -45,7 +46,7 @@ def export_prairielearn(assignment_file: Path, seed: int, out: Path) -> list[Pat
     """Write one question folder per problem of the assignment into `out`; returns them."""
     assignment_file = Path(assignment_file)
     assignment = load_assignment(assignment_file)
-    text = assignment_file.read_text(encoding="utf-8")
+    text = untrusted.decode(assignment_file.read_bytes(), str(assignment_file))
     folders = []
     for problem in assignment.problems:
         pool = build_pool(problem, seed, problem.variants or DEFAULT_POOL)
@@ -99,14 +100,18 @@ def _question_html(problem: Problem) -> str:
     )
 
 
-_SERVER = '''"""PrairieLearn server for {title}, written by `lagrade export prairielearn`.
-Needs lagrade (https://pypi.org/project/lagrade/) in the course's Python environment."""
+#: server.py: fixed code, with every value in it written as a Python literal by `repr` (the
+#: title too, as data: an instructor's `"""` or `\N{` in a docstring would be code or a
+#: SyntaxError on PrairieLearn's server). No text of the assignment is spliced in otherwise.
+_SERVER = '''"""PrairieLearn server for one lagrade problem (its title is TITLE below), written by
+`lagrade export prairielearn`. Needs lagrade in the course's Python environment."""
 
 from lagrade.grading import prairielearn as lagrade_pl
 
-ASSIGNMENT = {assignment!r}
-PROBLEM = {index!r}
-SEEDS = {seeds!r}
+TITLE = {title}
+ASSIGNMENT = {assignment}
+PROBLEM = {index}
+SEEDS = {seeds}
 
 
 def generate(data):
@@ -123,12 +128,18 @@ def grade(data):
 
 
 def _server_py(assignment_text: str, problem: Problem, pool: tuple[VariantChoice, ...]) -> str:
-    return _SERVER.format(
-        title=problem.title or problem.scene.title,
-        assignment=assignment_text,
-        index=problem.index,
-        seeds=[c.seed for c in pool],
-    )
+    """server.py for `problem`: each value a Python literal (`repr` of a str, int or list of
+    ints), checked to compile before it is written, so an export never ships a file that
+    PrairieLearn cannot load."""
+    values = {
+        "title": str(problem.title or problem.scene.title),
+        "assignment": str(assignment_text),
+        "index": int(problem.index),
+        "seeds": [int(c.seed) for c in pool],
+    }
+    source = _SERVER.format(**{name: repr(value) for name, value in values.items()})
+    compile(source, "server.py", "exec")  # a SyntaxError here is our bug, never shipped
+    return source
 
 
 # --- the runtime: what server.py calls inside PrairieLearn --------------------------------------

@@ -17,6 +17,7 @@ from typing import Any
 
 import lagrade.grading.atomic as atomic
 from lagrade.assign.templating import environment, md_block, md_code, md_escape
+from lagrade.untrusted import visible
 
 STUDENTS = "students"
 
@@ -43,7 +44,7 @@ def read_student_result(out: Path, student_id: str) -> dict[str, Any] | None:
 
 def log_error(out: Path, student_id: str, details: str) -> None:
     """Keep the traceback of a grader failure for the instructor (one file per student)."""
-    atomic.write_text(out / "errors" / f"{student_id}.log", details + "\n")
+    atomic.write_text(out / "errors" / f"{student_id}.log", visible(details) + "\n")
 
 
 def gradescope_results(result: Mapping[str, Any]) -> dict[str, Any]:

@@ -117,6 +117,18 @@ def read_sheet(
     data, reason = read_regular_file(path)
     if reason:
         return _bad(path, "", reason)
+    return sheet_from_bytes(path, data, student_id, problem_count, keys)
+
+
+def sheet_from_bytes(
+    path: Path,
+    data: bytes,
+    student_id: str,
+    problem_count: int,
+    keys: Mapping[int, Sequence[str]] | None = None,
+) -> Sheet:
+    """`read_sheet` on bytes in hand (`path` names the file and its format by its suffix): what
+    a writer of sheets reads its text back with before it writes it."""
     digest = hashlib.sha256(data).hexdigest()
     if not data.strip():
         return _bad(path, digest, "the file is empty")

@@ -37,6 +37,12 @@ from lagrade.mechanics.scene import SceneVariant
 _NAME = re.compile(r"^[A-Za-z][A-Za-z0-9_]{0,31}$")
 #: More coordinates or parameters than any mechanics problem has is a malformed request.
 MAX_NAMES = 64
+#: Why an ad-hoc Lagrangian cannot judge transformation equations: it has no bodies, so no
+#: Cartesian positions to transform to.
+NEEDS_BODIES = (
+    "the transformation part needs a scene with bodies (--scene, or a bank scene in a "
+    "request); an ad-hoc Lagrangian has no Cartesian positions to transform to"
+)
 
 
 def parser():
@@ -188,6 +194,8 @@ class Problem:
         if self.kind == "expression" or part == "expression":
             return finite_mask([self.reference_expression])
         if part == "transformation":
+            if self.variant is None:
+                raise RequestError(NEEDS_BODIES)
             return finite_mask([Compiled.of(x) for x in self.variant.transformation.values()])
         refs = [self.L, *self.euler_lagrange]
         mask = finite_mask(refs)

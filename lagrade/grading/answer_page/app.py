@@ -239,10 +239,10 @@ def make_app(room: ClassRoom) -> Starlette:
         except (UnreadableInput, ValueError) as error:
             return _json({"status": "error", "message": str(error)}, 400)
         student = room.students[student_id]
-        text = sheet_text(room.manifest, student, answers)
         async with room.lock(student_id):
             loop = asyncio.get_running_loop()
             try:
+                text = sheet_text(room.manifest, student, answers)  # read back before saving
                 path = await loop.run_in_executor(
                     None, save_sheet, room.submissions, student_id, text
                 )

@@ -11,7 +11,14 @@ from typing import Any
 
 import lagrade.grading.atomic as atomic
 from lagrade.assign.templating import one_line, toml_literal, toml_string
-from lagrade.grading.submission import find_submission, read_regular_file, read_sheet
+from lagrade.errors import OutputError
+from lagrade.grading.submission import (
+    Sheet,
+    find_submission,
+    read_regular_file,
+    read_sheet,
+    sheet_from_bytes,
+)
 
 PREVIOUS = ".previous"
 #: The longest answer the page accepts for one part (a real one is a few hundred characters;
@@ -47,7 +54,29 @@ def sheet_text(
             if text.strip():
                 several = "\n" in text.strip()
                 lines.append(f"{key} = {toml_literal(text.strip(), multiline=several)}")
-    return "\n".join(lines) + "\n"
+    text = "\n".join(lines) + "\n"
+    _read_back(text, manifest, student["id"], answers)
+    return text
+
+
+def _read_back(
+    text: str, manifest: Mapping[str, Any], student_id: str, answers: Mapping[int, Mapping]
+) -> None:
+    """Read the sheet about to be saved with `grade`'s own reader: it must be readable, warn
+    about nothing and hold every answer as typed (blank ones omitted, the rest stripped), or
+    OutputError: a sheet the grader would refuse is never saved as if it were fine."""
+    keys = part_keys(manifest)
+    data = atomic.encode_text(text)
+    sheet = sheet_from_bytes(Path(f"{student_id}.toml"), data, student_id, len(keys), keys)
+    meant = {
+        index: {k: v.strip() for k, v in table.items() if v.strip()}
+        for index, table in answers.items()
+    }
+    meant = {index: table for index, table in meant.items() if table}
+    got = {index: table for index, table in _answers_of(sheet).items() if table}
+    if not sheet.readable or sheet.warnings or got != meant:
+        why = sheet.reason or "; ".join(sheet.warnings) or "an answer reads back changed"
+        raise OutputError(f"the answer sheet would not read back as written ({why})")
 
 
 def save_sheet(folder: Path, student_id: str, text: str) -> Path:
@@ -82,11 +111,15 @@ def saved_answers(
     sheet = read_sheet(path, student_id, len(keys), keys)
     if not sheet.readable:
         return {}, [f"Your saved sheet could not be read ({sheet.reason}); saving replaces it."]
-    answers = {
+    return _answers_of(sheet), list(sheet.warnings)
+
+
+def _answers_of(sheet: Sheet) -> dict[int, dict[str, str]]:
+    """A read sheet's answers as the page's fields show them (several lines joined)."""
+    return {
         index: {k: _text(v) for k, v in table.items() if _text(v) is not None}
         for index, table in sheet.answers.items()
     }
-    return answers, list(sheet.warnings)
 
 
 def _text(value: Any) -> str | None:

@@ -20,7 +20,7 @@ from lagrade.judge.parts.common import (
     witness_point,
 )
 from lagrade.judge.parts.reading import Read, items_of, read, read_lines
-from lagrade.judge.problem import Problem
+from lagrade.judge.problem import NEEDS_BODIES, Problem
 from lagrade.judge.rows import row_rank
 from lagrade.judge.sampling import Points
 from lagrade.judge.verdict import Verdict, invalid
@@ -30,7 +30,7 @@ from lagrade.notation.printer import plain
 def check_transformation(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
     v = problem.variant
     if v is None:
-        raise RequestError("transformation equations can be checked only for bank scenes")
+        raise RequestError(NEEDS_BODIES)
     required = list(v.transformation)
     optional = [f"z_{b.name}" for b in v.bodies if b.planar and f"z_{b.name}" not in required]
     labels = required + optional
