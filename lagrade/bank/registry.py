@@ -1,23 +1,51 @@
-"""The bank: scenes by id."""
+"""The bank: the scene files shipped in `lagrade/bank/scenes/`, by id, read on first use.
+
+The bank is data, read by the same reader as an instructor's scene file (`lagrade.bank.scenefile`);
+no scene is declared in Python. `order.txt` in the folder gives the order `lagrade bank list`
+shows (the lecture's eight systems first, in the lecture's order).
+"""
 
 from __future__ import annotations
 
-from lagrade.bank.scenes import SCENES
+import functools
+from pathlib import Path
+
+from lagrade.bank.scenefile import read_scene_file
 from lagrade.errors import UnknownSceneError
 from lagrade.mechanics.scene import Scene
 
-_BY_ID = {s.id: s for s in SCENES}
-assert len(_BY_ID) == len(SCENES), "duplicate scene ids in the bank"
+#: The folder of the bank's scene files, inside the installed package.
+BANK = Path(__file__).parent / "scenes"
 
 
+@functools.cache
 def scene_ids() -> list[str]:
     """Every scene id, in the bank's order."""
-    return list(_BY_ID)
+    lines = (BANK / "order.txt").read_text(encoding="utf-8").splitlines()
+    return [line.strip() for line in lines if line.strip() and not line.startswith("#")]
+
+
+@functools.cache
+def _scene(scene_id: str) -> Scene:
+    # The bank's files are held to every presentation's validity by tests/bank, not at each run.
+    return read_scene_file(BANK / f"{scene_id}.toml", validate=False)
 
 
 def get_scene(scene_id: str) -> Scene:
     """The scene `scene_id`; an UnknownSceneError lists the ids the bank has."""
-    try:
-        return _BY_ID[scene_id]
-    except KeyError:
-        raise UnknownSceneError(scene_id, scene_ids()) from None
+    if not isinstance(scene_id, str) or scene_id not in scene_ids():
+        raise UnknownSceneError(scene_id, scene_ids())
+    return _scene(scene_id)
+
+
+def bank_file(scene_id: str) -> Path:
+    """The file of a bank scene."""
+    get_scene(scene_id)
+    return BANK / f"{scene_id}.toml"
+
+
+def __getattr__(name: str):
+    # SCENES, every scene in the bank's order, is read only when asked for.
+    if name == "SCENES":
+        return tuple(get_scene(i) for i in scene_ids())
+    raise AttributeError(name)
