@@ -49,3 +49,26 @@ def __getattr__(name: str):
     if name == "SCENES":
         return tuple(get_scene(i) for i in scene_ids())
     raise AttributeError(name)
+
+
+def is_scene_path(ref: str) -> bool:
+    """Whether an assignment's or a command's `scene` names a file (`scenes/parabola.toml`)
+    rather than an id (`wedge`)."""
+    return ref.endswith(".toml") or "/" in ref or "\\" in ref
+
+
+def find_scene(ref: str, base: Path | None = None, scenes_dir: Path | None = None) -> Scene:
+    """The scene `ref` names: a scene file (relative to `base`, the folder of the file that
+    names it), else an id found as `<id>.toml` in `scenes_dir`, else in the bank. Instructors'
+    files are read with full validation."""
+    if is_scene_path(ref):
+        path = Path(ref)
+        return read_scene_file(path if path.is_absolute() or base is None else base / path)
+    if scenes_dir is not None and (Path(scenes_dir) / f"{ref}.toml").is_file():
+        return read_scene_file(Path(scenes_dir) / f"{ref}.toml")
+    return get_scene(ref)
+
+
+def scene_files(folder: Path) -> list[Path]:
+    """The scene files in a folder (`*.toml`), by name."""
+    return sorted(p for p in Path(folder).glob("*.toml") if p.is_file())
