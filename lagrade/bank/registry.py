@@ -72,3 +72,20 @@ def find_scene(ref: str, base: Path | None = None, scenes_dir: Path | None = Non
 def scene_files(folder: Path) -> list[Path]:
     """The scene files in a folder (`*.toml`), by name."""
     return sorted(p for p in Path(folder).glob("*.toml") if p.is_file())
+
+
+def is_bank_scene(scene: Scene) -> bool:
+    """Whether `scene` is the installed bank's own (its id and its file's very text)."""
+    if scene.id not in scene_ids():
+        return False
+    bank = get_scene(scene.id)
+    return bank is scene or bank.source == scene.source
+
+
+def scene_reference(scene: Scene) -> dict[str, str]:
+    """How a judge request (`check --batch`'s "problem", a manifest entry) names a scene: the
+    bank's by id alone; any other by id and the text of its file, so that the request carries
+    what it needs wherever it is judged."""
+    if is_bank_scene(scene):
+        return {"scene": scene.id}
+    return {"scene": scene.id, "scene_text": scene.source}

@@ -38,6 +38,9 @@ def _next_steps(folder: Path) -> str:
             f"--links {folder}/links.csv",
             f"  PrairieLearn:  lagrade export prairielearn {manifest} --out {folder}/pl-questions",
             f"  Canvas/Moodle: lagrade grade {manifest} {folder}/submissions --export canvas",
+            "",
+            "Your own system: `lagrade scene new my_system` writes a scene file to fill in, and",
+            "  docs/scenes.md (in lagrade's source) walks from there to a graded class.",
         ]
     )
 

@@ -11,19 +11,21 @@ from lagrade.errors import AssignmentError
 
 
 def run(args: argparse.Namespace) -> int:
+    from lagrade.grading.manifest import carried_scene_texts
     from lagrade.grading.prairielearn import export_prairielearn, info_json
 
-    source, seed = Path(args.source), args.seed
-    if source.suffix == ".json":  # a manifest: its assignment copy and seed
+    source, seed, texts = Path(args.source), args.seed, None
+    if source.suffix == ".json":  # a manifest: its assignment copy, seed and scene files
         try:
             manifest = json.loads(source.read_text(encoding="utf-8"))
             source = source.parent / manifest["assignment"]["file"]
             seed = manifest["seed"] if seed is None else seed
         except (OSError, ValueError, KeyError, TypeError) as error:
             raise AssignmentError(f"{args.source} is not a lagrade manifest ({error})") from None
+        texts = carried_scene_texts(manifest)
     if seed is None:
         raise AssignmentError("give --seed (or export from a manifest.json, which has one)")
-    folders = export_prairielearn(source, seed, args.out)
+    folders = export_prairielearn(source, seed, args.out, args.scenes, texts)
     for folder in folders:
         print(f"{folder}  ({info_json(folder)['title']})")
     print(
@@ -48,4 +50,7 @@ def add_parser(commands: argparse._SubParsersAction) -> None:
     export.add_argument("source", metavar="ASSIGNMENT.toml|manifest.json")
     export.add_argument("--seed", type=int, default=None, help="the assignment seed")
     export.add_argument("--out", type=Path, required=True, help="folder for the questions")
+    export.add_argument(
+        "--scenes", type=Path, default=None, help="folder of scene files the assignment names by id"
+    )
     export.set_defaults(run=run)
