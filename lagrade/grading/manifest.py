@@ -208,6 +208,6 @@ def _check_variants(manifest: Mapping[str, Any]) -> None:
                 mismatches.append(f"{student['id']} problem {entry['index']} ({entry['scene']})")
     if mismatches:
         raise AssignmentError(
-            "the bank no longer reproduces these variants, so grading would not match the "
+            "the scenes no longer reproduce these variants, so grading would not match the "
             f"handouts: {', '.join(mismatches[:10])}" + (" …" if len(mismatches) > 10 else "")
         )

@@ -24,7 +24,7 @@ import numpy as np
 import sympy as sp
 
 from lagrade.bank.registry import get_scene
-from lagrade.bank.scenefile import scene_from_text
+from lagrade.bank.scenefile import scene_from_text, sha256
 from lagrade.errors import LagradeError, ParseError, RequestError
 from lagrade.judge.catalogue import Catalogue
 from lagrade.judge.compiled import Compiled, finite_mask
@@ -242,7 +242,11 @@ class Problem:
 
 def problem_key(spec: Mapping[str, Any]) -> str:
     """The identity of a problem field: its canonical JSON (a seed for the sample points and
-    the key of the worker's cache)."""
+    the key of the worker's cache), a scene file's text in it by its hash (so that the keys a
+    worker remembers stay small whatever a request carries)."""
+    text = spec.get("scene_text")
+    if isinstance(text, str):
+        spec = {**spec, "scene_text": f"sha256:{sha256(text)}"}
     return json.dumps(spec, sort_keys=True, separators=(",", ":"))
 
 

@@ -33,9 +33,9 @@ LAGRANGIAN_PARTS = ("lagrangian", "eom", "momenta", "cyclic", "conserved", "expr
 def as_expr(value: object) -> sp.Expr:
     """A scene declaration's value as a sympy expression, without evaluating text.
 
-    Declarations are Python expressions written in the bank's own modules, so what arrives is
-    already a sympy object or a plain number (the 0 of a fixed axle); a string is refused
-    rather than parsed, so nothing here can turn text into code.
+    A scene file's expressions arrive already read by the notation layer (`lagrade.bank`), so
+    what comes here is a sympy object or a plain number (the 0 of a fixed axle); a string is
+    refused rather than parsed, so nothing here can turn text into code.
     """
     if isinstance(value, sp.Basic):
         return value

@@ -41,3 +41,12 @@ def test_a_request_carrying_a_scene_file_is_judged():
 def test_a_scene_text_that_is_no_scene_is_a_malformed_request(text, message):
     with pytest.raises(RequestError, match=message):
         check({"scene": "parabola", "scene_text": text}, "lagrangian", "0", time_limit=None)
+
+
+def test_a_carried_text_is_known_by_its_hash_in_a_workers_memory():
+    """The keys a worker remembers answers by stay small however long the carried text is."""
+    from lagrade.judge.problem import problem_key
+
+    short = problem_key({"scene": "parabola", "scene_text": TEXT, "seed": 3})
+    longer = problem_key({"scene": "parabola", "scene_text": TEXT + "#" * 100_000, "seed": 3})
+    assert len(short) == len(longer) < 200 and short != longer

@@ -18,6 +18,7 @@ from __future__ import annotations
 import hashlib
 import re
 import threading
+from collections import OrderedDict
 from pathlib import Path
 
 import lagrade.untrusted as untrusted
@@ -32,7 +33,11 @@ MAX_SCENE_BYTES = 256 * 1024
 SCENE_ID = re.compile(r"[A-Za-z0-9][A-Za-z0-9_-]{0,63}\Z")
 
 _lock = threading.Lock()
-_read: dict[tuple[str, str, bool], Scene] = {}
+#: Scenes read in this process, by (text's hash, id, validated): the same text gives the same
+#: Scene object (caches keyed by a scene rely on it), the least recently read dropped past a
+#: bound, so that requests carrying many different texts cannot grow the process without end.
+_read: OrderedDict[tuple[str, str, bool], Scene] = OrderedDict()
+_KEPT = 256
 
 
 def sha256(text: str) -> str:
@@ -85,11 +90,15 @@ def scene_from_text(text: str, scene_id: str, origin: str = "", validate: bool =
     key = (sha256(text) if isinstance(text, str) else "", scene_id, validate)
     with _lock:
         found = _read.get(key)
-    if found is not None:
-        return found
+        if found is not None:
+            _read.move_to_end(key)
+            return found
     scene = _read_text(text, scene_id, origin, validate)
     with _lock:
-        return _read.setdefault(key, scene)
+        found = _read.setdefault(key, scene)
+        if len(_read) > _KEPT:
+            _read.popitem(last=False)
+        return found
 
 
 def _read_text(text: str, scene_id: str, origin: str, validate: bool) -> Scene:
