@@ -76,3 +76,17 @@ def test_bank_show_reads_a_file(scene_folder, capsys):
     assert data["id"] == "parabola" and data["dof"] == 1 and data["cyclic"] == []
     assert main(["bank", "show", str(scene_folder / "relativistic.toml"), "--format", "latex"]) == 0
     assert r"\dot{x}" in capsys.readouterr().out
+
+
+def test_the_walk_through_file_is_the_one_tested_and_shipped():
+    """docs/scenes.md's example is, line for line, the file these tests take through the chain
+    and the one examples/ ships (after their two header comment lines)."""
+    import pathlib
+    import re
+
+    root = pathlib.Path(__file__).resolve().parents[2]
+    doc = (root / "docs" / "scenes.md").read_text()
+    (block,) = re.findall(r"```toml\n(title = \"Bead on a spinning.*?)```", doc, flags=re.S)
+    for copy in (root / "tests/scenes/files/parabola.toml", root / "examples/scenes/parabola.toml"):
+        body = copy.read_text().split("\n", 3)[3]
+        assert body == block, copy
