@@ -3,6 +3,7 @@
     LagradeError                    anything a user can fix; str() says what to do next
     ├── DomainError                 a parameter domain that cannot be read ('(0, pi/2)' is fine)
     ├── SceneError                  an inconsistent scene declaration (lists every problem)
+    │   └── SceneFileError          a scene file that cannot be used (every problem, by key)
     ├── UnknownSceneError           a scene id the bank does not have (lists the ids)
     ├── AssignmentError             an assignment file, roster, manifest or folder unusable as given
     ├── UnreadableInput             bytes that are not the text they claim to be (not UTF-8, a lone
@@ -43,6 +44,21 @@ class SceneError(LagradeError):
 
     def __reduce__(self):
         return (SceneError, (self.scene_id, self.problems))
+
+
+class SceneFileError(SceneError):
+    """A scene file that cannot be used: `problems` lists each one as `key: message` (an
+    expression's with the parser's caret), all found in one reading."""
+
+    def __init__(self, origin: str, problems: list[str]):
+        self.origin = origin
+        self.scene_id = origin
+        self.problems = list(problems)
+        lines = "\n".join(f"  - {p}" for p in self.problems)
+        LagradeError.__init__(self, f"{origin} is not a valid scene file:\n{lines}")
+
+    def __reduce__(self):
+        return (SceneFileError, (self.origin, self.problems))
 
 
 class UnknownSceneError(LagradeError, KeyError):

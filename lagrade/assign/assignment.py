@@ -10,7 +10,7 @@ Reading it checks everything against the bank and reports every problem in one
     points = 1                      # default points per part (optional)
 
     [[problems]]
-    scene = "wedge"
+    scene = "wedge"                 # a bank id, or a scene file: "scenes/parabola.toml"
     parts = ["dof", "lagrangian", "eom", { part = "expression", quantity = "block_acceleration" }]
     points = { lagrangian = 3, eom = 4 }   # or one number for every part
     variants = 12                          # size of the variant pool (default: one per student)
@@ -21,15 +21,16 @@ Reading it checks everything against the bank and reports every problem in one
 from __future__ import annotations
 
 import datetime as dt
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
 import lagrade.untrusted as untrusted
-from lagrade.bank.registry import get_scene, scene_ids
+from lagrade.bank.registry import find_scene, get_scene, is_scene_path, scene_ids
+from lagrade.bank.scenefile import scene_from_text, scene_id_of, sha256
 from lagrade.errors import AssignmentError, LagradeError, UnreadableInput
-from lagrade.mechanics.scene import Scene
+from lagrade.mechanics.scene import LAGRANGIAN_PARTS, Scene
 
 #: The parts of the five-step method, in the order a handout asks them.
 PARTS: tuple[str, ...] = (
@@ -79,7 +80,9 @@ class Part:
 
 @dataclass(frozen=True)
 class Problem:
-    """A scene with the parts to ask and the limits of its variant pool."""
+    """A scene with the parts to ask and the limits of its variant pool. `scene_ref` is the
+    assignment's `scene` as written (a bank id or a scene file's path); `loaded` the scene it
+    names, read when the assignment was."""
 
     index: int
     scene_id: str
@@ -88,10 +91,12 @@ class Problem:
     variants: int | None = None
     names: Mapping[str, tuple[str, ...]] = field(default_factory=dict)
     options: Mapping[str, tuple[str, ...]] = field(default_factory=dict)
+    scene_ref: str = ""
+    loaded: Scene | None = field(default=None, compare=False, repr=False)
 
     @property
     def scene(self) -> Scene:
-        return get_scene(self.scene_id)
+        return self.loaded if self.loaded is not None else get_scene(self.scene_id)
 
     @property
     def total_points(self) -> float:
@@ -112,10 +117,52 @@ class Assignment:
     def total_points(self) -> float:
         return sum(p.total_points for p in self.problems)
 
+    def scene_files(self) -> dict[str, dict[str, str]]:
+        """Every scene the assignment uses, by id: the `scene` as written, the text of its
+        file (a bank scene's too) and that text's SHA-256: what a manifest carries, so that
+        grading needs no file but the manifest."""
+        found: dict[str, dict[str, str]] = {}
+        for p in self.problems:
+            text = p.scene.source
+            found.setdefault(
+                p.scene_id, {"ref": p.scene_ref or p.scene_id, "sha256": sha256(text), "text": text}
+            )
+        return found
 
-def load_assignment(path: str | Path) -> Assignment:
-    """Read and check an assignment file; one AssignmentError lists every problem in it."""
-    return parse_assignment(assignment_table(path), source=str(path))
+
+#: Resolves an assignment's `scene` (as written) to a Scene.
+SceneResolver = Callable[[str], Scene]
+
+
+def scene_resolver(
+    base: Path | None = None,
+    scenes_dir: Path | None = None,
+    texts: Mapping[str, str] | None = None,
+) -> SceneResolver:
+    """How `scene = "..."` is found: in `texts` (a manifest's carried scene files, by the
+    `scene` as written), else as a file relative to `base` (the assignment's folder), else as
+    `<id>.toml` in `scenes_dir`, else in the bank."""
+
+    def resolve(ref: str) -> Scene:
+        if texts is not None and ref in texts:
+            scene_id = scene_id_of(ref) if is_scene_path(ref) else ref
+            return scene_from_text(texts[ref], scene_id, origin=ref, validate=False)
+        return find_scene(ref, base, scenes_dir)
+
+    return resolve
+
+
+def load_assignment(
+    path: str | Path,
+    scenes_dir: str | Path | None = None,
+    scene_texts: Mapping[str, str] | None = None,
+) -> Assignment:
+    """Read and check an assignment file; one AssignmentError lists every problem in it. Its
+    scene files are found relative to its folder, or in `scenes_dir`, or in `scene_texts` (a
+    manifest's copies, by the `scene` as written)."""
+    path = Path(path)
+    resolve = scene_resolver(path.parent, Path(scenes_dir) if scenes_dir else None, scene_texts)
+    return parse_assignment(assignment_table(path), source=str(path), resolve=resolve)
 
 
 def assignment_table(path: str | Path) -> dict[str, Any]:
@@ -133,8 +180,12 @@ def assignment_table(path: str | Path) -> dict[str, Any]:
         raise AssignmentError(str(exc)) from None
 
 
-def parse_assignment(data: Mapping[str, Any], source: str = "assignment") -> Assignment:
-    """Check the parsed TOML of an assignment against the bank (see the module docstring)."""
+def parse_assignment(
+    data: Mapping[str, Any], source: str = "assignment", resolve: SceneResolver | None = None
+) -> Assignment:
+    """Check the parsed TOML of an assignment against its scenes (see the module docstring);
+    `resolve` finds each problem's scene (default: bank ids and files from the current folder)."""
+    resolve = resolve or scene_resolver()
     problems: list[str] = []
     for key in sorted(set(data) - _TOP_KEYS):
         problems.append(f"{key}: unknown field (known: {', '.join(sorted(_TOP_KEYS))})")
@@ -157,9 +208,10 @@ def parse_assignment(data: Mapping[str, Any], source: str = "assignment") -> Ass
         problems.append("problems: the assignment asks no problem (add [[problems]] tables)")
     else:
         for i, raw in enumerate(raw_problems, start=1):
-            problem = _parse_problem(i, raw, default_points, problems)
+            problem = _parse_problem(i, raw, default_points, problems, resolve)
             if problem is not None:
                 parsed.append(problem)
+        _one_scene_per_id(parsed, problems)
     if problems:
         lines = "\n".join(f"  - {p}" for p in problems)
         error = AssignmentError(f"{source} is not a valid assignment:\n{lines}")
@@ -184,8 +236,24 @@ def _is_points(value: Any) -> bool:
     return isinstance(value, int | float) and not isinstance(value, bool) and value > 0
 
 
+def _one_scene_per_id(parsed: list[Problem], problems: list[str]) -> None:
+    """Two different scenes under one id would share figures, manifest entries and variants."""
+    seen: dict[str, Problem] = {}
+    for p in parsed:
+        first = seen.setdefault(p.scene_id, p)
+        if first.scene is not p.scene:
+            problems.append(
+                f"problems[{p.index}].scene: {p.scene_ref!r} and problem {first.index}'s "
+                f"{first.scene_ref!r} are two scenes with the id {p.scene_id!r}; rename one file"
+            )
+
+
+def _indented(message: str) -> str:
+    return message.replace("\n", "\n    ")
+
+
 def _parse_problem(
-    index: int, raw: Any, default_points: float, problems: list[str]
+    index: int, raw: Any, default_points: float, problems: list[str], resolve: SceneResolver
 ) -> Problem | None:
     where = f"problems[{index}]"
     if not isinstance(raw, dict):
@@ -193,17 +261,18 @@ def _parse_problem(
         return None
     for key in sorted(set(raw) - _PROBLEM_KEYS):
         problems.append(f"{where}.{key}: unknown field (known: {', '.join(sorted(_PROBLEM_KEYS))})")
-    scene_id = raw.get("scene")
+    scene_ref = raw.get("scene")
     scene: Scene | None = None
-    if not isinstance(scene_id, str):
+    if not isinstance(scene_ref, str):
         problems.append(
-            f"{where}.scene: missing or not a string; the bank has: {', '.join(scene_ids())}"
+            f"{where}.scene: missing or not a string; a scene file (scenes/pendulum.toml) or "
+            f"one of the bank's: {', '.join(scene_ids())}"
         )
     else:
         try:
-            scene = get_scene(scene_id)
+            scene = resolve(scene_ref)
         except LagradeError as exc:
-            problems.append(f"{where}.scene: {exc}")
+            problems.append(f"{where}.scene: {_indented(str(exc))}")
     before = len(problems)
     points = raw.get("points", default_points)
     parts = _parse_parts(where, raw.get("parts"), scene, problems)
@@ -228,7 +297,10 @@ def _parse_problem(
         title = ""
     if scene is None or len(problems) > before:
         return None
-    return Problem(index, scene.id, tuple(parts), title or scene.title, variants, names, options)
+    return Problem(
+        index, scene.id, tuple(parts), title or scene.title, variants, names, options,
+        scene_ref, scene,
+    )  # fmt: skip
 
 
 def _parse_parts(where: str, raw: Any, scene: Scene | None, problems: list[str]) -> list[Part]:
@@ -302,7 +374,14 @@ def _check_quantity(at: str, quantity: Any, scene: Scene | None, problems: list[
 
 
 def _scene_can_ask(at: str, name: str, scene: Scene, problems: list[str]) -> bool:
-    """A scene without any conserved quantity cannot be asked for one."""
+    """A scene without any conserved quantity cannot be asked for one; a scene given by its
+    Lagrangian has no bodies to ask DOF, coordinates, transformation, T or V about."""
+    if scene.given_by_lagrangian and name not in LAGRANGIAN_PARTS:
+        problems.append(
+            f"{at}: scene {scene.id!r} is given by its Lagrangian and declares no bodies, so "
+            f"{name!r} cannot be asked; ask {', '.join(LAGRANGIAN_PARTS[:-1])} or a quantity"
+        )
+        return False
     if name == "conserved":
         try:
             found = scene.default.conserved_quantities

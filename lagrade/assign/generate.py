@@ -47,18 +47,20 @@ def generate(
     force: bool = False,
     progress: Progress | None = None,
     verify: Verifier | None = None,
+    scenes_dir: str | Path | None = None,
 ) -> GenerateResult:
     """Write handouts, keys, answer sheets, figures and `manifest.json` for every student.
 
     Raises AssignmentError (listing every problem found) before anything is written when the
-    assignment, roster, formats, templates or output folder cannot be used, or when `verify`
-    reports a variant whose key the grader would not accept.
+    assignment (or a scene file it names), roster, formats, templates or output folder cannot be
+    used, or when `verify` reports a variant whose key the grader would not accept. Scene files
+    are found relative to the assignment file, or by id in `scenes_dir`, else in the bank.
     """
     out = Path(out_dir)
     errors: list[str] = []
     assignment = roster = chosen = None
     for attempt in (
-        lambda: load_assignment(assignment_path),
+        lambda: load_assignment(assignment_path, scenes_dir),
         lambda: load_roster(roster_path),
         lambda: parse_formats(formats),
     ):

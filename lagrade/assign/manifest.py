@@ -1,6 +1,7 @@
 """The manifest (`manifest.json`) that fixes every student's variant for grading: the assignment's
-hash, the seed, each problem's parts, and per student the files written and the names, options
-and values drawn. Keys are sorted and nothing records a time, so a rerun gives the same bytes."""
+hash, the seed, each problem's parts, the scene files used (their text and hash, so that grading
+needs nothing but the manifest), and per student the files written and the names, options and
+values drawn. Keys are sorted and nothing records a time, so a rerun gives the same bytes."""
 
 from __future__ import annotations
 
@@ -51,7 +52,7 @@ def student_manifest(
                 "options": dict(choice.options),
                 "values": dict(choice.values),
                 "coordinates": view["coordinate_names"],
-                "figure": view["figure"]["svg"].removeprefix("../"),
+                "figure": view["figure"]["svg"].removeprefix("../") if view["figure"] else None,
                 "quantities": {
                     k: {
                         "value": q["value"],
@@ -114,6 +115,7 @@ def manifest_json(
         "seed": seed,
         "formats": list(formats),
         "problems": problems,
+        "scenes": assignment.scene_files(),
         "students": students,
     }
     return json.dumps(manifest, indent=2, sort_keys=True, ensure_ascii=False) + "\n"

@@ -185,9 +185,10 @@ class Generator:
                 self.views[cache_key] = problem_view(problem, choice, name)
             view = self.views[cache_key]
             if name not in self.figures_written:
-                figure = symbolic_solution(problem.scene_id, *presentation(choice))["figure"]
-                self._write(tmp / "figures" / f"{name}.svg", figure.svg)
-                self._write(tmp / "figures" / f"{name}.pdf", figure.pdf)
+                figure = symbolic_solution(problem.scene, *presentation(choice))["figure"]
+                if figure is not None:  # a scene given by its Lagrangian has none
+                    self._write(tmp / "figures" / f"{name}.svg", figure.svg)
+                    self._write(tmp / "figures" / f"{name}.pdf", figure.pdf)
                 self.figures_written.add(name)
             views.append(view)
         return views

@@ -31,9 +31,24 @@ def energy_function_name(variant: SceneVariant) -> str:
 
 
 def solution_data(variant: SceneVariant) -> dict[str, Any]:
-    """The five-step solution as JSON-ready data."""
+    """The five-step solution as JSON-ready data (a scene given by its Lagrangian has no bodies:
+    its DOF, T and V are null and it has no constraints or transformation equations)."""
     system = variant.system
     text = expression_text
+    if variant.scene.given_by_lagrangian:
+        bodies: dict[str, Any] = {"dof": None, "constraints": [], "transformation": {}}
+        bodies |= {"T": None, "V": None}
+    else:
+        bodies = {
+            "dof": variant.dof,
+            "constraints": [
+                {"kind": kind, "expression": text(f)} for kind, f in variant.constraints if f != 0
+            ]
+            + [{"kind": kind, "expression": ""} for kind, f in variant.constraints if f == 0],
+            "transformation": {k: text(v) for k, v in variant.transformation.items()},
+            "T": text(variant.kinetic_energy),
+            "V": text(variant.potential_energy),
+        }
     return {
         "id": variant.scene.id,
         "title": variant.scene.title,
@@ -51,14 +66,11 @@ def solution_data(variant: SceneVariant) -> dict[str, Any]:
             if p.name in variant.used_parameters  # an option may leave one out
         },
         "options": dict(variant.options),
-        "dof": variant.dof,
-        "constraints": [
-            {"kind": kind, "expression": text(f)} for kind, f in variant.constraints if f != 0
-        ]
-        + [{"kind": kind, "expression": ""} for kind, f in variant.constraints if f == 0],
-        "transformation": {k: text(v) for k, v in variant.transformation.items()},
-        "T": text(variant.kinetic_energy),
-        "V": text(variant.potential_energy),
+        "dof": bodies["dof"],
+        "constraints": bodies["constraints"],
+        "transformation": bodies["transformation"],
+        "T": bodies["T"],
+        "V": bodies["V"],
         "L": text(variant.lagrangian),
         "momenta": {
             f"p_{q}": text(p)
@@ -93,11 +105,15 @@ def solution_text(variant: SceneVariant) -> str:
     )
     if d["options"]:
         lines.append("options:     " + ", ".join(f"{k}={v}" for k, v in d["options"].items()))
-    k = len(d["constraints"])
-    lines.append(f"DOF:         {d['dof']}  (3N - k with k = {k} constraint{'s' * (k != 1)})")
-    lines.append("transformation:")
-    lines += [f"  {k} = {v}" for k, v in d["transformation"].items()]
-    lines += ["", f"T = {d['T']}", f"V = {d['V']}", f"L = {d['L']}", ""]
+    if d["dof"] is None:
+        lines += ["given by its Lagrangian (no bodies: no constraints, DOF, T or V)", ""]
+        lines += [f"L = {d['L']}", ""]
+    else:
+        k = len(d["constraints"])
+        lines.append(f"DOF:         {d['dof']}  (3N - k with k = {k} constraint{'s' * (k != 1)})")
+        lines.append("transformation:")
+        lines += [f"  {k} = {v}" for k, v in d["transformation"].items()]
+        lines += ["", f"T = {d['T']}", f"V = {d['V']}", f"L = {d['L']}", ""]
     lines += [f"{k} = {v}" for k, v in d["momenta"].items()]
     lines.append("equations of motion (each = 0):")
     lines += [f"  {e} = 0" for e in d["eom"]]
@@ -120,8 +136,9 @@ def solution_latex(variant: SceneVariant) -> str:
 
     system = variant.system
     out = [f"% {variant.scene.title} ({variant.scene.id})", "\\begin{align*}"]
-    out.append(f"T &= {tex(variant.kinetic_energy)} \\\\")
-    out.append(f"V &= {tex(variant.potential_energy)} \\\\")
+    if not variant.scene.given_by_lagrangian:
+        out.append(f"T &= {tex(variant.kinetic_energy)} \\\\")
+        out.append(f"V &= {tex(variant.potential_energy)} \\\\")
     out.append(f"L &= {tex(variant.lagrangian)} \\\\")
     for j, p in zip(variant.jets, system.generalized_momenta, strict=True):
         out.append(f"p_{{{sp.latex(j.q)}}} &= {tex(p)} \\\\")
@@ -133,5 +150,8 @@ def solution_latex(variant: SceneVariant) -> str:
     out[-1] = out[-1].removesuffix(" \\\\")
     out.append("\\end{align*}")
     cyclic = ", ".join(variant.cyclic_coordinates) or "none"
-    out.append(f"Degrees of freedom: {variant.dof}. Cyclic coordinates: {cyclic}.")
+    if variant.scene.given_by_lagrangian:
+        out.append(f"Cyclic coordinates: {cyclic}.")
+    else:
+        out.append(f"Degrees of freedom: {variant.dof}. Cyclic coordinates: {cyclic}.")
     return "\n".join(out)

@@ -24,6 +24,8 @@ _ORDERS = {
 
 
 def _time_dependent(variant: SceneVariant) -> bool:
+    if variant.scene.given_by_lagrangian:
+        return variant.lagrangian.has(mech.t)
     exprs = [x for b in variant.bodies for x in b.position] + [variant.potential_energy]
     return any(getattr(x, "has", lambda _: False)(mech.t) for x in exprs)
 

@@ -21,7 +21,7 @@ from lagrade.assign.templating import toml_literal
 from lagrade.assign.tidy import tidy
 from lagrade.assign.units import Number, unit_formats
 from lagrade.assign.variants import VariantChoice
-from lagrade.mechanics.scene import RigidBody, SceneVariant
+from lagrade.mechanics.scene import LAGRANGIAN_PARTS, RigidBody, Scene, SceneVariant
 from lagrade.notation import printer as rm
 from lagrade.notation.keys import key_answer
 
@@ -73,12 +73,10 @@ def _body_kind(body: Any) -> str:
 
 
 @lru_cache(maxsize=512)
-def symbolic_solution(scene_id: str, names: tuple, options: tuple) -> dict[str, Any]:
+def symbolic_solution(scene: Scene, names: tuple, options: tuple) -> dict[str, Any]:
     """The derived solution of a presentation (names, options) of a scene: it does not depend on
-    the parameter values, so every seed with the same names and options shares it."""
-    from lagrade.bank.registry import get_scene
-
-    scene = get_scene(scene_id)
+    the parameter values, so every seed with the same names and options shares it. A scene given
+    by its Lagrangian has no bodies: no constraints, transformation, T, V or figure."""
     v = SceneVariant(scene, names=dict(names), options=dict(options))
     coords = v.coordinates
 
@@ -105,27 +103,32 @@ def symbolic_solution(scene_id: str, names: tuple, options: tuple) -> dict[str, 
             return sp.Symbol(name)
         return sp.Symbol(f"{head}_{sub.replace('_', '')}" if sub else head)
 
+    given_l = scene.given_by_lagrangian
     constraints = [
         {
             "description": render_prose(label if label != "declared" else "constraint"),
             "math": eq(f, 0) if f != 0 else None,  # a tilt has no symbol: words alone
         }
-        for label, f in v.constraints
+        for label, f in ([] if given_l else v.constraints)
     ]
+    keyed = [p for p in KEYED_PARTS if p != "conserved" and (not given_l or p in LAGRANGIAN_PARTS)]
     return {
         "statement": _statement(v),
         "coordinates": [math(sp.Symbol(c)) for c in coords],
         "coordinate_names": list(coords),
+        "given_by_lagrangian": given_l,
         "bodies": [
             {"name": b.name, "kind": _body_kind(b), "freedoms": b.freedoms} for b in v.bodies
         ],
         "freedoms": sum(b.freedoms for b in v.bodies),
         "constraints": constraints,
         "k": len(constraints),
-        "dof": v.dof,
-        "transformation": [eq(sp.Symbol(k), e) for k, e in v.transformation.items()],
-        "T": math(neat(v.kinetic_energy)),
-        "V": math(neat(v.potential_energy)),
+        "dof": None if given_l else v.dof,
+        "transformation": (
+            [] if given_l else [eq(sp.Symbol(k), e) for k, e in v.transformation.items()]
+        ),
+        "T": None if given_l else math(neat(v.kinetic_energy)),
+        "V": None if given_l else math(neat(v.potential_energy)),
         "L": math(neat(v.lagrangian)),
         "momenta": [
             eq(label(f"p_{c}"), neat(p))
@@ -138,11 +141,11 @@ def symbolic_solution(scene_id: str, names: tuple, options: tuple) -> dict[str, 
             {"name": name, "math": eq(label(name), neat(q))}
             for name, q in system.conserved_quantities.items()
         ],
-        "figure": draw(v),
+        "figure": None if given_l else draw(v),
         # the answers as a student types them: the very text the grader checks before it
         # accepts a variant (lagrade.judge.verify), one entry per part the scene can ask
         "key_answers": {
-            **{part: key_answer(v, part) for part in KEYED_PARTS if part != "conserved"},
+            **{part: key_answer(v, part) for part in keyed},
             **({"conserved": key_answer(v, "conserved")} if system.conserved_quantities else {}),
             **{q: key_answer(v, EXPRESSION, q) for q in v.quantities},
         },
@@ -161,7 +164,7 @@ def problem_view(problem: Problem, choice: VariantChoice, name: str) -> dict[str
     """Everything a template shows about one student's variant of one problem; `name` is the
     figure's file name (without extension) in the `figures/` folder."""
     scene = problem.scene
-    symbolic = symbolic_solution(scene.id, *presentation(choice))
+    symbolic = symbolic_solution(scene, *presentation(choice))
     variant = choice.variant(scene)
     parameters = _parameters(choice, variant)
     quantities = _quantities(problem, choice, variant)
@@ -178,7 +181,9 @@ def problem_view(problem: Problem, choice: VariantChoice, name: str) -> dict[str
         "parts": parts,
         "asked": [p.part for p in problem.parts],
         "total_points": problem.total_points,
-        "figure": {
+        "figure": None
+        if symbolic["figure"] is None
+        else {
             "svg": f"../figures/{name}.svg",
             "pdf": f"../figures/{name}.pdf",
             "inline_svg": _inline_svg(symbolic["figure"].svg),

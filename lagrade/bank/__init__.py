@@ -1,4 +1,5 @@
-"""Layer 1: the bank of scenes, one small declarative module per scene family."""
+"""Layer 1½ (above notation, which reads its expressions): scenes as TOML files — the bank's 24,
+shipped in `scenes/`, and instructors' own — read by one reader (`scenefile`); get_scene."""
 
 from lagrade.bank.registry import get_scene, scene_ids
 

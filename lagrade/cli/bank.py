@@ -1,4 +1,5 @@
-"""`lagrade bank list` and `lagrade bank show SCENE`: the scenes and their derived solutions."""
+"""`lagrade bank list [PATH…]` and `lagrade bank show SCENE`: scenes and their derived solutions;
+a scene is a bank id or a scene file, and `list` takes files and folders of them too."""
 
 from __future__ import annotations
 
@@ -6,20 +7,23 @@ import argparse
 
 
 def bank_list(args: argparse.Namespace) -> int:
-    from lagrade.bank import get_scene, scene_ids
+    from lagrade.bank.listing import list_scenes
 
-    for sid in scene_ids():
-        scene = get_scene(sid)
-        coords = ", ".join(scene.coordinates)
-        print(f"{sid:22} {scene.title}  [{coords}]")
+    rows, problems = list_scenes(args.paths)
+    for sid, title, coordinates in rows:
+        print(f"{sid:22} {title}  [{', '.join(coordinates)}]")
+    if problems:
+        from lagrade.errors import LagradeError
+
+        raise LagradeError("\n".join(problems))
     return 0
 
 
 def bank_show(args: argparse.Namespace) -> int:
     from lagrade.assign import solution as export
-    from lagrade.bank import get_scene
+    from lagrade.bank.registry import find_scene
 
-    scene = get_scene(args.scene)
+    scene = find_scene(args.scene)
     variant = scene.default if args.seed is None else scene.variant(args.seed)
     render = {
         "text": export.solution_text,
@@ -32,12 +36,19 @@ def bank_show(args: argparse.Namespace) -> int:
 
 def add_parser(commands: argparse._SubParsersAction) -> None:
     """Register this command with the `lagrade` parser."""
-    bank = commands.add_parser("bank", help="browse the problem bank")
+    bank = commands.add_parser("bank", help="browse the problem bank and your scene files")
     bank_commands = bank.add_subparsers(dest="bank_command", metavar="ACTION", required=True)
-    listing = bank_commands.add_parser("list", help="list every scene id with its title")
+    listing = bank_commands.add_parser(
+        "list",
+        help="list scenes with their titles: the bank, or the scene files and folders given",
+        epilog="example: lagrade bank list examples/scenes wedge",
+    )
+    listing.add_argument(
+        "paths", nargs="*", metavar="PATH", help="scene files, folders of them, or bank ids"
+    )
     listing.set_defaults(run=bank_list)
     show = bank_commands.add_parser("show", help="show a scene's full derived solution")
-    show.add_argument("scene", help="scene id (see `lagrade bank list`)")
+    show.add_argument("scene", help="a bank id (see `lagrade bank list`) or a scene file")
     show.add_argument(
         "--seed", type=int, default=None, help="variant seed (default: the declared form)"
     )

@@ -45,6 +45,9 @@ def _next_steps(folder: Path) -> str:
             f"  PrairieLearn:  {lagrade} export prairielearn {manifest} "
             f"--out {folder}/pl-questions",
             f"  Canvas/Moodle: {lagrade} grade {manifest} {folder}/submissions --export canvas",
+            f"  your own system: {lagrade} scene new my_system",
+            "(a scene file to fill in; docs/scenes.md in lagrade's source walks from there to a "
+            "graded class)",
         ]
     )
 

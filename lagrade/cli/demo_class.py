@@ -23,7 +23,7 @@ from lagrade.assign.generate import generate
 from lagrade.assign.solution import latex_symbol_names
 from lagrade.assign.templating import toml_string
 from lagrade.grading.batch import BatchSummary, grade, question
-from lagrade.grading.manifest import student_variant
+from lagrade.grading.manifest import entry_variant
 from lagrade.judge.key import key_answer
 from lagrade.judge.verify import verify_variant
 from lagrade.mechanics.scene import SceneVariant
@@ -282,7 +282,7 @@ def write_submissions(
         lines = [f"student_id = {toml_string(sid)}", f"name = {toml_string(student['name'])}"]
         notes = [f"profile: {profile}"]
         for problem, entry in zip(manifest["problems"], student["problems"], strict=True):
-            variant = student_variant(entry["scene"], entry["seed"])
+            variant = entry_variant(entry)
             answers, planted_here = _answers(variant, problem["parts"], entry, rng, profile)
             notes += [f"problem {problem['index']} {p}" for p in planted_here]
             lines.append(f"\n[problem{problem['index']}]")

@@ -14,10 +14,11 @@ from lagrade.errors import AssignmentError, LagradeError
 def run(args: argparse.Namespace) -> int:
     if args.system == "gradescope":
         return _gradescope(args)
+    from lagrade.grading.manifest import carried_scene_texts
     from lagrade.grading.prairielearn import export_prairielearn, info_json
 
-    source, seed = Path(args.source), args.seed
-    if source.suffix == ".json":  # a manifest: its assignment copy and seed
+    source, seed, texts = Path(args.source), args.seed, None
+    if source.suffix == ".json":  # a manifest: its assignment copy, seed and scene files
         try:
             what = str(args.source)
             manifest = untrusted.load_json(untrusted.decode(source.read_bytes(), what), what)
@@ -25,9 +26,10 @@ def run(args: argparse.Namespace) -> int:
             seed = manifest["seed"] if seed is None else seed
         except (OSError, LagradeError, KeyError, TypeError) as error:
             raise AssignmentError(f"{args.source} is not a lagrade manifest ({error})") from None
+        texts = carried_scene_texts(manifest)
     if seed is None:
         raise AssignmentError("give --seed (or export from a manifest.json, which has one)")
-    folders = export_prairielearn(source, seed, args.out)
+    folders = export_prairielearn(source, seed, args.out, args.scenes, texts)
     for folder in folders:
         print(f"{folder}  ({info_json(folder)['title']})")
     print(
@@ -72,5 +74,11 @@ def add_parser(commands: argparse._SubParsersAction) -> None:
         type=Path,
         required=True,
         help="folder for the questions (prairielearn), or the zip to write (gradescope)",
+    )
+    export.add_argument(
+        "--scenes",
+        type=Path,
+        default=None,
+        help="folder of scene files the assignment names by id (prairielearn)",
     )
     export.set_defaults(run=run)

@@ -23,6 +23,7 @@ def run(args: argparse.Namespace) -> int:
             force=args.force,
             progress=bar,
             verify=None if args.no_verify else verify_variant,
+            scenes_dir=args.scenes,
         )
     for warning in result.warnings:
         print(f"warning: {warning}", file=sys.stderr)
@@ -59,6 +60,12 @@ def add_parser(commands: argparse._SubParsersAction) -> None:
         help="comma list of md,html,tex,pdf (default md,html,tex)",
     )
     generate.add_argument("--templates", type=Path, default=None, help="folder of *.j2 overrides")
+    generate.add_argument(
+        "--scenes",
+        type=Path,
+        default=None,
+        help='folder of scene files the assignment names by id (scene = "parabola")',
+    )
     generate.add_argument("--force", action="store_true", help="replace an existing output folder")
     generate.add_argument(
         "--no-verify", action="store_true", help="skip grading each key before writing (faster)"

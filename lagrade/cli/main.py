@@ -27,6 +27,7 @@ EXIT_INTERRUPTED = 130
 EPILOG = """examples:
   lagrade bank list
   lagrade bank show wedge --seed 3 --format json
+  lagrade scene check examples/scenes/parabola.toml
   lagrade parse "1/2 m R^2 thetadot^2 + m g R cos(theta)" --coordinates theta --parameters m,g,R
   lagrade check --scene wedge --part cyclic --answer x_M
   lagrade generate examples/assignment.toml --roster examples/roster.csv --seed 2025 --out ps3
@@ -61,9 +62,9 @@ def build_parser() -> argparse.ArgumentParser:
     commands = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
     # Each command module registers itself; imported here so that `import lagrade.cli.main`
     # stays cheap (the modules load what their command needs).
-    from lagrade.cli import bank, check, demo, export, generate, grade, parse, serve
+    from lagrade.cli import bank, check, demo, export, generate, grade, parse, scene, serve
 
-    for command in (bank, parse, generate, check, grade, export, serve, demo):
+    for command in (bank, scene, parse, generate, check, grade, export, serve, demo):
         command.add_parser(commands)
     return parser
 

@@ -25,8 +25,9 @@ import lagrade.grading.report as report
 import lagrade.grading.submission as submission
 from lagrade.assign.manifest import project_version
 from lagrade.assign.views import MULTILINE, PROMPTS
+from lagrade.bank.scenefile import sha256
 from lagrade.errors import AssignmentError, LagradeError
-from lagrade.grading.manifest import load_manifest, student_variant
+from lagrade.grading.manifest import entry_spec, entry_variant, load_manifest
 from lagrade.grading.rubric import Rubric, load_rubric
 from lagrade.grading.submission import UnreadableAnswer, find_submission, read_sheet
 from lagrade.judge.check import cached_problem, prepare, timeout_verdict
@@ -85,11 +86,12 @@ def _rubric(manifest_path: Path, manifest: dict) -> Rubric:
 def _question_key(spec: Mapping[str, Any]) -> str:
     """What a symbolic question depends on: the scene, the variant's names and options, the
     quantity — not its numbers, which only numeric follow-ups use (each with its own variant).
-    A class of 1,000 with 1,000 seeds asks only a handful of distinct symbolic questions."""
-    variant = student_variant(spec["scene"], spec["seed"])
-    return json.dumps(
-        [spec["scene"], variant.names, variant.options, spec.get("quantity")], sort_keys=True
-    )
+    A class of 1,000 with 1,000 seeds asks only a handful of distinct symbolic questions. A
+    scene file's text is part of its identity (its hash, short)."""
+    variant = entry_variant(spec)
+    text = spec.get("scene_text")
+    scene = spec["scene"] if text is None else f"{spec['scene']}@{sha256(text)[:16]}"
+    return json.dumps([scene, variant.names, variant.options, spec.get("quantity")], sort_keys=True)
 
 
 def question(spec: Mapping[str, Any]) -> Problem:
@@ -98,7 +100,7 @@ def question(spec: Mapping[str, Any]) -> Problem:
 
 
 def _spec(entry: Mapping[str, Any], part: Mapping[str, Any]) -> dict[str, Any]:
-    spec = {"scene": entry["scene"], "seed": entry["seed"]}
+    spec = entry_spec(entry)
     if part["part"] == "expression":
         spec["quantity"] = part["quantity"]
     return spec
@@ -203,7 +205,7 @@ def _judge(entry, part, answer, given, rubric: Rubric) -> Verdict:
     problem = question(_spec(entry, part))
     if name in ("coordinates", "expression"):
         text = answer if isinstance(answer, str) else " ".join(answer)
-        own = student_variant(entry["scene"], entry["seed"])  # this student's numbers
+        own = entry_variant(entry)  # this student's numbers
         handout = {"values": own.values, "tolerance": rubric.numeric_tolerance}
         return run_checker(problem, name, text, handout if name == "expression" else None)
     value: Any = (

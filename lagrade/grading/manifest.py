@@ -1,6 +1,12 @@
 """Reading `manifest.json` back for grading, defensively: it is a file on disk that anyone may
 have edited, and its student ids become file names under the output folder, so its structure
 is checked once here (every problem listed in one error) before anything is graded or written.
+
+The manifest carries the text of every scene file the assignment used (`scenes`, each with its
+SHA-256): a text that does not match its hash is refused, and every student's variant is
+rebuilt from the carried scene, so grading needs no file but the manifest. A problem entry of
+a scene that is not the installed bank's own gets the scene's text (`scene_text`) in memory,
+so that whatever judges it (a worker, the answer page, PrairieLearn) has what it needs.
 """
 
 from __future__ import annotations
@@ -11,9 +17,10 @@ from pathlib import Path
 from typing import Any
 
 import lagrade.untrusted as untrusted
-from lagrade.bank.registry import get_scene
+from lagrade.bank.registry import get_scene, is_bank_scene
+from lagrade.bank.scenefile import scene_from_text, sha256
 from lagrade.errors import AssignmentError, LagradeError
-from lagrade.mechanics.scene import SceneVariant
+from lagrade.mechanics.scene import Scene, SceneVariant
 
 FORMAT = "lagrade-manifest/1"
 #: A manifest for a class of a thousand is a few megabytes.
@@ -43,8 +50,53 @@ def load_manifest(path: Path) -> dict[str, Any]:
         shown = "\n".join(f"  - {p}" for p in problems[:20])
         more = f"\n  … and {len(problems) - 20} more" if len(problems) > 20 else ""
         raise AssignmentError(f"{path} is not a usable manifest:\n{shown}{more}")
+    scenes = carried_scenes(manifest)
+    for student in manifest["students"]:
+        for entry in student["problems"]:
+            scene = scenes.get(entry["scene"])
+            if scenes and scene is None:
+                raise AssignmentError(
+                    f"student {student['id']}: the manifest carries no scene {entry['scene']!r}"
+                )
+            if scene is not None and not is_bank_scene(scene):
+                entry["scene_text"] = scene.source
     _check_variants(manifest)
     return manifest
+
+
+def carried_scenes(manifest: Mapping[str, Any]) -> dict[str, Scene]:
+    """The scenes the manifest carries, by id, each read from its text after the text is checked
+    against its hash (empty for a manifest written before scene files: the bank's then)."""
+    carried = manifest.get("scenes")
+    if carried is None:
+        return {}
+    if not isinstance(carried, dict):
+        raise AssignmentError('the manifest\'s "scenes" must be an object')
+    found = {}
+    for scene_id, info in carried.items():
+        where = f"the manifest's scene {scene_id!r}"
+        if not isinstance(info, dict) or not all(
+            isinstance(info.get(k), str) for k in ("ref", "sha256", "text")
+        ):
+            raise AssignmentError(f"{where} needs its ref, sha256 and text")
+        if sha256(info["text"]) != info["sha256"]:
+            raise AssignmentError(
+                f"{where} does not match its SHA-256: the scene file's text in the manifest "
+                "was changed after the assignment was generated"
+            )
+        try:
+            found[scene_id] = scene_from_text(info["text"], scene_id, where, validate=False)
+        except LagradeError as error:
+            raise AssignmentError(str(error)) from None
+    return found
+
+
+def carried_scene_texts(manifest: Mapping[str, Any]) -> dict[str, str]:
+    """The carried scene files' texts by the `scene` each problem of the assignment names
+    (`scenes/parabola.toml`, `wedge`): what reading the manifest's copy of the assignment needs
+    instead of the files, which may have moved or changed since."""
+    carried_scenes(manifest)  # the hashes hold
+    return {info["ref"]: info["text"] for info in (manifest.get("scenes") or {}).values()}
 
 
 def _structure_problems(manifest: Mapping[str, Any]) -> list[str]:
@@ -116,10 +168,25 @@ def _is_variant_entry(entry: Any) -> bool:
 
 
 @functools.lru_cache(maxsize=4096)
-def student_variant(scene_id: str, seed: int) -> SceneVariant:
+def student_variant(scene_id: str, seed: int, text: str | None = None) -> SceneVariant:
     """A student's variant, built once per process (the manifest check, the question key and
-    the numeric follow-ups all ask for it, once per part of every submission otherwise)."""
-    return get_scene(scene_id).variant(seed)
+    the numeric follow-ups all ask for it, once per part of every submission otherwise): of
+    the bank's scene, or of the scene file whose `text` the manifest carries."""
+    scene = get_scene(scene_id) if text is None else scene_from_text(text, scene_id, validate=False)
+    return scene.variant(seed)
+
+
+def entry_variant(entry: Mapping[str, Any]) -> SceneVariant:
+    """The variant of a student's problem entry (its scene's text when it carries one)."""
+    return student_variant(entry["scene"], entry["seed"], entry.get("scene_text"))
+
+
+def entry_spec(entry: Mapping[str, Any]) -> dict[str, Any]:
+    """The judge's "problem" field of a student's problem entry."""
+    spec = {"scene": entry["scene"], "seed": entry["seed"]}
+    if entry.get("scene_text") is not None:
+        spec["scene_text"] = entry["scene_text"]
+    return spec
 
 
 def _check_variants(manifest: Mapping[str, Any]) -> None:
@@ -129,7 +196,7 @@ def _check_variants(manifest: Mapping[str, Any]) -> None:
     for student in manifest["students"]:
         for entry in student["problems"]:
             try:
-                variant = student_variant(entry["scene"], entry["seed"])
+                variant = entry_variant(entry)
             except LagradeError as error:
                 raise AssignmentError(f"student {student['id']}: {error}") from None
             if (
@@ -141,6 +208,6 @@ def _check_variants(manifest: Mapping[str, Any]) -> None:
                 mismatches.append(f"{student['id']} problem {entry['index']} ({entry['scene']})")
     if mismatches:
         raise AssignmentError(
-            "the bank no longer reproduces these variants, so grading would not match the "
+            "the scenes no longer reproduce these variants, so grading would not match the "
             f"handouts: {', '.join(mismatches[:10])}" + (" …" if len(mismatches) > 10 else "")
         )

@@ -2,9 +2,10 @@
 
 One question folder per problem, in PrairieLearn's v3 format: `info.json` (uuid, title, topic,
 tags, type "v3"), `question.html` (the statement and figure rendered per variant, one
-`pl-string-input` per part) and `server.py`. The `server.py` holds the assignment text and the
-problem's pool of variant seeds, and calls back into lagrade, which must be installed in the
-course's Python environment:
+`pl-string-input` per part) and `server.py`. The `server.py` holds the assignment text, the
+texts of the scene files it names (by the `scene` as written) and the problem's pool of variant
+seeds, as data, and calls back into lagrade, which must be installed in the course's Python
+environment:
 - `generate` draws the variant from the pool by PrairieLearn's `variant_seed`, so every variant
   is one the bank reproduces and the assignment allows, and renders its statement;
 - `parse` reads every answer with the grader and turns an unreadable one into a format error
@@ -26,10 +27,17 @@ from typing import Any
 
 import lagrade.grading.atomic as atomic
 import lagrade.untrusted as untrusted
-from lagrade.assign.assignment import Assignment, Problem, load_assignment, parse_assignment
+from lagrade.assign.assignment import (
+    Assignment,
+    Problem,
+    load_assignment,
+    parse_assignment,
+    scene_resolver,
+)
 from lagrade.assign.templating import environment
 from lagrade.assign.variants import VariantChoice, build_pool
 from lagrade.assign.views import MULTILINE, problem_view
+from lagrade.bank.registry import scene_reference
 from lagrade.errors import AssignmentError
 from lagrade.grading.batch import grade_part
 from lagrade.grading.prompts import escape_html, prompt_html
@@ -42,11 +50,19 @@ PART_TIME_LIMIT = 5.0
 _NAMESPACE = uuid.UUID("6f1c2a4e-3d0b-5b7e-9a61-1a2b3c4d5e6f")
 
 
-def export_prairielearn(assignment_file: Path, seed: int, out: Path) -> list[Path]:
-    """Write one question folder per problem of the assignment into `out`; returns them."""
+def export_prairielearn(
+    assignment_file: Path,
+    seed: int,
+    out: Path,
+    scenes_dir: Path | None = None,
+    scene_texts: Mapping[str, str] | None = None,
+) -> list[Path]:
+    """Write one question folder per problem of the assignment into `out`; returns them. Its
+    scene files are found as `generate` finds them, or given by `scene_texts` (a manifest's)."""
     assignment_file = Path(assignment_file)
-    assignment = load_assignment(assignment_file)
+    assignment = load_assignment(assignment_file, scenes_dir, scene_texts)
     text = untrusted.decode(assignment_file.read_bytes(), str(assignment_file))
+    scenes = {p.scene_ref: p.scene.source for p in assignment.problems}
     folders = []
     for problem in assignment.problems:
         pool = build_pool(problem, seed, problem.variants or DEFAULT_POOL)
@@ -55,7 +71,7 @@ def export_prairielearn(assignment_file: Path, seed: int, out: Path) -> list[Pat
         folder = Path(out) / _folder_name(assignment, problem)
         atomic.write_json(folder / "info.json", _info(assignment, problem))
         atomic.write_text(folder / "question.html", _question_html(problem))
-        atomic.write_text(folder / "server.py", _server_py(text, problem, pool))
+        atomic.write_text(folder / "server.py", _server_py(text, scenes, problem, pool))
         folders.append(folder)
     return folders
 
@@ -110,30 +126,37 @@ from lagrade.grading import prairielearn as lagrade_pl
 
 TITLE = {title}
 ASSIGNMENT = {assignment}
+SCENES = {scenes}
 PROBLEM = {index}
 SEEDS = {seeds}
 
 
 def generate(data):
-    lagrade_pl.generate(data, ASSIGNMENT, PROBLEM, SEEDS)
+    lagrade_pl.generate(data, ASSIGNMENT, PROBLEM, SEEDS, SCENES)
 
 
 def parse(data):
-    lagrade_pl.parse(data, ASSIGNMENT, PROBLEM)
+    lagrade_pl.parse(data, ASSIGNMENT, PROBLEM, SCENES)
 
 
 def grade(data):
-    lagrade_pl.grade(data, ASSIGNMENT, PROBLEM)
+    lagrade_pl.grade(data, ASSIGNMENT, PROBLEM, SCENES)
 '''
 
 
-def _server_py(assignment_text: str, problem: Problem, pool: tuple[VariantChoice, ...]) -> str:
-    """server.py for `problem`: each value a Python literal (`repr` of a str, int or list of
-    ints), checked to compile before it is written, so an export never ships a file that
-    PrairieLearn cannot load."""
+def _server_py(
+    assignment_text: str,
+    scenes: Mapping[str, str],
+    problem: Problem,
+    pool: tuple[VariantChoice, ...],
+) -> str:
+    """server.py for `problem`: each value a Python literal (`repr` of a str, int, a dict of
+    str or a list of ints), checked to compile before it is written, so an export never ships a
+    file that PrairieLearn cannot load."""
     values = {
         "title": str(problem.title or problem.scene.title),
         "assignment": str(assignment_text),
+        "scenes": {str(ref): str(text) for ref, text in scenes.items()},
         "index": int(problem.index),
         "seeds": [int(c.seed) for c in pool],
     }
@@ -145,9 +168,15 @@ def _server_py(assignment_text: str, problem: Problem, pool: tuple[VariantChoice
 # --- the runtime: what server.py calls inside PrairieLearn --------------------------------------
 
 
-def generate(data: MutableMapping[str, Any], assignment: str, index: int, seeds: list) -> None:
+def generate(
+    data: MutableMapping[str, Any],
+    assignment: str,
+    index: int,
+    seeds: list,
+    scenes: Mapping[str, str] | None = None,
+) -> None:
     """Draw the variant from the pool by PrairieLearn's seed; render its statement and key."""
-    problem, _rubric = _problem(assignment, index)
+    problem, _rubric = _problem(assignment, index, scenes)
     seed = seeds[int(data.get("variant_seed", 0)) % len(seeds)]
     variant = problem.scene.variant(seed)
     choice = VariantChoice(seed, dict(variant.names), dict(variant.options), dict(variant.values))
@@ -163,11 +192,16 @@ def generate(data: MutableMapping[str, Any], assignment: str, index: int, seeds:
         correct[part.key] = ""
 
 
-def parse(data: MutableMapping[str, Any], assignment: str, index: int) -> None:
+def parse(
+    data: MutableMapping[str, Any],
+    assignment: str,
+    index: int,
+    scenes: Mapping[str, str] | None = None,
+) -> None:
     """Refuse an unreadable answer with the parser's message (no attempt charged); say how each
     readable answer was read."""
     read = []
-    for key, result in _judge_all(data, assignment, index).items():
+    for key, result in _judge_all(data, assignment, index, scenes).items():
         if result["verdict"] == "invalid":
             data.setdefault("format_errors", {})[key] = " ".join(result["feedback"])
         elif result["interpreted"]:
@@ -177,9 +211,14 @@ def parse(data: MutableMapping[str, Any], assignment: str, index: int) -> None:
         data.setdefault("feedback", {})["read"] = " | ".join(read)
 
 
-def grade(data: MutableMapping[str, Any], assignment: str, index: int) -> None:
+def grade(
+    data: MutableMapping[str, Any],
+    assignment: str,
+    index: int,
+    scenes: Mapping[str, str] | None = None,
+) -> None:
     """A score and feedback per part, and the question's score weighted by points."""
-    results = _judge_all(data, assignment, index)
+    results = _judge_all(data, assignment, index, scenes)
     scores = data.setdefault("partial_scores", {})
     total = sum(r["max_points"] for r in results.values()) or 1.0
     for key, r in results.items():
@@ -191,10 +230,12 @@ def grade(data: MutableMapping[str, Any], assignment: str, index: int) -> None:
     data["score"] = sum(r["points"] for r in results.values()) / total
 
 
-def _judge_all(data: Mapping[str, Any], assignment: str, index: int) -> dict[str, dict]:
-    problem, rubric = _problem(assignment, index)
+def _judge_all(
+    data: Mapping[str, Any], assignment: str, index: int, scenes: Mapping[str, str] | None
+) -> dict[str, dict]:
+    problem, rubric = _problem(assignment, index, scenes)
     submitted = data.get("submitted_answers", {}) or {}
-    entry = {"scene": problem.scene.id, "seed": data["params"]["seed"]}
+    entry = {**scene_reference(problem.scene), "seed": data["params"]["seed"]}
     answers = {part.key: _answer(part.part, submitted.get(part.key)) for part in problem.parts}
     lagrangian = next((answers[p.key] for p in problem.parts if p.part == "lagrangian"), None)
     given = {"lagrangian": lagrangian} if isinstance(lagrangian, str) and lagrangian else {}
@@ -219,17 +260,21 @@ def _answer(part: str, raw: Any) -> Any:
     return text
 
 
-_problems: dict[tuple[str, int], tuple[Problem, Rubric]] = {}
+_problems: dict[tuple[str, int, str], tuple[Problem, Rubric]] = {}
 
 
-def _problem(assignment: str, index: int) -> tuple[Problem, Rubric]:
-    """The assignment's problem and rubric, parsed once per process."""
-    found = _problems.get((assignment, index))
+def _problem(
+    assignment: str, index: int, scenes: Mapping[str, str] | None = None
+) -> tuple[Problem, Rubric]:
+    """The assignment's problem and rubric, parsed once per process; its scenes from the texts
+    server.py carries (a question exported before scene files names bank scenes only)."""
+    key = (assignment, index, json.dumps(dict(scenes or {}), sort_keys=True))
+    found = _problems.get(key)
     if found is None:
         table = tomllib.loads(assignment)
-        parsed = parse_assignment(table)
+        parsed = parse_assignment(table, resolve=scene_resolver(texts=dict(scenes or {})))
         found = (parsed.problems[index - 1], rubric_from_table(table.get("rubric")))
-        _problems[(assignment, index)] = found
+        _problems[key] = found
     return found
 
 

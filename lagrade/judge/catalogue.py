@@ -127,7 +127,7 @@ class Catalogue:
     @cached_property
     def split(self) -> Split:
         p = self.problem
-        if p.variant is not None:
+        if p.variant is not None and not p.variant.scene.given_by_lagrangian:
             return Split(p.variant.kinetic_energy, p.variant.potential_energy)
         L = sp.expand(p.system.L)
         T = sp.Add(*(x for x in expanded_terms(L) if velocities_in(x, p.jets)))

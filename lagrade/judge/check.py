@@ -104,7 +104,7 @@ def prepare(problem: Problem, part: str, diagnosis: bool = False) -> None:
         if part == "expression":
             problem.catalogue.warm(part, problem.points("expression"))
         elif part in ("lagrangian", "momenta", "eom", "conserved") or (
-            part in ("T", "V") and problem.variant is not None
+            part in ("T", "V") and problem.has_bodies
         ):
             problem.catalogue.warm(part, problem.points(part))
 

@@ -3,6 +3,7 @@ reference expression with the domains of its variables — and everything the ch
 it, computed once and cached (a batch of a thousand answers to one question derives once).
 
     {"scene": "wedge", "seed": 3}             a bank variant (no seed: the declared form)
+    {"scene": "parabola", "scene_text": "...", "seed": 3}   a scene file's variant (its text)
     {"scene": "wedge", "quantity": "block_acceleration"}   a closed-form quantity (`expression`)
     {"lagrangian": "...", "coordinates": ["theta"], "parameters": {"m": "positive", ...}}
     {"expression": "...", "parameters": {"g": "positive", "alpha": "(0, pi/2)"}}
@@ -23,6 +24,7 @@ import numpy as np
 import sympy as sp
 
 from lagrade.bank.registry import get_scene
+from lagrade.bank.scenefile import scene_from_text, sha256
 from lagrade.errors import LagradeError, ParseError, RequestError
 from lagrade.judge.catalogue import Catalogue
 from lagrade.judge.compiled import Compiled, finite_mask
@@ -144,19 +146,24 @@ class Problem:
             raise RequestError("this problem has no reference expression")
         return Compiled.of(self.expression)
 
+    @property
+    def has_bodies(self) -> bool:
+        """A scene with bodies (not an ad-hoc L, nor a scene given by its Lagrangian)."""
+        return self.variant is not None and not self.variant.scene.given_by_lagrangian
+
     @cached_property
     def kinetic_energy(self) -> sp.Expr:
-        if self.variant is None:
+        if not self.has_bodies:
             raise RequestError(
-                "T and V can be checked only for bank scenes (an ad-hoc problem gives L alone)"
+                "T and V can be checked only for scenes with bodies (this problem gives L alone)"
             )
         return self.variant.kinetic_energy
 
     @cached_property
     def potential_energy(self) -> sp.Expr:
-        if self.variant is None:
+        if not self.has_bodies:
             raise RequestError(
-                "T and V can be checked only for bank scenes (an ad-hoc problem gives L alone)"
+                "T and V can be checked only for scenes with bodies (this problem gives L alone)"
             )
         return self.variant.potential_energy
 
@@ -172,7 +179,7 @@ class Problem:
 
     @cached_property
     def dof(self) -> int:
-        return self.variant.dof if self.variant is not None else len(self.jets)
+        return self.variant.dof if self.has_bodies else len(self.jets)
 
     @cached_property
     def catalogue(self):
@@ -243,7 +250,11 @@ class Problem:
 
 def problem_key(spec: Mapping[str, Any]) -> str:
     """The identity of a problem field: its canonical JSON (a seed for the sample points and
-    the key of the worker's cache)."""
+    the key of the worker's cache), a scene file's text in it by its hash (so that the keys a
+    worker remembers stay small whatever a request carries)."""
+    text = spec.get("scene_text")
+    if isinstance(text, str):
+        spec = {**spec, "scene_text": f"sha256:{sha256(text)}"}
     return json.dumps(spec, sort_keys=True, separators=(",", ":"))
 
 
@@ -276,14 +287,24 @@ def build_problem(spec: Any, fields: Mapping[str, str] = JSON_FIELDS) -> Problem
 
 
 def _scene_problem(spec: Mapping[str, Any], key: str) -> Problem:
-    _only(spec, {"scene", "seed", "quantity"})
-    scene_id, seed = spec["scene"], spec.get("seed")
+    _only(spec, {"scene", "scene_text", "seed", "quantity"})
+    scene_id, seed, text = spec["scene"], spec.get("seed"), spec.get("scene_text")
     if not isinstance(scene_id, str):
         raise RequestError('"scene" must be a scene id such as "wedge"')
     if seed is not None and (not isinstance(seed, int) or isinstance(seed, bool)):
         raise RequestError(f'"seed" must be an integer, got {seed!r}')
+    if text is not None and not isinstance(text, str):
+        raise RequestError('"scene_text" must be the text of a scene file')
     try:
-        scene = get_scene(scene_id)
+        # a scene file travels as its text (read by the safe reader; checked when it was
+        # written into the assignment), a bank scene by its id
+        scene = (
+            get_scene(scene_id)
+            if text is None
+            else scene_from_text(
+                text, scene_id, origin='the problem\'s "scene_text"', validate=False
+            )
+        )
         variant = scene.default if seed is None else scene.variant(seed)
         jets = variant.jets
         params = dict(variant.parameter_symbols)

@@ -7,6 +7,7 @@ from __future__ import annotations
 
 from collections.abc import Iterable
 
+from lagrade.bank.registry import scene_reference
 from lagrade.judge.key import key_answer
 from lagrade.judge.parts import run_checker
 from lagrade.judge.problem import Problem, build_problem
@@ -15,7 +16,7 @@ from lagrade.notation.printer import plain
 
 
 def _spec(variant: SceneVariant, quantity: str | None = None) -> dict:
-    spec: dict = {"scene": variant.scene.id}
+    spec: dict = scene_reference(variant.scene)
     if variant.seed is not None:
         spec["seed"] = variant.seed
     if quantity:

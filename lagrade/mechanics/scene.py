@@ -23,16 +23,19 @@ from sympy.simplify.fu import TR10i
 from lagrade.errors import SceneError
 from lagrade.mechanics import lagrange as mech
 from lagrade.mechanics.domains import Domain
+from lagrade.mechanics.figure import FigureHint
 
 AXES = ("x", "y", "z")
+#: What a scene given by its Lagrangian alone can be asked (everything that follows from L).
+LAGRANGIAN_PARTS = ("lagrangian", "eom", "momenta", "cyclic", "conserved", "expression")
 
 
 def as_expr(value: object) -> sp.Expr:
     """A scene declaration's value as a sympy expression, without evaluating text.
 
-    Declarations are Python expressions written in the bank's own modules, so what arrives is
-    already a sympy object or a plain number (the 0 of a fixed axle); a string is refused
-    rather than parsed, so nothing here can turn text into code.
+    A scene file's expressions arrive already read by the notation layer (`lagrade.bank`), so
+    what comes here is a sympy object or a plain number (the 0 of a fixed axle); a string is
+    refused rather than parsed, so nothing here can turn text into code.
     """
     if isinstance(value, sp.Basic):
         return value
@@ -123,17 +126,21 @@ def gravity(g: sp.Expr, bodies: Sequence[Body], axis: str = "y") -> sp.Expr:
 @dataclass(frozen=True)
 class Quantity:
     """A numeric follow-up a problem can ask for (the wedge's acceleration, the hoop's equilibrium
-    angle), as a closed form in the parameters, checked against the derived motion in the tests."""
+    angle), as a closed form in the parameters. `claim` says what the value is in terms of the
+    motion (`claim(s)`: the state and the accelerations there, or the normal-mode frequencies),
+    so that it can be checked against the derived motion (`lagrade scene check`)."""
 
     name: str
     description: str
     expr: Callable[[SimpleNamespace], sp.Expr]
     unit: str = ""
+    claim: Callable[[SimpleNamespace], Any] | None = None
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class Scene:
-    """The declaration of a mechanical system, as the lecture would pose it.
+    """The declaration of a mechanical system, as the lecture would pose it: what a scene file
+    (`docs/scenes.md`, read by `lagrade.bank`) says, as functions of the variant's symbols.
 
     `bodies(s)` and `potential(s, bodies)` receive a namespace `s` of symbols: each coordinate
     `q` with `q_dot`, every parameter, `t`, and the presentation options as `s.opt[...]`.
@@ -142,10 +149,19 @@ class Scene:
     positions declare by themselves). `renames` offers other names for a coordinate and
     `options` other presentation choices; a seeded variant draws from both.
 
+    A scene given by its Lagrangian alone (`lagrangian(s)`: a charged particle, a relativistic
+    one) declares no bodies; it has L and all that follows from it, but no transformation
+    equations, T, V, constraints or DOF, and asking for them is a SceneError that says so.
+
     In `statement`, `{theta}` stands for a coordinate (under the variant's name), `{angle_from}`
     for an option's choice (as `wording[option][choice]` reads, else the choice itself), and
     `{a}` for a parameter whose name is also an English word; handouts set coordinates and
-    parameters as math.
+    parameters as math. `figure(options)` is what the geometry cannot tell the figure of a
+    presentation; `source` the text of the scene file the scene was read from (what a manifest
+    carries).
+
+    Scenes compare by identity: two readings of one file are one scene only when the reader
+    returns the same object (`lagrade.bank` does, by the file's hash).
     """
 
     id: str
@@ -153,14 +169,22 @@ class Scene:
     statement: str
     coordinates: tuple[str, ...]
     parameters: tuple[Parameter, ...]
-    bodies: Callable[[SimpleNamespace], Sequence[Body]]
-    potential: Callable[[SimpleNamespace, Sequence[Body]], sp.Expr]
+    bodies: Callable[[SimpleNamespace], Sequence[Body]] = lambda s: ()
+    potential: Callable[[SimpleNamespace, Sequence[Body]], sp.Expr] = lambda s, bodies: 0
     constraints: Callable[[SimpleNamespace, SimpleNamespace], Sequence[sp.Expr]] = lambda s, c: ()
     renames: Mapping[str, tuple[str, ...]] = field(default_factory=dict)
     options: Mapping[str, tuple[str, ...]] = field(default_factory=dict)
     quantities: tuple[Quantity, ...] = ()
     tags: tuple[str, ...] = ()
     wording: Mapping[str, Mapping[str, str]] = field(default_factory=dict)
+    lagrangian: Callable[[SimpleNamespace], sp.Expr] | None = None
+    figure: Callable[[Mapping[str, str]], FigureHint] = lambda options: FigureHint()
+    source: str = ""
+
+    @property
+    def given_by_lagrangian(self) -> bool:
+        """The scene declares L itself, not bodies: parts about bodies cannot be asked."""
+        return self.lagrangian is not None
 
     def __post_init__(self) -> None:
         problems = []
@@ -285,15 +309,33 @@ class SceneVariant:
         ns["opt"] = dict(self.options)
         return _Declared(self.scene.id, "s", **ns)
 
+    @cached_property
+    def figure(self) -> FigureHint:
+        """What the geometry cannot tell this presentation's figure (the scene's `[figure]`)."""
+        return self.scene.figure(self.options)
+
     # --- step 1–3: bodies, transformation equations, constraints, DOF ---------------------------
     @cached_property
     def bodies(self) -> tuple[Body, ...]:
+        """The bodies in this variant's symbols; none for a scene given by its Lagrangian."""
         return tuple(_normalized(b) for b in self.scene.bodies(self.namespace))
+
+    def _needs_bodies(self, what: str) -> None:
+        """Refuse `what` (T, V, the transformation, …) for a scene given by its Lagrangian."""
+        if self.scene.given_by_lagrangian:
+            raise SceneError(
+                self.scene.id,
+                [
+                    f"{what}: the scene is given by its Lagrangian and declares no bodies, so "
+                    f"it has no {what}; ask for {', '.join(LAGRANGIAN_PARTS)}"
+                ],
+            )
 
     @cached_property
     def transformation(self) -> dict[str, sp.Expr]:
         """The transformation equations: each body's Cartesian coordinates (and rotation angle)
         in terms of the generalized coordinates and t, keyed `x_block`, `phi_wheel`, …"""
+        self._needs_bodies("transformation equations")
         eqs: dict[str, sp.Expr] = {}
         for b in self.bodies:
             for axis, value in zip(AXES, b.position, strict=False):
@@ -316,6 +358,7 @@ class SceneVariant:
     def constraints(self) -> tuple[tuple[str, sp.Expr], ...]:
         """Every holonomic constraint f(x, y, z, t) = 0 with a short description: the declared
         ones, then planarity (z = 0 for 2-D point masses; z = 0 and no tilt for rigid bodies)."""
+        self._needs_bodies("constraints")
         declared = tuple(
             ("declared", as_expr(f)) for f in self.scene.constraints(self.namespace, self.cartesian)
         )
@@ -331,6 +374,7 @@ class SceneVariant:
     @cached_property
     def dof(self) -> int:
         """DOF = Σ freedoms − k: 3 per point mass, 6 per rigid body, minus the constraints."""
+        self._needs_bodies("degrees of freedom")
         return sum(b.freedoms for b in self.bodies) - len(self.constraints)
 
     def _cartesian_substitution(self) -> dict[sp.Symbol, sp.Expr]:
@@ -353,6 +397,9 @@ class SceneVariant:
         known = set(self.parameter_symbols.values()) | {mech.t}
         for j in self.jets:
             known |= {j.q, j.dot}
+        if self.scene.given_by_lagrangian:
+            self._validate_lagrangian(known)
+            return
         used: set[sp.Symbol] = set()
         for b in self.bodies:
             for label, expr in _body_fields(b):
@@ -396,6 +443,20 @@ class SceneVariant:
         if problems:
             raise SceneError(self.scene.id, problems)
 
+    def _validate_lagrangian(self, known: set[sp.Symbol]) -> None:
+        """A given L: declared symbols only, no acceleration, every coordinate in it."""
+        problems = []
+        L = self.lagrangian
+        for s in sorted(L.free_symbols - known, key=str):
+            problems.append(f"lagrangian: uses {s}, which is not declared")
+        for j in self.jets:
+            if L.has(j.ddot):
+                problems.append(f"lagrangian: contains the acceleration {j.ddot}")
+            if not L.has(j.q) and not L.has(j.dot):
+                problems.append(f"coordinates: {j.name!r} appears nowhere in the Lagrangian")
+        if problems:
+            raise SceneError(self.scene.id, problems)
+
     def _jacobian_rank(self) -> int:
         """Rank of ∂(positions, angles)/∂q at a seeded generic point (numerically)."""
         rows = list(self.transformation.values())
@@ -415,17 +476,21 @@ class SceneVariant:
     @cached_property
     def kinetic_energy(self) -> sp.Expr:
         """T = Σ ½ m |ṙ|² (+ ½ I φ̇² for rigid bodies), expanded and trig-simplified."""
+        self._needs_bodies("T")
         T = sum((b.kinetic_energy(self.jets) for b in self.bodies), sp.S.Zero)
         return _tidy(T)
 
     @cached_property
     def potential_energy(self) -> sp.Expr:
         """V as declared (a generalized potential may depend on velocities)."""
+        self._needs_bodies("V")
         return sp.expand(as_expr(self.scene.potential(self.namespace, self.bodies)))
 
     @cached_property
     def lagrangian(self) -> sp.Expr:
-        """L = T − V."""
+        """L = T − V, or the scene's own L (expanded) when it is given by its Lagrangian."""
+        if self.scene.lagrangian is not None:
+            return sp.expand(as_expr(self.scene.lagrangian(self.namespace)))
         return mech.lagrangian(self.kinetic_energy, self.potential_energy)
 
     @cached_property
@@ -462,8 +527,11 @@ class SceneVariant:
         (no k for uniform gravity, no M for a massless pulley), and a handout that lists it
         anyway sends students looking for a term that is not there."""
         exprs = [x for b in self.bodies for _, field in _body_fields(b) for x in field]
-        exprs += [self.potential_energy, *self.quantities.values()]
-        exprs += [f for _, f in self.constraints]
+        exprs += list(self.quantities.values())
+        if self.scene.given_by_lagrangian:
+            exprs.append(self.lagrangian)
+        else:
+            exprs += [self.potential_energy, *(f for _, f in self.constraints)]
         symbols: set[sp.Basic] = set().union(*(as_expr(x).free_symbols for x in exprs))
         words = set(re.findall(r"[A-Za-z_][A-Za-z0-9_]*", self.statement()))
         return tuple(

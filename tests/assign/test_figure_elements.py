@@ -10,7 +10,7 @@ import re
 import numpy as np
 import pytest
 
-from lagrade.assign.figures import HINTS, FigureHint, compose
+from lagrade.assign.figures import compose
 from lagrade.assign.figures.layout import drawn, extent, labels
 from lagrade.bank import get_scene, scene_ids
 from lagrade.mechanics.scene import RigidBody, SceneVariant
@@ -80,7 +80,7 @@ def test_every_body_and_named_fixture_is_drawn(variant: SceneVariant, composed) 
         noun: kinds for noun, kinds in NOUNS.items() if noun in words and not kinds & drawn_kinds
     }
     assert missing == {}, f"the statement names {sorted(missing)} but the figure draws none"
-    declared = HINTS.get(variant.scene.id, FigureHint()).fixtures(variant.namespace)
+    declared = variant.figure.fixtures(variant.namespace)
     for f in declared:
         assert any(e.kind == f.kind and e.artists for e in figure.elements), f.kind
     marked = {e.name for e in figure.elements if e.kind in ("mark", "rod") and e.artists}

@@ -33,6 +33,8 @@ PLACEHOLDERS = {
     "RESULTS.jsonl": "results.jsonl",
     "QUESTIONS": "pl-questions",
     "SHEETS": "sheets",
+    "NAME": "my_scene",
+    "FILE": "examples/scenes/parabola.toml",
 }
 #: Runs until stopped: started as a process, stopped with SIGTERM once it listens.
 SERVER = {"serve"}

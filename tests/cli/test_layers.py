@@ -1,6 +1,8 @@
 """The layered house, held on the real import graph: every `import` and `from … import` of every
 module of lagrade, at any depth (inside functions too), may name only its own layer's package or
-a layer below. Same-layer packages (judge and assign; bank and notation) never import each other.
+a layer below. Same-layer packages (judge and assign) never import each other. The bank sits above
+the notation layer: its scenes are files whose expressions the notation layer reads (the same
+safe grammar as students' answers), so bank may import notation and notation never the bank.
 """
 
 import ast
@@ -14,7 +16,7 @@ ROOT = pathlib.Path(lagrade.__file__).parent
 #: error tree and the one reader of unvetted bytes, sit under them all).
 ALLOWED = {
     "mechanics": {"mechanics"},
-    "bank": {"bank", "mechanics"},
+    "bank": {"bank", "notation", "mechanics"},
     "notation": {"notation", "mechanics"},
     "judge": {"judge", "notation", "bank", "mechanics"},
     "assign": {"assign", "notation", "bank", "mechanics"},

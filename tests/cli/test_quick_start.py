@@ -99,7 +99,7 @@ def test_demo_hints_name_the_script_when_lagrade_is_not_on_path(monkeypatch, tmp
     monkeypatch.setenv("PATH", "/usr/bin:/bin")
     hints = demo._next_steps(Path("lagrade-demo"))
     commands = [ln.split(":", 1)[1].strip() for ln in hints.splitlines() if ln.startswith("  ")]
-    assert len(commands) == 3
+    assert len(commands) == 4
     for command in commands:
         program = shlex.split(command)[0]
         assert program == str(relative), command

@@ -8,13 +8,14 @@ face, the incline, a pendulum's arc). A body whose path under an angle is a circ
 from the circle's centre and an angle mark from where the angle is zero; a length coordinate
 gets a dimension arrow from where it is zero. 3-D scenes are drawn in an oblique projection.
 What geometry cannot tell (the wedge is a triangle, the hoop has no rod, the oscillators hang
-on springs between walls) comes from `HINTS`; the figure test holds every scene to draw each
+on springs between walls) comes from the scene's `figure` (its scene file's `[figure]` table,
+`lagrade.mechanics.figure.FigureHint`); the figure test holds every scene to draw each
 body and each spring, rope, pulley, wall and surface its statement names. Labels are kept apart
 and everything inside the frame by measuring the rendered artists (`layout`).
 
 Output is SVG and PDF, byte-identical across runs (fixed hash salt, no dates).
 
-Modules, each importing only those before it: `hints` (per-scene hints), `style` (inks, line
+Modules, each importing only those before it: `style` (inks, line
 styles, matplotlib settings), `geometry` (numeric positions and the questions asked of them),
 `primitives` (labels, arrows, marks), `bodies` (bodies and 3-D axes), `fixtures` (springs, ropes,
 pulleys, walls, surfaces, bars), `plan` (what to draw, in order, each element with its kind),
@@ -22,16 +23,13 @@ pulleys, walls, surfaces, bars), `plan` (what to draw, in order, each element wi
 """
 
 from lagrade.assign.figures.geometry import representative_values
-from lagrade.assign.figures.hints import HINTS, FigureHint
 from lagrade.assign.figures.render import Composed, Element, Figure, FigureError, compose, draw
 
 __all__ = [
-    "HINTS",
     "Composed",
     "Element",
     "Figure",
     "FigureError",
-    "FigureHint",
     "compose",
     "draw",
     "representative_values",

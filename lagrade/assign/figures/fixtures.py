@@ -13,9 +13,9 @@ import numpy as np
 import sympy as sp
 
 from lagrade.assign.figures.geometry import Geometry
-from lagrade.assign.figures.hints import Anchor, Fixture
 from lagrade.assign.figures.primitives import arc_arrow, incline_angle, pivot, put_text
 from lagrade.assign.figures.style import ACCENT, GREY, INK
+from lagrade.mechanics.figure import Anchor, Fixture
 from lagrade.notation.printer import name_latex
 
 _FILL = "#e4e4e4"

@@ -14,8 +14,8 @@ from typing import Any
 import numpy as np
 import sympy as sp
 
-from lagrade.assign.figures.hints import FigureHint
 from lagrade.mechanics import lagrange as mech
+from lagrade.mechanics.figure import FigureHint
 from lagrade.mechanics.scene import RigidBody, SceneVariant, as_expr
 from lagrade.notation.printer import name_latex
 

@@ -11,7 +11,6 @@ from typing import Any
 import numpy as np
 
 from lagrade.assign.figures.geometry import Geometry
-from lagrade.assign.figures.hints import HINTS, FigureHint
 from lagrade.assign.figures.layout import drawn, settle
 from lagrade.assign.figures.plan import plan
 from lagrade.assign.figures.style import RC
@@ -59,7 +58,7 @@ def compose(variant: SceneVariant) -> Composed:
     from matplotlib.figure import Figure as MplFigure
     from matplotlib.patches import Circle
 
-    hint = HINTS.get(variant.scene.id, FigureHint())
+    hint = variant.figure
     try:
         geometry = Geometry(variant, hint)
         drawing = plan(geometry)

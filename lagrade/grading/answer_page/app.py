@@ -48,6 +48,7 @@ from lagrade.grading.answer_page.sheets import (
 )
 from lagrade.grading.answer_page.tokens import token_table
 from lagrade.grading.batch import grade_student
+from lagrade.grading.manifest import carried_scene_texts
 from lagrade.grading.prompts import prompt_html
 from lagrade.grading.rubric import Rubric, load_rubric
 
@@ -151,7 +152,7 @@ def build_classroom(
     jobs: int = 2,
 ) -> ClassRoom:
     """The ClassRoom of a loaded manifest; the assignment file is the one `generate` copied
-    beside the manifest."""
+    beside the manifest, its scenes the ones the manifest carries."""
     manifest_dir = Path(manifest_path).parent
     assignment_file = manifest_dir / manifest["assignment"]["file"]
     ids = [s["id"] for s in manifest["students"]]
@@ -160,7 +161,7 @@ def build_classroom(
         manifest_dir=manifest_dir,
         submissions=Path(submissions),
         tokens=token_table(secret, ids),
-        assignment=load_assignment(assignment_file),
+        assignment=load_assignment(assignment_file, scene_texts=carried_scene_texts(manifest)),
         settings=load_settings(assignment_file),
         rubric=load_rubric(assignment_file),
         jobs=jobs,

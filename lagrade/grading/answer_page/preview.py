@@ -15,6 +15,7 @@ import sympy as sp
 
 from lagrade.errors import LagradeError, ParseError
 from lagrade.grading.batch import grade_part, question
+from lagrade.grading.manifest import entry_spec
 from lagrade.grading.rubric import Rubric
 from lagrade.notation.parse import parse_answer
 from lagrade.notation.printer import mathml
@@ -52,7 +53,7 @@ def _mathml(entry: Mapping[str, Any], part: Mapping[str, Any], line: str) -> str
     parsed again by the project's parser, never evaluated."""
     if part["part"] in ("dof", "cyclic", "coordinates") or not line.strip():
         return ""
-    spec = {"scene": entry["scene"], "seed": entry["seed"]}
+    spec = entry_spec(entry)
     if part["part"] == "expression":
         spec["quantity"] = part["quantity"]
     try:

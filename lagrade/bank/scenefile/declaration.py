@@ -1,0 +1,480 @@
+"""The shape of a scene file: its TOML table checked key by key into a `Declaration` of names and
+expression texts, every problem collected (with the key it sits under) rather than the first one
+raised. Nothing here reads an expression; `reading` does, with the notation layer.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from typing import Any
+
+from lagrade.errors import LagradeError
+from lagrade.mechanics.domains import Domain
+from lagrade.notation.build import FUNCTIONS
+
+#: A name in a scene file: a coordinate, parameter, body, option, choice, let or quantity.
+NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]{0,31}\Z")
+#: Names that mean something already: time, pi, the functions, and `gravity` in a potential.
+RESERVED = frozenset({"t", "pi", "gravity"}) | FUNCTIONS
+
+TOP_KEYS = (
+    "title",
+    "statement",
+    "tags",
+    "coordinates",
+    "renames",
+    "parameters",
+    "bodies",
+    "potential",
+    "lagrangian",
+    "constraints",
+    "options",
+    "quantities",
+    "figure",
+)
+PARAMETER_KEYS = ("domain", "unit", "values", "description")
+BODY_KEYS = ("mass", "position", "inertia", "angle")
+CHOICE_KEYS = ("wording", "let", "bodies", "constraints", "figure")
+QUANTITY_KEYS = ("description", "value", "unit", "check")
+CHECK_KEYS = ("at", "accelerations", "frequencies")
+
+#: Bounds that no mechanics problem comes near, so that a hostile file costs little to refuse.
+LIMITS = {
+    "coordinates": 16,
+    "parameters": 64,
+    "bodies": 32,
+    "constraints": 64,
+    "options": 8,
+    "choices": 16,
+    "lets": 16,
+    "quantities": 32,
+    "tags": 16,
+    "renames": 8,
+}
+MAX_TEXT = 5_000  # characters of a title, statement, wording or description
+MAX_VALUES = 64  # numbers in a parameter's value pool
+
+
+@dataclass(frozen=True)
+class Text:
+    """An expression's text and the key it sits under (`bodies.bead.position[2]`)."""
+
+    key: str
+    text: str
+
+
+@dataclass
+class BodyDecl:
+    name: str
+    key: str
+    mass: Text
+    position: list[Text]
+    inertia: Text | None = None
+    angle: Text | None = None
+
+
+@dataclass
+class ChoiceDecl:
+    """One choice of a presentation option: its wording, the names it binds, what it adds."""
+
+    name: str
+    key: str
+    wording: str | None = None
+    lets: dict[str, Text] = field(default_factory=dict)
+    bodies: list[BodyDecl] = field(default_factory=list)
+    constraints: list[Text] = field(default_factory=list)
+    figure: dict[str, Any] = field(default_factory=dict)
+
+
+@dataclass
+class ParameterDecl:
+    name: str
+    domain: Domain
+    unit: str
+    values: tuple[float, ...]
+    description: str
+
+
+@dataclass
+class QuantityDecl:
+    name: str
+    key: str
+    description: str
+    value: Text
+    unit: str
+    check: dict[str, Any] | None = None
+
+
+@dataclass
+class Declaration:
+    """Everything a scene file declares, names checked, expressions still text."""
+
+    title: str = ""
+    statement: str = ""
+    tags: tuple[str, ...] = ()
+    coordinates: list[str] = field(default_factory=list)
+    renames: dict[str, tuple[str, ...]] = field(default_factory=dict)
+    parameters: list[ParameterDecl] = field(default_factory=list)
+    bodies: list[BodyDecl] = field(default_factory=list)
+    potential: Text | None = None
+    lagrangian: Text | None = None
+    constraints: list[Text] = field(default_factory=list)
+    options: dict[str, list[ChoiceDecl]] = field(default_factory=dict)
+    quantities: list[QuantityDecl] = field(default_factory=list)
+    figure: dict[str, Any] = field(default_factory=dict)
+
+
+def cartesian_axes(body: BodyDecl) -> tuple[str, ...]:
+    """The Cartesian names a body brings (`x`, `y`, `z`, and `phi` for a rigid body), as the
+    transformation part names them (`x_bead`, `phi_wheel`)."""
+    return ("x", "y", "z", "phi") if body.inertia is not None else ("x", "y", "z")
+
+
+class Problems:
+    """The problems found in one file, each as `key: message`, in the order found."""
+
+    def __init__(self) -> None:
+        self.items: list[str] = []
+        self.blocking = 0
+
+    def add(self, key: str, message: str, blocking: bool = True) -> None:
+        """Record a problem; a `blocking` one leaves too little to derive the scene from (an
+        unknown key does not: the scene is still checked against itself, to report all)."""
+        self.items.append(f"{key}: {message}" if key else message)
+        self.blocking += blocking
+
+    def __bool__(self) -> bool:
+        return bool(self.items)
+
+
+def _shown(value: Any) -> str:
+    text = repr(value)
+    return text if len(text) <= 60 else text[:60] + "…"
+
+
+def _unknown_keys(table: Mapping, known: tuple[str, ...], where: str, problems: Problems) -> None:
+    for key in table:
+        if key not in known:
+            prefix = f"{where}." if where else ""
+            problems.add(f"{prefix}{key}", f"unknown key (known: {', '.join(known)})", False)
+
+
+#: Kinds of names that enter expressions, so cannot be a name that means something already.
+_IN_EXPRESSIONS = frozenset({"coordinate", "parameter", "let", "quantity"})
+
+
+def _name(value: Any, key: str, what: str, problems: Problems) -> bool:
+    """Whether `value` is a usable name; the problem says why not."""
+    if not isinstance(value, str) or not NAME.match(value):
+        problems.add(
+            key,
+            f"{_shown(value)} is not a {what} name (a letter, then letters, digits or _, at "
+            "most 32 characters)",
+        )
+        return False
+    if what in _IN_EXPRESSIONS and (value in RESERVED or value.endswith(("_dot", "_ddot"))):
+        problems.add(key, f"{value!r} is reserved (t, pi, gravity, the functions, *_dot, *_ddot)")
+        return False
+    return True
+
+
+def _string(
+    table: Mapping, key: str, where: str, problems: Problems, required: bool = False
+) -> str | None:
+    value = table.get(key)
+    at = f"{where}.{key}" if where else key
+    if value is None:
+        if required:
+            problems.add(at, "missing")
+        return None
+    if not isinstance(value, str):
+        problems.add(at, f"{_shown(value)} is not a string")
+        return None
+    if len(value) > MAX_TEXT:
+        problems.add(at, f"longer than {MAX_TEXT:,} characters")
+        return None
+    return value
+
+
+def expression(value: Any, key: str, problems: Problems) -> Text | None:
+    """An expression's text: a string, or a number written as one (`0`, `-1.2`)."""
+    if isinstance(value, bool) or not isinstance(value, str | int | float):
+        problems.add(key, f"{_shown(value)} is not an expression (write it as a string)")
+        return None
+    if isinstance(value, float) and not math.isfinite(value):
+        problems.add(key, f"{value!r} is not a finite number")
+        return None
+    return Text(key, value if isinstance(value, str) else repr(value))
+
+
+def _table(value: Any, key: str, problems: Problems, what: str = "a table") -> dict | None:
+    if not isinstance(value, dict):
+        problems.add(key, f"{_shown(value)} is not {what}")
+        return None
+    return value
+
+
+def _list(value: Any, key: str, problems: Problems, limit: int) -> list | None:
+    if not isinstance(value, list):
+        problems.add(key, f"{_shown(value)} is not a list")
+        return None
+    if len(value) > limit:
+        problems.add(key, f"{len(value)} entries; at most {limit}")
+        return None
+    return value
+
+
+def read_declaration(data: Mapping[str, Any], problems: Problems) -> Declaration:
+    """The checked declaration of a scene file's table; what is wrong goes to `problems`."""
+    d = Declaration()
+    _unknown_keys(data, TOP_KEYS, "", problems)
+    d.title = _string(data, "title", "", problems, required=True) or ""
+    d.statement = _string(data, "statement", "", problems, required=True) or ""
+    tags = _list(data.get("tags", []), "tags", problems, LIMITS["tags"]) or []
+    d.tags = tuple(t for i, t in enumerate(tags) if _name(t, f"tags[{i + 1}]", "tag", problems))
+    _coordinates(data, d, problems)
+    _parameters(data, d, problems)
+    _renames(data, d, problems)
+    raw_bodies = data.get("bodies", {})
+    if (table := _table(raw_bodies, "bodies", problems)) is not None:
+        d.bodies = _bodies(table, "bodies", problems)
+    for key in ("potential", "lagrangian"):
+        if key in data:
+            setattr(d, key, expression(data[key], key, problems))
+    d.constraints = _expressions(data.get("constraints", []), "constraints", problems)
+    if d.lagrangian is not None:
+        for key in ("bodies", "potential", "constraints"):
+            if key in data:
+                problems.add(
+                    key,
+                    "a scene given by its Lagrangian declares no bodies, potential "
+                    "or constraints (drop one or the other)",
+                )
+    elif not d.bodies and not _any_choice_bodies(data):
+        problems.add("bodies", "missing: declare the bodies (or give the scene's lagrangian)")
+    _options(data, d, problems)
+    _quantities(data, d, problems)
+    if "figure" in data and (figure := _table(data["figure"], "figure", problems)) is not None:
+        d.figure = figure
+    return d
+
+
+def _any_choice_bodies(data: Mapping[str, Any]) -> bool:
+    options = data.get("options")
+    if not isinstance(options, dict):
+        return False
+    return any(
+        isinstance(choices, dict)
+        and any(isinstance(c, dict) and c.get("bodies") for c in choices.values())
+        for choices in options.values()
+    )
+
+
+def _coordinates(data: Mapping[str, Any], d: Declaration, problems: Problems) -> None:
+    raw = data.get("coordinates")
+    if raw is None:
+        problems.add("coordinates", 'missing (the generalized coordinates, e.g. ["theta"])')
+        return
+    items = _list(raw, "coordinates", problems, LIMITS["coordinates"]) or []
+    for i, name in enumerate(items, 1):
+        if _name(name, f"coordinates[{i}]", "coordinate", problems):
+            if name in d.coordinates:
+                problems.add(f"coordinates[{i}]", f"{name!r} is declared twice")
+            else:
+                d.coordinates.append(name)
+    if raw is not None and not items:
+        problems.add("coordinates", "empty: a scene has at least one coordinate")
+
+
+def _parameters(data: Mapping[str, Any], d: Declaration, problems: Problems) -> None:
+    table = _table(data.get("parameters", {}), "parameters", problems) or {}
+    if len(table) > LIMITS["parameters"]:
+        problems.add("parameters", f"{len(table)} parameters; at most {LIMITS['parameters']}")
+        return
+    for name, spec in table.items():
+        key = f"parameters.{name}"
+        if not _name(name, key, "parameter", problems):
+            continue
+        if name in d.coordinates:
+            problems.add(key, f"{name!r} is already a coordinate")
+            continue
+        if (spec := _table(spec, key, problems)) is None:
+            continue
+        _unknown_keys(spec, PARAMETER_KEYS, key, problems)
+        if "domain" not in spec:
+            problems.add(f"{key}.domain", "missing (positive, nonnegative, real or an interval)")
+            continue
+        try:
+            domain = Domain.parse(spec["domain"])
+        except LagradeError as error:
+            problems.add(f"{key}.domain", str(error))
+            continue
+        values = _values(spec.get("values", []), f"{key}.values", domain, problems)
+        unit = _string(spec, "unit", key, problems) or ""
+        description = _string(spec, "description", key, problems) or ""
+        d.parameters.append(ParameterDecl(name, domain, unit, values, description))
+
+
+def _values(raw: Any, key: str, domain: Domain, problems: Problems) -> tuple[float, ...]:
+    items = _list(raw, key, problems, MAX_VALUES)
+    if items is None:
+        return ()
+    values = []
+    for i, v in enumerate(items, 1):
+        if isinstance(v, bool) or not isinstance(v, int | float) or not math.isfinite(v):
+            problems.add(f"{key}[{i}]", f"{_shown(v)} is not a finite number")
+        elif not domain.contains(float(v)):
+            problems.add(f"{key}[{i}]", f"{v} lies outside the domain {domain.text}")
+        else:
+            values.append(float(v))
+    return tuple(values)
+
+
+def _renames(data: Mapping[str, Any], d: Declaration, problems: Problems) -> None:
+    table = _table(data.get("renames", {}), "renames", problems) or {}
+    for coordinate, names in table.items():
+        key = f"renames.{coordinate}"
+        if coordinate not in d.coordinates:
+            problems.add(key, f"{coordinate!r} is not a coordinate")
+            continue
+        items = _list(names, key, problems, LIMITS["renames"])
+        if not items:
+            if items is not None:
+                problems.add(key, "empty")
+            continue
+        if not all(_name(n, key, "coordinate", problems) for n in items):
+            continue
+        if items[0] != coordinate:
+            problems.add(key, f"the first name must be {coordinate!r} itself")
+            continue
+        if len(set(items)) != len(items):
+            problems.add(key, "a name is offered twice")
+            continue
+        d.renames[coordinate] = tuple(items)
+
+
+def _bodies(table: Mapping[str, Any], where: str, problems: Problems) -> list[BodyDecl]:
+    if len(table) > LIMITS["bodies"]:
+        problems.add(where, f"{len(table)} bodies; at most {LIMITS['bodies']}")
+        return []
+    bodies = []
+    for name, spec in table.items():
+        key = f"{where}.{name}"
+        if not _name(name, key, "body", problems) or (spec := _table(spec, key, problems)) is None:
+            continue
+        _unknown_keys(spec, BODY_KEYS, key, problems)
+        mass = expression(spec["mass"], f"{key}.mass", problems) if "mass" in spec else None
+        if "mass" not in spec:
+            problems.add(f"{key}.mass", "missing")
+        position: list[Text] = []
+        raw = spec.get("position")
+        if not isinstance(raw, list) or len(raw) not in (2, 3):
+            problems.add(
+                f"{key}.position",
+                "missing or not a list of 2 (x, y: a plane, y up) or 3 (x, y, z: z up) expressions",
+            )
+        else:
+            for i, x in enumerate(raw, 1):
+                if (text := expression(x, f"{key}.position[{i}]", problems)) is not None:
+                    position.append(text)
+        rigid = [k for k in ("inertia", "angle") if k in spec]
+        inertia = angle = None
+        if len(rigid) == 1:
+            missing = "angle" if rigid == ["inertia"] else "inertia"
+            problems.add(f"{key}.{missing}", "missing: a rigid body declares inertia and angle")
+        elif rigid:
+            inertia = expression(spec["inertia"], f"{key}.inertia", problems)
+            angle = expression(spec["angle"], f"{key}.angle", problems)
+            if isinstance(raw, list) and len(raw) == 3:
+                problems.add(f"{key}.position", "a rigid body moves in a plane: give x and y")
+        if mass is not None and len(position) == len(raw or ()) and position:
+            bodies.append(BodyDecl(name, key, mass, position, inertia, angle))
+    return bodies
+
+
+def _expressions(raw: Any, key: str, problems: Problems) -> list[Text]:
+    items = _list(raw, key, problems, LIMITS["constraints"]) or []
+    found = []
+    for i, x in enumerate(items, 1):
+        if (text := expression(x, f"{key}[{i}]", problems)) is not None:
+            found.append(text)
+    return found
+
+
+def _options(data: Mapping[str, Any], d: Declaration, problems: Problems) -> None:
+    table = _table(data.get("options", {}), "options", problems) or {}
+    if len(table) > LIMITS["options"]:
+        problems.add("options", f"{len(table)} options; at most {LIMITS['options']}")
+        return
+    for option, raw in table.items():
+        key = f"options.{option}"
+        if not _name(option, key, "option", problems):
+            continue
+        if isinstance(raw, list):  # plain choices: ["solid", "hollow"]
+            raw = (
+                {c: {} for c in raw if isinstance(c, str)}
+                if all(isinstance(c, str) for c in raw)
+                else raw
+            )
+        if (choices := _table(raw, key, problems, "a table of choices")) is None:
+            continue
+        if not choices or len(choices) > LIMITS["choices"]:
+            problems.add(key, f"offers {len(choices)} choices; from 1 to {LIMITS['choices']}")
+            continue
+        parsed = [_choice(c, spec, f"{key}.{c}", problems) for c, spec in choices.items()]
+        if all(c is not None for c in parsed):
+            d.options[option] = parsed  # type: ignore[assignment]
+
+
+def _choice(name: str, spec: Any, key: str, problems: Problems) -> ChoiceDecl | None:
+    if not _name(name, key, "choice", problems) or (spec := _table(spec, key, problems)) is None:
+        return None
+    _unknown_keys(spec, CHOICE_KEYS, key, problems)
+    choice = ChoiceDecl(name, key, wording=_string(spec, "wording", key, problems))
+    lets = _table(spec.get("let", {}), f"{key}.let", problems) or {}
+    if len(lets) > LIMITS["lets"]:
+        problems.add(f"{key}.let", f"{len(lets)} names; at most {LIMITS['lets']}")
+        lets = {}
+    for let, value in lets.items():
+        if _name(let, f"{key}.let.{let}", "let", problems):
+            if (text := expression(value, f"{key}.let.{let}", problems)) is not None:
+                choice.lets[let] = text
+    if "bodies" in spec and (bodies := _table(spec["bodies"], f"{key}.bodies", problems)):
+        choice.bodies = _bodies(bodies, f"{key}.bodies", problems)
+    choice.constraints = _expressions(spec.get("constraints", []), f"{key}.constraints", problems)
+    if "figure" in spec and (figure := _table(spec["figure"], f"{key}.figure", problems)):
+        choice.figure = figure
+    return choice
+
+
+def _quantities(data: Mapping[str, Any], d: Declaration, problems: Problems) -> None:
+    table = _table(data.get("quantities", {}), "quantities", problems) or {}
+    if len(table) > LIMITS["quantities"]:
+        problems.add("quantities", f"{len(table)} quantities; at most {LIMITS['quantities']}")
+        return
+    for name, spec in table.items():
+        key = f"quantities.{name}"
+        if not _name(name, key, "quantity", problems) or not (spec := _table(spec, key, problems)):
+            continue
+        _unknown_keys(spec, QUANTITY_KEYS, key, problems)
+        if "value" not in spec:
+            problems.add(f"{key}.value", "missing (the closed form in the parameters)")
+            continue
+        value = expression(spec["value"], f"{key}.value", problems)
+        check = None
+        if "check" in spec and (check := _table(spec["check"], f"{key}.check", problems)):
+            _unknown_keys(check, CHECK_KEYS, f"{key}.check", problems)
+        if value is not None:
+            d.quantities.append(
+                QuantityDecl(
+                    name,
+                    key,
+                    _string(spec, "description", key, problems, required=True) or "",
+                    value,
+                    _string(spec, "unit", key, problems) or "",
+                    check,
+                )
+            )

@@ -1,0 +1,105 @@
+# ruff: noqa: E501 (the table holds one case per line)
+"""Hostile and broken scene files: each is refused by `lagrade scene check` with exit status 2
+and a message naming the problem (its key, and for an expression the parser's caret), never a
+traceback, and nothing in the file is ever run. One case per line."""
+
+from __future__ import annotations
+
+import pathlib
+import time
+
+import pytest
+
+from lagrade.cli.main import main
+
+PENDULUM = """\
+title = "Pendulum"
+statement = "A bob of mass m on a rod of length l. Use {theta}."
+coordinates = ["theta"]
+potential = "gravity"
+constraints = ["x_bob^2 + y_bob^2 - l^2"]
+
+[parameters]
+m = { domain = "positive", unit = "kg", values = [1.0] }
+l = { domain = "positive", unit = "m", values = [1.0] }
+g = { domain = "positive", unit = "m/s^2", values = [9.81] }
+
+[bodies.bob]
+mass = "m"
+position = ["l sin(theta)", "-l cos(theta)"]
+"""
+
+#: (what the case plants, the file's text, a fragment the one error must hold)
+CASES = [
+    ("code in an expression", PENDULUM.replace('"m"', '''"__import__('os').system('touch PWNED')"'''), "mass: Unexpected character"),
+    ("a call of a function that is not one", PENDULUM.replace('"m"', '"exec(m)"'), "Unknown symbol 'exec'"),
+    ("a dunder name", PENDULUM.replace('"m"', '"__class__"'), "bodies.bob.mass"),
+    ("an unknown name", PENDULUM.replace("l sin(theta)", "l sin(theta) + b"), "position[1]: Unknown symbol 'b'"),
+    ("a body that violates a constraint", PENDULUM.replace("- l^2", "- 4 l^2"), "is not satisfied by the transformation equations"),
+    ("a coordinate in no position", PENDULUM.replace('["theta"]', '["theta", "psi"]'), "'psi' appears in no position"),
+    ("an inconsistent DOF", PENDULUM.replace('constraints = ["x_bob^2 + y_bob^2 - l^2"]', "constraints = []"), "3N - k gives 2 degrees of freedom"),
+    ("10 MB of text", PENDULUM + "# " + "x" * 10_000_000 + "\n", "larger than 256 KiB"),
+    ("brackets nested deep", PENDULUM + "deep = " + "[" * 200 + "]" * 200 + "\n", "nests brackets more than 64 deep"),
+    ("an expression nested deep", PENDULUM.replace('"m"', '"' + "(" * 80 + "m" + ")" * 80 + '"'), "mass"),
+    ("a huge power", PENDULUM.replace('"m"', '"m^(10^100)"'), "Exponent too large"),
+    ("a 200-digit number", PENDULUM.replace("[1.0] }\nl", "[" + "9" * 200 + "] }\nl"), "more than 100 digits"),
+    ("not TOML", "title = \n", "is not valid TOML"),
+    ("a velocity in a position", PENDULUM.replace("l sin(theta)", "l theta_dot"), "uses theta_dot, a velocity"),
+    ("an acceleration in the potential", PENDULUM.replace('"gravity"', '"theta_ddot"'), "uses theta_ddot, an acceleration"),
+    ("a Cartesian coordinate in a position", PENDULUM.replace("l sin(theta)", "x_bob"), "a body's Cartesian coordinate"),
+    ("an ambiguous fraction", PENDULUM.replace("l sin(theta)", "l/2 sin(theta)"), "must be unambiguous"),
+    ("a misspelt key", PENDULUM.replace("constraints =", "constrains ="), "constrains: unknown key"),
+    ("a statement field that is code", PENDULUM.replace("{theta}", "{theta.__class__}"), "is not a field"),
+    ("a parameter without a domain", PENDULUM.replace('domain = "positive", unit = "kg", ', 'unit = "kg", '), "parameters.m.domain: missing"),
+    ("a value outside its domain", PENDULUM.replace("[1.0] }\nl", "[-1.0] }\nl"), "outside the domain positive"),
+    ("bodies and a Lagrangian", 'lagrangian = "m"\n' + PENDULUM, "declares no bodies, potential or constraints"),
+    ("a body named to clash", PENDULUM.replace('["theta"]', '["x_M"]').replace("theta", "x_M").replace("[bodies.bob]", "[bodies.M]"), "one name to the reader"),
+    ("gravity without g", PENDULUM.replace("g = {", "G = {"), "gravity needs a parameter g"),
+    ("a reserved name", PENDULUM.replace("l = {", "pi = {"), "'pi' is reserved"),
+    ("choices that bind different names", PENDULUM + '[options.o.a]\nlet = { u = "1" }\n[options.o.b]\n', "every choice must bind the same names"),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize("case, text, expected", CASES, ids=[c[0] for c in CASES])
+def test_refused_with_one_message(case, text, expected, tmp_path, monkeypatch, capsys):
+    monkeypatch.chdir(tmp_path)
+    path = tmp_path / "scene.toml"
+    path.write_text(text, encoding="utf-8")
+    start = time.perf_counter()
+    assert main(["scene", "check", str(path)]) == 2, case
+    assert time.perf_counter() - start < 30
+    err = capsys.readouterr().err
+    assert err.startswith("lagrade: error: ") and "Traceback" not in err
+    assert expected in err, err
+    assert not (tmp_path / "PWNED").exists() and not pathlib.Path("PWNED").exists()
+    assert not (tmp_path / "scene.svg").exists()  # nothing drawn for a refused file
+
+
+def test_every_problem_is_reported_at_once(tmp_path, capsys):
+    text = (
+        PENDULUM.replace('"m"', '"m + b"')
+        .replace("l^2", "4 l^2")
+        .replace("[1.0] }\nl", "[-1] }\nl")
+    )
+    text = text.replace("constraints =", "constraint =")
+    path = tmp_path / "scene.toml"
+    path.write_text(text)
+    assert main(["scene", "check", str(path)]) == 2
+    err = capsys.readouterr().err
+    for key in (
+        "bodies.bob.mass: Unknown symbol 'b'",
+        "parameters.m.values[1]",
+        "constraint: unknown key",
+    ):
+        assert key in err
+    assert "        m + b\n            ^\n" in err  # the caret under the unknown name
+
+
+def test_not_utf8_and_a_folder_are_refused(tmp_path, capsys):
+    path = tmp_path / "scene.toml"
+    path.write_bytes(b"title = '\xff\xfe'\n")
+    assert main(["scene", "check", str(path)]) == 2
+    assert "is not UTF-8 text (byte 0xff at position 9)" in capsys.readouterr().err
+    (tmp_path / "dir.toml").mkdir()
+    assert main(["scene", "check", str(tmp_path / "dir.toml")]) == 2
+    assert "is a folder" in capsys.readouterr().err
