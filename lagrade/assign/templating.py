@@ -46,7 +46,9 @@ def tex_escape(value: Any) -> str:
 
 #: ASCII characters a typewriter font (OT1 cmtt) sets as commands or ligatures in LaTeX, and the
 #: slot of its own glyph for each: copied from the PDF, `'` is a straight quote (slot 13, not
-#: the curly 39), `_` an underscore (not a drawn rule), `"` a straight double quote.
+#: the curly 39), `_` an underscore (not a drawn rule), `"` a straight double quote. Under
+#: LuaLaTeX the font is Unicode and each character is its own code point: where the two differ,
+#: the template's `\ttglyph{OT1}{Unicode}` picks by engine (slot 13 there is a carriage return).
 _TT_SLOTS = {ch: ord(ch) for ch in '\\{}_^~#$%&"<>|`'} | {"'": 13, "`": 18}
 
 
@@ -56,7 +58,9 @@ def tt_copy(value: Any) -> str:
     font's own glyph, and every space kept (runs of spaces do not collapse)."""
     out = []
     for ch in str(value):
-        if ch in _TT_SLOTS:
+        if ch in _TT_SLOTS and _TT_SLOTS[ch] != ord(ch):
+            out.append(f"\\ttglyph{{{_TT_SLOTS[ch]}}}{{{ord(ch)}}}")
+        elif ch in _TT_SLOTS:
             out.append(f"{{\\char{_TT_SLOTS[ch]}}}")
         elif ch == " ":
             out.append("\\ ")

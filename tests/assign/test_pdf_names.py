@@ -11,8 +11,10 @@ and the Noto fonts (`.ci/run` installs them)."""
 from __future__ import annotations
 
 import json
+import re
 import shutil
 import subprocess
+import tomllib
 import unicodedata
 from pathlib import Path
 
@@ -85,6 +87,23 @@ def test_a_name_in_any_script_gets_its_handout_and_key_pdf(assignment, tmp_path)
                 sid,
                 text[:200],
             )
+
+
+@needs_lualatex
+def test_a_lualatex_key_copies_out_as_the_same_toml(assignment, tmp_path):
+    """The key's answers block is copyable under LuaLaTeX too: the typewriter glyphs are picked
+    by engine (OT1's straight-quote slot 13 is a carriage return in a Unicode font, which once
+    stopped every LuaLaTeX key with "Missing character U+000D")."""
+    roster = write_roster(tmp_path / "r.csv", [("s2", NAMES["s2"])])
+    out = tmp_path / "out"
+    result = generate(assignment, roster, 5, out, "pdf,md")
+    assert result.unwritten == {}
+    text = text_of(out / "keys" / "s2.pdf")
+    expected = tomllib.loads(
+        "\n".join(re.findall(r"```toml\n(.*?)```", (out / "keys" / "s2.md").read_text(), re.S))
+    )
+    block = re.split(r"\n\s*\n", text[text.index("[problem1]") :])[0]
+    assert tomllib.loads(block) == expected, block
 
 
 @needs_lualatex

@@ -3,9 +3,11 @@ choices and coordinate names), as JSON-ready data: the record that holds the ban
 to what the Python scenes they replaced derived (`test_bank_unchanged.py`).
 
 `python tests/bank/bank_derived.py OUT.json` writes it. The committed record,
-`tests/bank/data/bank_derived.json`, was written by this script run against main at c5b4539,
-before the scenes became files (the Python scenes, `lagrade/bank/scenes/*.py`), and must never
-be regenerated from the new code to make a test pass. Only APIs both versions have are used.
+`tests/bank/data/bank_derived.json`, was written by this script run against main at b755f21,
+the last commit with the Python scenes (`lagrade/bank/scenes/*.py`; first written at c5b4539,
+then again at b755f21 once issue 30's figure labels and Markdown prose had landed: only figure
+bytes and Markdown statements differ between the two), and must never be regenerated from the
+new code to make a test pass. Only APIs both versions have are used.
 
 Expressions are kept twice: `str` (readable in a failing diff) and the SHA-256 of `srepr`
 (exact: tree shape, argument order and symbol assumptions), so that the record stays small.

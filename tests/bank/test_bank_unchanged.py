@@ -2,8 +2,8 @@
 every presentation (each combination of option choices and coordinate names), the declaration,
 the seeded draws, the statement, bodies, constraints, DOF, transformation, T, V, L, Euler-Lagrange
 expressions, momenta, cyclic coordinates, conserved quantities, quantities, used parameters and
-the figure (SVG and PDF bytes) are those recorded from main at c5b4539, before the conversion
-(`bank_derived.py`; the record is never regenerated from the new code)."""
+the figure (SVG and PDF bytes) are those recorded from main at b755f21, the last commit before
+the conversion (`bank_derived.py`; the record is never regenerated from the new code)."""
 
 from __future__ import annotations
 
