@@ -19,6 +19,7 @@ ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT))
 
 from benchmarks.corpus.systems_data import (  # noqa: E402
+    extra_forms,
     fields_sources,
     landau_sources,
     lecture_sources,
@@ -34,8 +35,10 @@ MODULES = (sympy_sources, landau_sources, lecture_sources, textbook_sources, fie
 
 
 def systems() -> list[System]:
-    """Every system, in module order."""
-    return [make() for module in MODULES for make in module.SYSTEMS]
+    """Every system, in module order, with the extra forms added across them."""
+    made = [make() for module in MODULES for make in module.SYSTEMS]
+    extra_forms.augment({s.key: s for s in made})
+    return made
 
 
 def records() -> list[dict]:

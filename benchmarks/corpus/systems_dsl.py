@@ -43,6 +43,7 @@ MISTAKES = {
     "small_angle": "the small-angle approximation where the exact equation is asked",
     "wrong_expression": "a closed form with a slip (inverted ratio, wrong power, missing factor)",
     "too_few_equations": "fewer equations than coordinates",
+    "swapped_parameter": "two parameters interchanged (m1 where m2 belongs)",
 }
 
 _GREEK = {

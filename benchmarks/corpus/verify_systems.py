@@ -95,6 +95,8 @@ class Problem:
             for suffix in ("", "_dot", "_ddot"):
                 names[q + suffix] = sp.Symbol(q + suffix, real=True)
         names.setdefault("t", _T)
+        for name in ("const", "constant"):  # an arbitrary constant, as lagrade's vocabulary has
+            names.setdefault(name, sp.Symbol(name, real=True))
         return names
 
     def q(self, kind: str = "") -> list[sp.Symbol]:
@@ -106,6 +108,8 @@ class Problem:
             raise Unreadable(f"'^' in a sympy-syntax form: {text!r}")
         local = dict(self.symbols)
         local["Dt"] = self.total_derivative
+        if self.spec.get("imaginary_unit"):
+            local[self.spec["imaginary_unit"]] = sp.I
         expr = parse_expr(
             text,
             local_dict=local,
@@ -198,22 +202,31 @@ class Problem:
             boxes[self.symbols[q + "_ddot"]] = (-2.0, 2.0)
         if "t" not in self.spec.get("parameters", {}):
             boxes[_T] = (-3.0, 3.0)
+        for name in ("const", "constant"):
+            boxes[self.symbols[name]] = (-3.0, 3.0)
         return boxes
 
-    def draws(self, seed: int = 11) -> Iterable[list[dict[sp.Symbol, mpmath.mpf]]]:
-        """PARAMETER_DRAWS groups of STATES_PER_DRAW points sharing one draw of the parameters."""
+    def draws(
+        self, seed: int = 11, keep: Callable[[dict], bool] | None = None
+    ) -> Iterable[list[dict[sp.Symbol, mpmath.mpf]]]:
+        """PARAMETER_DRAWS groups of STATES_PER_DRAW points sharing one draw of the parameters;
+        with `keep`, points it refuses are drawn again (up to 50 tries per point), so that a
+        reference real on a small part of the box (|v| < c) still gets its points."""
         rng = random.Random(seed)
         boxes = self._boxes()
         parameters = {self.symbols[n] for n in self.spec.get("parameters", {})}
         for _ in range(PARAMETER_DRAWS):
             fixed = {s: mpmath.mpf(rng.uniform(*boxes[s])) for s in parameters}
             group = []
-            for _ in range(STATES_PER_DRAW):
+            for _ in range(STATES_PER_DRAW * 50):
                 point = dict(fixed)
                 for s, box in boxes.items():
                     if s not in parameters:
                         point[s] = mpmath.mpf(rng.uniform(*box))
-                group.append(point)
+                if keep is None or keep(point):
+                    group.append(point)
+                if len(group) == STATES_PER_DRAW:
+                    break
             yield group
 
 
@@ -311,10 +324,9 @@ class _Verifier:
 
     def states(self) -> Iterable[list[dict]]:
         """Draws of points where the reference Lagrangian is real and finite."""
-        for group in self.p.draws():
-            kept = [pt for pt in group if _real(_value(self.lagrangian_value, pt))]
-            if kept:
-                yield kept
+        for group in self.p.draws(keep=lambda pt: _real(_value(self.lagrangian_value, pt))):
+            if group:
+                yield group
 
     @cached_property
     def _acceleration_system(self) -> tuple[Callable, Callable]:
