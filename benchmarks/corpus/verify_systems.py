@@ -307,9 +307,10 @@ class Finding:
 
 
 class _Verifier:
-    def __init__(self, problem: Problem, proofs: bool):
+    def __init__(self, problem: Problem, proofs: bool, complete: bool = False):
         self.p = problem
         self.proofs = proofs
+        self.complete = complete
 
     @cached_property
     def all_symbols(self) -> list[sp.Symbol]:
@@ -539,6 +540,14 @@ class _Verifier:
                 rank = max(rank, sum(1 for s in singular if abs(s) > top * TOLERANCE))
         if rank < len(quantities):
             return "incorrect", f"rank {rank} for {len(quantities)} quantities", ""
+        if self.complete:
+            # docs/formats.md: with "all", the system's independent set is the momenta of its
+            # cyclic coordinates and, when L does not depend on t, the energy function
+            needed = len(self.cyclic_set) + (
+                self._equal(sp.diff(self.p.lagrangian, _T), 0) == "correct"
+            )
+            if len(quantities) < needed:
+                return "incorrect", f"{len(quantities)} of {needed} quantities", ""
         return "correct", "conserved, not constant, independent", ""
 
     def expression(self, meaning: str) -> tuple[str, str, str]:
@@ -564,7 +573,7 @@ def verify_case(record: dict, proofs: bool = True) -> Finding:
     """The label of one case, recomputed."""
     request = record["request"]
     problem = Problem(request["problem"])
-    verifier = _Verifier(problem, proofs)
+    verifier = _Verifier(problem, proofs, bool((request.get("given") or {}).get("all")))
     part, meaning = request["part"], record["meaning"]
     meanings = meaning if isinstance(meaning, list) else [meaning]
     try:

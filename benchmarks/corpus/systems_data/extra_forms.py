@@ -295,3 +295,46 @@ def augment(systems: dict[str, System]) -> None:
     unstable.problem["imaginary_unit"] = "I"
     unstable.ok("I sqrt(omega^2 - g/R)", "I*sqrt(omega**2 - g/R)", "imaginary_frequency")
     unstable.bad("sqrt(omega^2 - g/R)", "sqrt(omega**2 - g/R)", "wrong_sign")
+
+    whole = {"all": True}
+    pf = "I1*phi_dot*sin(theta)**2 + I3*(psi_dot + phi_dot*cos(theta))*cos(theta)"
+    ps = "I3*(psi_dot + phi_dot*cos(theta))"
+    h = (
+        "I1*(theta_dot**2 + phi_dot**2*sin(theta)**2)/2"
+        " + I3*(psi_dot + phi_dot*cos(theta))**2/2 + M*g*l*cos(theta)"
+    )
+    top.ok(
+        "conserved",
+        [pf.replace("**", "^"), ps.replace("**", "^"), h.replace("**", "^")],
+        [pf, ps, h],
+        "complete_set",
+        given=whole,
+    )
+    top.bad("conserved", [h.replace("**", "^")], [h], "missing_term", given=whole)
+    E = "m*(r_dot**2 + r**2*phi_dot**2)/2 - alpha/r"
+    kepler.ok(
+        "conserved",
+        ["m r^2 phi_dot", E.replace("**", "^")],
+        ["m*r**2*phi_dot", E],
+        "complete_set",
+        given=whole,
+    )
+    kepler.bad("conserved", ["m r^2 phi_dot"], ["m*r**2*phi_dot"], "missing_term", given=whole)
+    gauge.ok(
+        "conserved",
+        ["m y_dot + q B x", "1/2 m (x_dot^2 + y_dot^2)"],
+        ["m*y_dot + q*B*x", "m*(x_dot**2 + y_dot**2)/2"],
+        "complete_set",
+        given=whole,
+    )
+    gauge.bad(
+        "conserved",
+        ["1/2 m (x_dot^2 + y_dot^2)"],
+        ["m*(x_dot**2 + y_dot**2)/2"],
+        "missing_term",
+        given=whole,
+    )
+
+    turn = hoop.expressions[0]
+    turn.ok("atan(sqrt(omega^4 R^2 - g^2)/g)", "atan(sqrt(omega**4*R**2 - g**2)/g)", "via_tangent")
+    turn.ok("asin(sqrt(1 - g^2/(omega^4 R^2)))", "asin(sqrt(1 - g**2/(omega**4*R**2)))", "via_sine")

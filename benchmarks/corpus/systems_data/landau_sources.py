@@ -1015,6 +1015,36 @@ def symmetric_top() -> System:
     return s
 
 
+def total_derivative_term() -> System:
+    s = System(
+        "ll_total_derivative_term",
+        LL + "§2 (a Lagrangian is defined only to within a total time derivative df(q, t)/dt), "
+        "for a free particle with the term k x x' = d(k x^2/2)/dt added: x is not cyclic (L "
+        "depends on x), m x' is conserved and the canonical momentum m x' + k x is not",
+        "m*x_dot**2/2 + k*x*x_dot",
+        ["x"],
+        {"m": P, "k": P},
+    )
+    s.ok("lagrangian", "1/2 m x_dot^2", "m*x_dot**2/2", "without_the_derivative")
+    s.ok("lagrangian", "1/2 m x_dot^2 + k x x_dot", "m*x_dot**2/2 + k*x*x_dot", "as_given")
+    s.bad("lagrangian", "1/2 m x_dot^2 + k x^2", "m*x_dot**2/2 + k*x**2", "missing_term")
+    s.ok("eom", ["m x_ddot = 0"], ["m*x_ddot"], "free_motion")
+    s.ok(
+        "eom",
+        ["d/dt(m x_dot + k x) = k x_dot"],
+        ["Dt(m*x_dot + k*x) - k*x_dot"],
+        "from_the_momentum",
+    )
+    s.bad("eom", ["d/dt(m x_dot + k x) = 0"], ["Dt(m*x_dot + k*x)"], "missing_term")
+    s.ok("momenta", ["p_x = m x_dot + k x"], ["p_x = m*x_dot + k*x"])
+    s.bad("momenta", ["p_x = m x_dot"], ["p_x = m*x_dot"], "other_lagrangian")
+    s.ok("cyclic", "none", [], "none")
+    s.bad("cyclic", "x", ["x"], "not_cyclic")
+    s.ok("conserved", ["m x_dot"], ["m*x_dot"], "kinetic_momentum")
+    s.bad("conserved", ["m x_dot + k x"], ["m*x_dot + k*x"], "not_conserved")
+    return s
+
+
 SYSTEMS = (
     double_pendulum,
     sliding_support,
@@ -1024,4 +1054,5 @@ SYSTEMS = (
     governor,
     kepler,
     symmetric_top,
+    total_derivative_term,
 )
