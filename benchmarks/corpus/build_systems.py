@@ -1,7 +1,7 @@
 """Write benchmarks/corpus/systems.jsonl from the systems written out in systems_data/: every
 case's label is recomputed first by verify_systems.py (sympy and mpmath, never lagrade's judge),
 and only the cases whose recomputed label agrees go in; the others are listed as dropped, with
-the verifier's reason, in systems_dropped.txt.
+the verifier's reason, in systems_dropped.txt (written only when some are).
 
 Run: python benchmarks/corpus/build_systems.py [--no-proofs] [--jobs N]
 """
@@ -78,12 +78,14 @@ def main() -> int:
         with open(OUT, "w", encoding="utf-8") as f:
             for record in kept:
                 f.write(json.dumps(record, ensure_ascii=False) + "\n")
-        with open(DROPPED, "w", encoding="utf-8") as f:
-            for record, finding in dropped:
-                f.write(
-                    f"{record['id']}: labelled {record['label']}, verifier says "
-                    f"{finding.computed} ({finding.detail})\n"
-                )
+        DROPPED.unlink(missing_ok=True)
+        if dropped:
+            with open(DROPPED, "w", encoding="utf-8") as f:
+                for record, finding in dropped:
+                    f.write(
+                        f"{record['id']}: labelled {record['label']}, verifier says "
+                        f"{finding.computed} ({finding.detail})\n"
+                    )
     systems_kept = len({r["system"] for r in kept})
     print(f"{len(kept)} cases kept over {systems_kept} systems; {len(dropped)} dropped")
     for record, finding in dropped:
