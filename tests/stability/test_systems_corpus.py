@@ -51,6 +51,11 @@ KNOWN_WRONG: dict[str, tuple[str, str]] = {
     "symmetric_gauge_polar/eom/ok-unicode_conservation_form": ("incorrect", _DT),
     "relativistic_uniform_field/eom/ok-momentum_form": ("invalid", _DT),
     "relativistic_free_particle/eom/ok-momentum_form": ("invalid", _DT),
+    "ll_kepler/eom/ok-latex_frac_d_dt": ("incorrect", _DT + r" (\frac{d}{dt})"),
+    "ll_kepler/eom/ok-diff_of_expression": (
+        "incorrect",
+        "diff(expression, t) is refused (issue 25)",
+    ),
     "sympy_simple_pendulum/small_oscillation_period/expression/ok-unicode_root": ("invalid", _ROOT),
     "ll_kepler/period/expression/ok-unicode_root": ("invalid", _ROOT),
     "tong_bead_rotating_hoop/oscillation_about_equilibrium/expression/ok-unicode_root": (
@@ -80,6 +85,10 @@ KNOWN_WRONG: dict[str, tuple[str, str]] = {
     "sympy_simple_pendulum/lagrangian/ok-plus_const": ("invalid", _CONST),
     "ll_kepler/lagrangian/ok-named_l_plus_const": ("invalid", _CONST),
     "ll_heavy_symmetric_top/cyclic/ok-one_per_line": ("invalid", _LINES),
+    "sympy_simple_pendulum/lagrangian/ok-named_l_with_arguments": (
+        "invalid",
+        "L = … is read, but the textbook's L(theta, theta_dot) = … label is refused",
+    ),
     "tong_bead_rotating_hoop/bottom_frequency_above_critical/expression/ok-imaginary_frequency": (
         "refused",
         _COMPLEX,

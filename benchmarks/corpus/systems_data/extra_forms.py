@@ -338,3 +338,38 @@ def augment(systems: dict[str, System]) -> None:
     turn = hoop.expressions[0]
     turn.ok("atan(sqrt(omega^4 R^2 - g^2)/g)", "atan(sqrt(omega**4*R**2 - g**2)/g)", "via_tangent")
     turn.ok("asin(sqrt(1 - g^2/(omega^4 R^2)))", "asin(sqrt(1 - g**2/(omega**4*R**2)))", "via_sine")
+
+    simple.ok(
+        "lagrangian",
+        "L(theta, theta_dot) = 1/2 m l^2 theta_dot^2 + m g l cos(theta)",
+        "m*l**2*theta_dot**2/2 + m*g*l*cos(theta)",
+        "named_L_with_arguments",
+    )
+    simple.ok(
+        "lagrangian",
+        "½ × m × l² × θ̇² + m × g × l × cos θ",
+        "m*l**2*theta_dot**2/2 + m*g*l*cos(theta)",
+        "unicode_times_signs",
+    )
+    kepler.ok(
+        "eom",
+        [
+            r"m\ddot r - m r\dot\varphi^2 + \frac{\alpha}{r^2} = 0",
+            r"\frac{d}{dt}\left(m r^2\dot\varphi\right) = 0",
+        ],
+        ["m*r_ddot - m*r*phi_dot**2 + alpha/r**2", "Dt(m*r**2*phi_dot)"],
+        "latex_frac_d_dt",
+    )
+    kepler.ok(
+        "eom",
+        ["m r_ddot - m r phi_dot^2 + alpha/r^2 = 0", "diff(m r^2 phi_dot, t) = 0"],
+        ["m*r_ddot - m*r*phi_dot**2 + alpha/r**2", "Dt(m*r**2*phi_dot)"],
+        "diff_of_expression",
+    )
+    two.bad("conserved", ["m1 + m2"], ["m1 + m2"], "constant")
+    kepler.bad(
+        "conserved",
+        ["m r^2 phi_dot - r (m r phi_dot)"],
+        ["m*r**2*phi_dot - r*(m*r*phi_dot)"],
+        "constant",
+    )
