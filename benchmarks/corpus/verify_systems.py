@@ -590,46 +590,57 @@ def verify_case(record: dict, proofs: bool = True) -> Finding:
 
 
 def reading_differs(record: dict) -> str:
-    """Where lagrade's parser reads the answer text differently from the stored meaning ('' when
-    they agree or the text does not parse). Diagnostic only: labels never depend on it."""
+    """Where lagrade's parser reads the answer text otherwise than the stored meaning says ('' when
+    they agree, or when the text does not parse: then lagrade's verdict says so). Diagnostic only,
+    labels never depend on it: a difference is a transcription slip of ours or a misreading.
+    Equations are compared up to a factor (an equation of motion may be scaled), a leading label
+    (L =, E =, p_x =) is dropped from both sides."""
     from lagrade.judge.problem import build_problem
     from lagrade.notation.parse import parse_answer
 
     request = record["request"]
-    spec = request["problem"]
-    problem = Problem(spec)
-    try:
-        vocabulary = build_problem(spec).vocabulary()
-    except Exception as error:  # noqa: BLE001 - a diagnostic
-        return f"problem does not build: {error}"
+    problem = Problem(request["problem"])
+    part = request["part"]
+    if part == "cyclic":
+        return ""
+    vocabulary = build_problem(request["problem"]).vocabulary()
     texts = request["answer"] if isinstance(request["answer"], list) else [request["answer"]]
     meanings = record["meaning"] if isinstance(record["meaning"], list) else [record["meaning"]]
-    if request["part"] == "cyclic" or len(texts) != len(meanings):
-        return ""
+    if len(texts) != len(meanings):
+        return f"{len(texts)} lines for {len(meanings)} meanings"
+    names = list(problem.symbols.values())
     for text, meaning in zip(texts, meanings, strict=True):
         try:
             parsed = parse_answer(text, vocabulary)
-        except Exception:  # noqa: BLE001 - unreadable: lagrade's verdict will say so
+        except Exception:  # noqa: BLE001 - unreadable: lagrade's verdict says so
             continue
-        expr = getattr(parsed, "expr", None)
-        if expr is None:
-            continue
-        ours = problem.read_equation(meaning.partition("=")[2] if "p_" in meaning else meaning)
-        theirs = sp.sympify(expr)
+        if parsed.rhs is not None and parsed.lhs.is_Symbol and part != "eom":
+            theirs = parsed.rhs
+        else:
+            theirs = parsed.expr
         theirs = theirs.subs(
-            {s: problem.symbols[s.name] for s in theirs.free_symbols if s.name in problem.symbols}
+            {x: problem.symbols[x.name] for x in theirs.free_symbols if x.name in problem.symbols}
         )
-        if "=" in meaning and "p_" not in meaning:
-            continue
-        fa, fb = (
-            _evaluator(ours, list(problem.symbols.values())),
-            _evaluator(theirs, list(problem.symbols.values())),
-        )
+        lhs, equals, rhs = meaning.partition("=")
+        if equals and part != "eom":
+            ours = problem.read(rhs)
+        else:
+            ours = problem.read_equation(meaning)
+        fa, fb = _evaluator(ours, names), _evaluator(theirs, names)
+        ratios = []
         for group in problem.draws():
-            pt = group[0]
-            a, b = _value(fa, pt), _value(fb, pt)
-            if a is not None and b is not None and not _same(a, b):
-                return f"{text!r} read otherwise than {meaning!r}"
+            for pt in group:
+                with mpmath.workdps(DIGITS):
+                    a, b = _value(fa, pt), _value(fb, pt)
+                    if a is None or b is None:
+                        continue
+                    if part != "eom":
+                        if not _same(a, b):
+                            return f"{text!r} is read otherwise than {meaning!r}"
+                    elif abs(b) > TOLERANCE:
+                        ratios.append(a / b)
+        if ratios and not all(_same(r, ratios[0]) for r in ratios):
+            return f"{text!r} is read otherwise than {meaning!r}"
     return ""
 
 

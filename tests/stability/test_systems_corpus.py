@@ -14,7 +14,7 @@ from __future__ import annotations
 import pytest
 
 from benchmarks.corpus.systems_dsl import MISTAKES
-from benchmarks.corpus.verify_systems import load, verify_case
+from benchmarks.corpus.verify_systems import load, reading_differs, verify_case
 from lagrade import check
 from lagrade.errors import RequestError
 
@@ -180,6 +180,13 @@ def test_known_wrong_names_cases_of_the_corpus():
 def test_label_verifies_independently(record):
     finding = verify_case(record, proofs=False)
     assert finding.agrees, finding.detail
+
+
+def test_every_answer_read_is_read_as_meant():
+    """No silent misreading: each answer lagrade's parser reads means what its stored meaning
+    says (equations up to a factor), whatever the notation."""
+    differ = {r["id"]: note for r in RECORDS if (note := reading_differs(r))}
+    assert not differ
 
 
 @pytest.mark.parametrize("record", [_case(r) for r in RECORDS])

@@ -373,3 +373,11 @@ def augment(systems: dict[str, System]) -> None:
         ["m*r**2*phi_dot - r*(m*r*phi_dot)"],
         "constant",
     )
+
+    bottom = hoop.expression(
+        "sqrt(g/R - omega**2)", {"g": P, "R": P, "omega": P}, "bottom_frequency"
+    )
+    bottom.ok("sqrt(g - omega^2 R)/sqrt(R)", "sqrt(g - omega**2*R)/sqrt(R)", "one_root")
+    bottom.ok("sqrt(g/R) sqrt(1 - omega^2 R/g)", "sqrt(g/R)*sqrt(1 - omega**2*R/g)", "factored")
+    bottom.bad("sqrt(omega^2 - g/R)", "sqrt(omega**2 - g/R)", "wrong_sign")
+    bottom.bad("sqrt(g/R)", "sqrt(g/R)", "missing_centripetal")
