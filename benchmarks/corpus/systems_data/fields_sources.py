@@ -17,7 +17,7 @@ def landau_gauge() -> System:
         "Cambridge Mathematical Tripos Part II 2011, Paper 1, Section I, Classical Dynamics "
         "(L = m x'^2/2 - q(phi - x'·A) with phi = 0, A = (0, x B, 0)), "
         "https://questions.tripos.org/part-ii/2011-19; the same Landau gauge as D. Tong, "
-        "Lectures on the Quantum Hall Effect (arXiv:1606.06687), §1.4",
+        "Lectures on the Quantum Hall Effect (arXiv:1606.06687), §1.4 (Landau levels)",
         "m*(x_dot**2 + y_dot**2)/2 + q*B*x*y_dot",
         ["x", "y"],
         {"m": P, "q": P, "B": P},

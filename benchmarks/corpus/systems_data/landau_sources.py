@@ -717,8 +717,8 @@ def kepler() -> System:
         "ll_kepler",
         LL + "§14 (motion in a central field, L = m(r'^2 + r^2 phi'^2)/2 - U(r)) and §15 "
         "(Kepler's problem, U = -alpha/r; period T = 2 pi a^(3/2) sqrt(m/alpha) = "
-        "pi alpha sqrt(m/(2|E|^3))); the Laplace-Runge-Lenz vector, §15 Problem 3 in later "
-        "printings, written out in polar coordinates",
+        "pi alpha sqrt(m/(2|E|^3))); the x-component of the Laplace-Runge-Lenz vector "
+        "p x M - m alpha r/r (conserved for U = -alpha/r) written out here in polar coordinates",
         "m*(r_dot**2 + r**2*phi_dot**2)/2 + alpha/r",
         {"r": "positive", "phi": None},
         {"m": P, "alpha": P},
