@@ -1034,6 +1034,7 @@ def free_parabola() -> System:
         "eom",
         ["(1 + x^2) x_ddot + x x_dot^2 - x phi_dot^2 + g x = 0", "d/dt(x^2 phi_dot) = 0"],
         ["(1 + x**2)*x_ddot + x*x_dot**2 - x*phi_dot**2 + g*x", "Dt(x**2*phi_dot)"],
+        "conservation_form",
     )
     s.ok(
         "eom",
