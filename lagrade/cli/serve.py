@@ -28,6 +28,7 @@ def run(args: argparse.Namespace) -> int:
     secret = load_or_create_secret(secret_file)
     args.submissions.mkdir(parents=True, exist_ok=True)
     room = build_classroom(manifest, args.manifest, args.submissions, secret, jobs=args.jobs)
+    room.judging().start()  # fork the workers' host while this process has no socket or thread
     listener = _listen(args.host, args.port)
     host, port = listener.getsockname()[:2]
     base_url = (args.base_url or f"http://{_url_host(host)}:{port}").rstrip("/")

@@ -1,40 +1,50 @@
 """The killable workers of `lagrade.judge.worker`, fed one item at a time as requests arrive: for
-a server, where items come while others are being judged (the answer page). The same rule holds
-for every item: the worker's alarm at the part's limit, the parent's kill at its deadline
+a server, where items come while others are being judged (the answer page). Every item is under
+the same rule as in `check --batch` and `grade`: the part's alarm, the kill at its deadline
 (limit + `GRACE`), the memory limit, recycling.
 
-A slow item must not hold up the quick ones behind it: when items wait and every worker has
-been on its item for longer than `slow` seconds, up to `burst` extra workers start for them
-(and retire once idle), so k slow answers hold k workers, not the queue. How many items one user
-may have in flight at once is the caller's rule (the answer page lets each student have one).
+The workers belong to a host process, forked by `start` before the server has threads or
+sockets: it derives what `warm` derives (a class's questions), then forks its workers, which
+share that and start in milliseconds (a kill costs a fork, not a derivation). The server talks
+to the host over one pipe, from two threads of its own, so that a submission never blocks it.
 
-Workers start from a forkserver by default: a dispatching thread starts them, and forking a
-process that runs threads (a web server's) can copy a lock some other thread holds."""
+A slow item must not hold up the quick ones: once an item has run `slow` seconds its worker's
+scheduling priority is lowered (nice 10, so quick items get the processors first; the worker is
+replaced after that item), and while items wait and every worker is on a slow item, up to
+`burst` extra workers start for them (retired once idle). So k slow answers hold k workers, not
+the queue. How many items one user may have in flight is the caller's rule."""
 
 from __future__ import annotations
 
 import asyncio
+import atexit
+import dataclasses
+import gc
 import itertools
 import os
+import queue
+import signal
 import threading
 import time
 from collections import deque
-from collections.abc import Callable, Iterable
+from collections.abc import Callable
 from concurrent.futures import Future
 from multiprocessing.connection import Connection, wait
 from multiprocessing.reduction import ForkingPickler
 from typing import Any
 
-from lagrade.judge.worker import Limits, Outcome, Pool, _Worker
+from lagrade.judge.worker import _FORK, Limits, Outcome, Pool, _Worker
 
-#: Seconds every worker must have spent on its item before a waiting item gets an extra worker.
-SLOW = 0.2
+#: Seconds after which an item counts as slow (its worker niced; burst workers allowed).
+SLOW = 0.25
+#: The niceness of a worker on a slow item.
+SLOW_NICE = 10
 
 
-class LivePool(Pool):
-    """`jobs` workers (plus up to `burst` while they are all held by slow items) running
-    `work(item)` for items submitted one at a time, from any thread (`submit`) or an asyncio
-    task (`outcome`), first come first served."""
+class LivePool:
+    """`jobs` workers (plus up to `burst` while all are on slow items) in a host process, running
+    `work(item)` for items submitted one at a time, first come first served: from any thread
+    (`submit`) or an asyncio task (`outcome`). `warm()` runs in the host before it forks."""
 
     def __init__(
         self,
@@ -44,41 +54,48 @@ class LivePool(Pool):
         burst: int = 0,
         slow: float = SLOW,
         limits: Limits | None = None,
-        context: str = "forkserver",
-        preload: Iterable[str] = (),
+        warm: Callable[[], Any] | None = None,
     ) -> None:
-        super().__init__(work, jobs=jobs, limits=limits, context=context, preload=preload)
-        self.burst = max(0, int(burst))
-        self.slow = slow
-        self._waiting: deque[tuple[Any, Any, Future]] = deque()
+        self.work, self.jobs, self.burst, self.slow = work, max(1, int(jobs)), burst, slow
+        self.limits = limits or Limits()
+        self.warm = warm
         self._lock = threading.Lock()
-        self._wake_r, self._wake_w = os.pipe()
-        os.set_blocking(self._wake_w, False)
-        self._thread: threading.Thread | None = None
-        self._stopping = False
-        self._slots = itertools.count()
+        self._ids = itertools.count()
+        self._futures: dict[int, tuple[Any, Future]] = {}
+        self._outbox: queue.SimpleQueue = queue.SimpleQueue()
+        self._host: Any = None
+        self._conn: Connection | None = None
+        self._stopped = False
 
-    # --- the callers' side ----------------------------------------------------------------
     def start(self) -> None:
-        """Start the workers now rather than at the first item (a forkserver takes a second or
-        two to import what it preloads; better before the first student waits for it)."""
+        """Fork the host now (idempotent). Call it before the process starts threads or opens
+        sockets where it can: the host, and each worker it forks, is a copy of this process."""
         with self._lock:
-            if self._thread is None and not self._stopping:
-                self._thread = threading.Thread(target=self._dispatch, name="lagrade-workers")
-                self._thread.daemon = True
-                self._thread.start()
+            if self._host is not None or self._stopped:
+                return
+            parent, child = _FORK.Pipe()
+            settings = (self.work, self.jobs, self.burst, self.slow, self.limits, self.warm)
+            # not a daemon: a daemonic process may not start the workers
+            self._host = _FORK.Process(target=_host_main, args=(child, *settings))
+            self._host.start()
+            child.close()
+            self._conn = parent
+        atexit.register(self.close)  # before multiprocessing's own exit joins the host
+        for target, name in ((self._write, "lagrade-pool-out"), (self._read, "lagrade-pool-in")):
+            threading.Thread(target=target, name=name, daemon=True).start()
 
     def submit(self, key: Any, item: Any) -> Future:
-        """A future for the item's Outcome. Cancelling it before a worker has begun the item
-        drops the item; once begun, the item runs to its end or its deadline."""
+        """A future for the item's Outcome (an item once submitted runs to its end or its
+        deadline; cancelling the future only drops the answer)."""
+        self.start()
         future: Future = Future()
         with self._lock:
-            if self._stopping:
+            if self._stopped:
                 future.set_result(Outcome(key, "error", reason="the workers have stopped"))
                 return future
-            self._waiting.append((key, item, future))
-        self.start()
-        self._wake()
+            number = next(self._ids)
+            self._futures[number] = (key, future)
+        self._outbox.put(("item", number, item))
         return future
 
     async def outcome(self, key: Any, item: Any) -> Outcome:
@@ -86,64 +103,128 @@ class LivePool(Pool):
         return await asyncio.wrap_future(self.submit(key, item))
 
     def close(self) -> None:
-        """Stop: items in hand are killed (their Outcome is `error`), waiting ones cancelled."""
+        """Stop the host: items in hand are killed, and every open future gets `error`."""
         with self._lock:
-            self._stopping = True
-            thread = self._thread
-        self._wake()
-        if thread is not None:
-            thread.join()
-        else:
-            super().close()
-        for fd in (self._wake_r, self._wake_w):
+            self._stopped = True
+            host = self._host
+        if host is None:
+            return
+        self._outbox.put(("stop",))
+        host.join(10.0)
+        if host.is_alive():
+            host.kill()
+            host.join(2.0)
+
+    def _write(self) -> None:
+        """Send submissions to the host: a full pipe (while the host warms up) blocks this
+        thread, never the caller's."""
+        while True:
+            message = self._outbox.get()
             try:
-                os.close(fd)
-            except OSError:
-                pass
+                self._conn.send(message)
+            except (OSError, ValueError):
+                return
+            if message[0] == "stop":
+                return
 
-    def _wake(self) -> None:
-        try:
-            os.write(self._wake_w, b"!")
-        except (BlockingIOError, OSError):
-            pass  # a full pipe wakes the thread all the same; a closed one: we are stopping
+    def _read(self) -> None:
+        """Hand each Outcome from the host to its future; when the host is gone, fail the rest."""
+        while True:
+            try:
+                _, number, outcome = self._conn.recv()
+            except (EOFError, OSError):
+                break
+            with self._lock:
+                key, future = self._futures.pop(number)
+            if not future.done():
+                future.set_result(dataclasses.replace(outcome, key=key))
+        with self._lock:
+            self._stopped = True
+            left, self._futures = list(self._futures.values()), {}
+        for key, future in left:
+            if not future.done():
+                future.set_result(Outcome(key, "error", reason="the workers stopped"))
+        self._conn.close()
 
-    # --- the dispatching thread -----------------------------------------------------------
-    def _dispatch(self) -> None:
-        busy: dict[Connection, tuple[_Worker, Future]] = {}
+
+def _host_main(conn: Connection, work, jobs, burst, slow, limits, warm) -> None:
+    """The host process: warm up, then serve items from `conn` until it says stop or closes."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)  # the server handles Ctrl-C and stops us
+    signal.signal(signal.SIGTERM, signal.SIG_DFL)
+    if warm is not None:
         try:
-            while len(self._idle) < self.jobs and not self._waiting:
+            warm()
+        except Exception:  # noqa: BLE001 - a colder start for the workers, not a stopped server
+            pass
+    gc.collect()
+    gc.freeze()  # the workers' collector leaves what they inherit alone (see batch.warm_up)
+    _Host(work, jobs=jobs, limits=limits, burst=burst, slow=slow).serve(conn)
+
+
+class _Host(Pool):
+    """The host's dispatcher: Pool's workers, fed from the server's pipe in arrival order."""
+
+    def __init__(self, work, *, jobs: int, limits: Limits, burst: int, slow: float) -> None:
+        super().__init__(work, jobs=jobs, limits=limits)
+        self.burst, self.slow = max(0, int(burst)), slow
+        self._slots = itertools.count()
+        self._waiting: deque[tuple[int, Any]] = deque()
+        self._niced: set[int] = set()  # slots of workers on a slow item
+
+    def serve(self, conn: Connection) -> None:
+        busy: dict[Connection, tuple[_Worker, int]] = {}
+        try:
+            for _ in range(self.jobs):
                 slot = next(self._slots)
                 self._idle[slot] = self._fork(slot)
             while True:
-                with self._lock:
-                    if self._stopping:
-                        break
-                self._begin_waiting(busy)
+                self._begin_waiting(busy, conn)
                 self._retire_spares(busy)
-                for ready in wait([*busy, self._wake_r], timeout=self._next_wake(busy)):
-                    if ready == self._wake_r:
-                        os.read(self._wake_r, 4096)
+                for ready in wait([*busy, conn], timeout=self._next_wake(busy)):
+                    if ready is conn:
+                        try:
+                            message = conn.recv()
+                        except (EOFError, OSError):
+                            return
+                        if message[0] == "stop":
+                            return
+                        self._waiting.append(message[1:])
                         continue
-                    worker, future = busy[ready]
+                    worker, number = busy[ready]
                     outcome = self._receive(worker)
                     if outcome is not None:
                         del busy[ready]
-                        future.set_result(outcome)
-                now = time.monotonic()
-                for conn, (worker, future) in list(busy.items()):
-                    if now >= worker.until:
-                        del busy[conn]
-                        self._retire(worker, kill=True)
-                        future.set_result(self._killed(worker))
+                        self._spent(worker)
+                        conn.send(("outcome", number, outcome))
+                self._watch(busy, conn)
         finally:
-            for worker, future in busy.values():
+            for worker, _number in busy.values():
                 self._retire(worker, kill=True)
-                future.set_result(Outcome(worker.key[0], "error", reason="the workers stopped"))
-            with self._lock:
-                waiting, self._waiting = list(self._waiting), deque()
-            for _key, _item, future in waiting:
-                future.cancel()
-            Pool.close(self)
+            self.close()
+
+    def _watch(self, busy: dict, conn: Connection) -> None:
+        """Kill the workers past their deadline; lower the priority of those on a slow item."""
+        now = time.monotonic()
+        for key, (worker, number) in list(busy.items()):
+            if now >= worker.until:
+                del busy[key]
+                self._retire(worker, kill=True)
+                self._niced.discard(worker.slot)
+                conn.send(("outcome", number, self._killed(worker)))
+            elif now - worker.since >= self.slow and worker.slot not in self._niced:
+                self._niced.add(worker.slot)
+                try:
+                    os.setpriority(os.PRIO_PROCESS, worker.process.pid, SLOW_NICE)
+                except OSError:
+                    pass
+
+    def _spent(self, worker: _Worker) -> None:
+        """A worker that was niced for a slow item is replaced (its priority cannot be raised
+        again without privileges); a fresh fork of the host is as warm."""
+        if worker.slot in self._niced:
+            self._niced.discard(worker.slot)
+            if self._idle.get(worker.slot) is worker:
+                self._retire(self._idle.pop(worker.slot))
 
     def _may_start(self, busy: dict) -> bool:
         if len(busy) < self.jobs:
@@ -153,25 +234,20 @@ class LivePool(Pool):
         now = time.monotonic()
         return all(now - worker.since >= self.slow for worker, _ in busy.values())
 
-    def _begin_waiting(self, busy: dict) -> None:
+    def _begin_waiting(self, busy: dict, conn: Connection) -> None:
         """Hand waiting items to idle (or new) workers while the rule allows."""
-        while True:
-            with self._lock:
-                if not self._waiting or not self._may_start(busy):
-                    return
-                key, item, future = self._waiting.popleft()
-            if not future.set_running_or_notify_cancel():
-                continue  # cancelled while it waited
+        while self._waiting and self._may_start(busy):
+            number, item = self._waiting.popleft()
             try:
-                data = ForkingPickler.dumps(item)
-                worker = self._send(data)
+                worker = self._send(ForkingPickler.dumps(item))
             except Exception as error:  # noqa: BLE001 - one item that cannot be sent fails alone
-                future.set_result(Outcome(key, "error", reason=f"could not be sent: {error}"))
+                reason = f"could not be sent to a worker: {error}"
+                conn.send(("outcome", number, Outcome(None, "error", reason=reason)))
                 continue
-            self._start(worker, 0, key)
-            busy[worker.conn] = (worker, future)
+            self._start(worker, 0, None)
+            busy[worker.conn] = (worker, number)
 
-    def _send(self, data: bytes | memoryview) -> _Worker:
+    def _send(self, data) -> _Worker:
         """Send a pickled item to an idle worker, or a new one (one that died idle is replaced)."""
         if self._idle:
             worker = self._idle.pop(next(iter(self._idle)))
@@ -190,20 +266,14 @@ class LivePool(Pool):
 
     def _retire_spares(self, busy: dict) -> None:
         """Retire idle workers beyond `jobs` once nothing waits: the burst is over."""
-        with self._lock:
-            if self._waiting:
-                return
-        while self._idle and len(self._idle) + len(busy) > self.jobs:
+        while not self._waiting and self._idle and len(self._idle) + len(busy) > self.jobs:
             self._retire(self._idle.pop(max(self._idle)))
 
     def _next_wake(self, busy: dict) -> float | None:
-        """Seconds until the next deadline, or until a waiting item may get an extra worker;
-        None: nothing to wait for but a message or a submission."""
-        moments = [worker.until for worker, _ in busy.values()]
-        with self._lock:
-            waiting = bool(self._waiting)
-        if waiting and self.jobs <= len(busy) < self.jobs + self.burst:
-            moments.append(max(worker.since for worker, _ in busy.values()) + self.slow)
+        """Seconds until a deadline, an item turning slow, or a waiting item's extra worker;
+        None: nothing to wait for but a message."""
+        moments = [w.until for w, _ in busy.values()]
+        moments += [w.since + self.slow for w, _ in busy.values() if w.slot not in self._niced]
         if not moments:
             return None
         return max(0.0, min(moments) - time.monotonic())

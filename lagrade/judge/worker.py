@@ -13,9 +13,7 @@ worker takes the rest. A worker moves the parent's deadline for the item in hand
 a killed item's `timeout` Outcome carries those notes, so work done before the kill (the parts
 of a sheet already judged) is kept and only the rest is done again.
 
-Workers are forked (or, with `context="forkserver"`, started from a clean preloaded process,
-for a parent with threads such as a web server) and persistent: what the parent derived before
-the pool started is shared,
+Workers are forked and persistent: what the parent derived before the pool started is shared,
 what a worker derives stays for its next items, and a worker is replaced after `Limits.recycle`
 items so that the memory of a long run stays bounded. A memory limit backs up the wall clock.
 """
@@ -271,11 +269,7 @@ class Pool:
     that has had one before while there are other items for the idle workers: a worker's caches
     (a question derived once) serve all the answers to that question, and distinct questions
     are spread over the workers. A worker that finds only items owned by busy workers takes
-    the first of them (a question with many answers is then shared).
-
-    `context`: how workers start, "fork" (default: they inherit the parent's memory) or
-    "forkserver" (from a clean process that has imported `preload`; `work` is then pickled
-    once per worker, so it must be a module-level function or a partial of one)."""
+    the first of them (a question with many answers is then shared)."""
 
     def __init__(
         self,
@@ -284,24 +278,17 @@ class Pool:
         jobs: int = 1,
         limits: Limits | None = None,
         affinity: Callable[[Any], Hashable] | None = None,
-        context: str = "fork",
-        preload: Iterable[str] = (),
     ) -> None:
         self.work = work
         self.jobs = max(1, int(jobs))
         self.limits = limits or Limits()
         self.affinity = affinity
-        self._context = _FORK if context == "fork" else mp.get_context(context)
-        if context == "forkserver":
-            self._context.set_forkserver_preload(list(preload))
         self._idle: dict[int, _Worker] = {}
         self._owners: dict[Hashable, set[int]] = {}
 
     def _fork(self, slot: int) -> _Worker:
-        parent, child = self._context.Pipe()
-        process = self._context.Process(
-            target=_serve, args=(child, self.work, self.limits), daemon=True
-        )
+        parent, child = _FORK.Pipe()
+        process = _FORK.Process(target=_serve, args=(child, self.work, self.limits), daemon=True)
         process.start()
         child.close()
         return _Worker(process, parent, slot)
