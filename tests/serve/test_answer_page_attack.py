@@ -6,10 +6,12 @@ from __future__ import annotations
 
 import threading
 import time
+from pathlib import Path
 
 import pytest
 
 from lagrade.cli.main import main
+from lagrade.grading.answer_page.app import SAVE_PART_TIME_LIMIT
 from lagrade.grading.answer_page.preview import PREVIEW_TIME_LIMIT
 from lagrade.judge.worker import GRACE
 from tests.serve.conftest import ROSTER, post, start_server, stop_server
@@ -22,9 +24,9 @@ points = 1
 scene = "wedge"
 parts = ["dof", "lagrangian", { quantity = "block_acceleration" }]
 """
-#: Its exact stage takes gcds of multi-megabit integers: one C call of about 30 s on this
-#: machine, which the preview's 3 s alarm cannot interrupt (tests/batch/test_killed_part.py).
-SLOW_IN_C = "g*(1+(M+m)^2000)^40/(2+(M^2+2*M*m+m^2)^1000)^40"
+#: Its exact stage runs one gcd of two 3.2-Mbit integers, about 1 s in: a single C call of
+#: 15-20 s on this machine, which no alarm interrupts (tests/batch/test_killed_part.py).
+SLOW_IN_C = "g*(1+(M+m)^2000)^30/(2+(M^2+2*M*m+m^2)^1000)^30"
 #: Slack over the limit + grace for the round trip and a loaded machine.
 SLACK = 1.5
 
@@ -114,3 +116,57 @@ def test_one_student_has_one_item_in_the_workers(attacked):
     assert results["newest"][1]["lines"][0]["plain"] == "2"
     # it waited for the slow one: the student's own lane, not a third worker
     assert results["newest"][0] > PREVIEW_TIME_LIMIT - 1.0
+
+
+def _descendants(pid: int) -> list[int]:
+    """Every process below `pid` (Linux /proc)."""
+    parents: dict[int, list[int]] = {}
+    for entry in Path("/proc").iterdir():
+        if entry.name.isdigit():
+            try:
+                stat = (entry / "stat").read_text()
+            except OSError:
+                continue
+            ppid = int(stat.rsplit(")", 1)[1].split()[1])
+            parents.setdefault(ppid, []).append(int(entry.name))
+    found, todo = [], [pid]
+    while todo:
+        children = parents.get(todo.pop(), [])
+        found += children
+        todo += children
+    return found
+
+
+def test_the_pages_workers_have_a_memory_limit(attacked):
+    limits = []
+    for pid in _descendants(attacked.process.pid):
+        try:
+            text = Path(f"/proc/{pid}/limits").read_text()
+        except OSError:
+            continue
+        line = next(ln for ln in text.splitlines() if ln.startswith("Max address space"))
+        limits.append(line.split()[3])
+    assert "unlimited" in limits  # the host, which judges nothing
+    assert any(value != "unlimited" for value in limits)  # its workers
+
+
+def test_a_graded_save_killed_in_one_part_keeps_the_others(tmp_path):
+    root = tmp_path
+    (root / "assignment.toml").write_text(ASSIGNMENT + "\n[answer_page]\nfeedback = true\n")
+    (root / "roster.csv").write_text(ROSTER)
+    args = ["generate", str(root / "assignment.toml"), "--roster", str(root / "roster.csv")]
+    assert main([*args, "--seed", "5", "--out", str(root / "ps"), "--formats", "md"]) == 0
+    server = start_server(root, root / "ps" / "manifest.json")
+    try:
+        answers = {"dof": "2", "lagrangian": "m*g*h", "block_acceleration": SLOW_IN_C}
+        elapsed, status, reply = _timed_post(
+            server.url("s001") + "/save", {"answers": {"1": answers}}
+        )
+    finally:
+        stop_server(server)
+    assert status == 200 and reply["status"] == "saved"
+    parts = reply["feedback"]["parts"]
+    assert parts["1/block_acceleration"]["verdict"] == "timeout"
+    assert parts["1/dof"]["verdict"] == "correct" and parts["1/dof"]["points"] == 1
+    assert parts["1/lagrangian"]["verdict"] == "incorrect" and parts["1/lagrangian"]["feedback"]
+    assert elapsed < SAVE_PART_TIME_LIMIT + GRACE + SLACK + 2, elapsed
