@@ -20,7 +20,6 @@ the kill at its limit + grace, the memory limit): PrairieLearn's own process nev
 from __future__ import annotations
 
 import json
-import os
 import re
 import tomllib
 import uuid
@@ -229,28 +228,22 @@ def _judge_task(task: Mapping[str, Any]) -> dict[str, dict]:
     return results
 
 
-_workers: tuple[int, Pool] | None = None  # this process's worker, and the pid that forked it
-
-
 def _backstop(task: dict[str, Any]) -> dict[str, dict]:
     """Run `_judge_task` in a killable worker (the rule of `lagrade grade`: the part's alarm,
     the kill at its limit + grace, the memory limit); a kill in one part costs that part, and a
-    fresh worker judges the rest. The worker persists between calls in this process (its
-    derivations are kept); a process forked from this one makes its own."""
-    global _workers
-    if _workers is None or _workers[0] != os.getpid():
-        _workers = (os.getpid(), Pool(_judge_task, jobs=1, limits=Limits(seconds=PREPARE_LIMIT)))
-    pool = _workers[1]
-    while True:
-        (outcome,) = pool.run([(0, task)])
-        if outcome.status == "ok":
-            return outcome.value
-        if outcome.status == "refused":
-            raise outcome.value
-        again = resume.resumed(task, outcome)
-        if again is None:
-            raise RuntimeError(f"lagrade could not grade this submission: {outcome.reason}")
-        task = again
+    fresh worker judges the rest. The workers end with the call: PrairieLearn runs each request
+    in a process of its own and discards it, and a worker left behind would hold its pipes."""
+    with Pool(_judge_task, jobs=1, limits=Limits(seconds=PREPARE_LIMIT)) as pool:
+        while True:
+            (outcome,) = pool.run([(0, task)])
+            if outcome.status == "ok":
+                return outcome.value
+            if outcome.status == "refused":
+                raise outcome.value
+            again = resume.resumed(task, outcome)
+            if again is None:
+                raise RuntimeError(f"lagrade could not grade this submission: {outcome.reason}")
+            task = again
 
 
 def _answer(part: str, raw: Any) -> Any:
