@@ -16,6 +16,7 @@ def run(args: argparse.Namespace) -> int:
 
     import lagrade.grading.atomic as atomic
     from lagrade.grading.answer_page.app import build_classroom, make_app
+    from lagrade.grading.answer_page.deadlines import ReadDeadlines
     from lagrade.grading.answer_page.tokens import SECRET_NAME, links_csv, load_or_create_secret
     from lagrade.grading.manifest import load_manifest
 
@@ -46,6 +47,7 @@ def run(args: argparse.Namespace) -> int:
     print("Stop with Ctrl-C.", flush=True)
     config = uvicorn.Config(
         make_app(room),
+        http=ReadDeadlines,  # a request's head and body have deadlines (slowloris)
         log_level="warning",
         access_log=False,
         lifespan="on",

@@ -278,7 +278,14 @@ def make_app(room: ClassRoom) -> Starlette:
     app.router.redirect_slashes = False
     app.add_exception_handler(404, lambda request, exc: _not_found())
     app.add_exception_handler(405, lambda request, exc: _not_found())
+    app.add_exception_handler(Exception, _server_error)
     return app
+
+
+def _server_error(request: Request, exc: Exception) -> Response:
+    """A bug of ours: 500 with the same headers as every other answer (the traceback is in
+    the server's log)."""
+    return PlainTextResponse("Internal error.", status_code=500, headers=_HEADERS)
 
 
 _STATIC = {"page.js": "text/javascript", "page.css": "text/css"}
