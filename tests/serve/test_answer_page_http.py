@@ -80,12 +80,14 @@ def test_every_path_that_is_not_a_page_is_404_with_the_headers(served):
         assert status == 200 and headers["x-frame-options"] == "DENY", (method, path)
 
 
-def _new_log_lines(served, before: int, wait: float = 5.0) -> list[str]:
+def _new_log_lines(served, before: int, wait: float = 20.0) -> list[str]:
+    """The server's log lines after the first `before`, once some have come (and a second
+    more, for the rest of a traceback)."""
     deadline = time.monotonic() + wait
     while time.monotonic() < deadline:
         lines = served.output.read_text().splitlines()[before:]
         if lines:
-            time.sleep(0.5)  # let the rest of a traceback arrive too
+            time.sleep(1.0)
             return served.output.read_text().splitlines()[before:]
         time.sleep(0.1)
     return []
