@@ -18,12 +18,14 @@ from __future__ import annotations
 
 import asyncio
 import atexit
+import ctypes
 import dataclasses
 import gc
 import itertools
 import os
 import queue
 import signal
+import stat
 import threading
 import time
 from collections import deque
@@ -33,7 +35,7 @@ from multiprocessing.connection import Connection, wait
 from multiprocessing.reduction import ForkingPickler
 from typing import Any
 
-from lagrade.judge.worker import _FORK, Limits, Outcome, Pool, _Worker
+from lagrade.judge.worker import _FORK, Limits, Outcome, Pool, _serve, _Worker
 
 #: Seconds after which an item counts as slow (its worker niced; burst workers allowed).
 SLOW = 0.25
@@ -62,14 +64,14 @@ class LivePool:
         self._lock = threading.Lock()
         self._ids = itertools.count()
         self._futures: dict[int, tuple[Any, Future]] = {}
-        self._outbox: queue.SimpleQueue = queue.SimpleQueue()
+        self._outbox: queue.SimpleQueue | None = None  # the running host's
         self._host: Any = None
-        self._conn: Connection | None = None
         self._stopped = False
 
     def start(self) -> None:
-        """Fork the host now (idempotent). Call it before the process starts threads or opens
-        sockets where it can: the host, and each worker it forks, is a copy of this process."""
+        """Fork the host now (idempotent). Call it before the process starts threads where it
+        can: the host, and each worker it forks, is a copy of this process (the sockets it
+        inherits it closes). A host that died is started again by the next submission."""
         with self._lock:
             if self._host is not None or self._stopped:
                 return
@@ -79,10 +81,11 @@ class LivePool:
             self._host = _FORK.Process(target=_host_main, args=(child, *settings))
             self._host.start()
             child.close()
-            self._conn = parent
+            self._outbox = outbox = queue.SimpleQueue()
+            host = self._host
         atexit.register(self.close)  # before multiprocessing's own exit joins the host
-        for target, name in ((self._write, "lagrade-pool-out"), (self._read, "lagrade-pool-in")):
-            threading.Thread(target=target, name=name, daemon=True).start()
+        threading.Thread(target=self._write, args=(parent, outbox), daemon=True).start()
+        threading.Thread(target=self._read, args=(parent, outbox, host), daemon=True).start()
 
     def submit(self, key: Any, item: Any) -> Future:
         """A future for the item's Outcome (an item once submitted runs to its end or its
@@ -90,12 +93,12 @@ class LivePool:
         self.start()
         future: Future = Future()
         with self._lock:
-            if self._stopped:
+            if self._stopped or self._outbox is None:
                 future.set_result(Outcome(key, "error", reason="the workers have stopped"))
                 return future
             number = next(self._ids)
             self._futures[number] = (key, future)
-        self._outbox.put(("item", number, item))
+            self._outbox.put(("item", number, item))
         return future
 
     async def outcome(self, key: Any, item: Any) -> Outcome:
@@ -106,32 +109,34 @@ class LivePool:
         """Stop the host: items in hand are killed, and every open future gets `error`."""
         with self._lock:
             self._stopped = True
-            host = self._host
+            host, outbox = self._host, self._outbox
         if host is None:
             return
-        self._outbox.put(("stop",))
+        outbox.put(("stop",))
         host.join(10.0)
         if host.is_alive():
             host.kill()
             host.join(2.0)
 
-    def _write(self) -> None:
+    @staticmethod
+    def _write(conn: Connection, outbox: queue.SimpleQueue) -> None:
         """Send submissions to the host: a full pipe (while the host warms up) blocks this
         thread, never the caller's."""
         while True:
-            message = self._outbox.get()
+            message = outbox.get()
             try:
-                self._conn.send(message)
+                conn.send(message)
             except (OSError, ValueError):
                 return
             if message[0] == "stop":
                 return
 
-    def _read(self) -> None:
-        """Hand each Outcome from the host to its future; when the host is gone, fail the rest."""
+    def _read(self, conn: Connection, outbox: queue.SimpleQueue, host: Any) -> None:
+        """Hand each Outcome from the host to its future. When the host is gone, the items it
+        had get `error`, and the next submission starts a new host (unless we are closing)."""
         while True:
             try:
-                _, number, outcome = self._conn.recv()
+                _, number, outcome = conn.recv()
             except (EOFError, OSError):
                 break
             with self._lock:
@@ -139,18 +144,22 @@ class LivePool:
             if not future.done():
                 future.set_result(dataclasses.replace(outcome, key=key))
         with self._lock:
-            self._stopped = True
             left, self._futures = list(self._futures.values()), {}
+            if self._host is host:
+                self._host, self._outbox = None, None
+        outbox.put(("stop",))  # ends this host's writer
         for key, future in left:
             if not future.done():
                 future.set_result(Outcome(key, "error", reason="the workers stopped"))
-        self._conn.close()
+        conn.close()
+        host.join(2.0)
 
 
 def _host_main(conn: Connection, work, jobs, burst, slow, limits, warm) -> None:
     """The host process: warm up, then serve items from `conn` until it says stop or closes."""
     signal.signal(signal.SIGINT, signal.SIG_IGN)  # the server handles Ctrl-C and stops us
     signal.signal(signal.SIGTERM, signal.SIG_DFL)
+    _close_sockets(keep=conn.fileno())
     if warm is not None:
         try:
             warm()
@@ -158,15 +167,44 @@ def _host_main(conn: Connection, work, jobs, burst, slow, limits, warm) -> None:
             pass
     gc.collect()
     gc.freeze()  # the workers' collector leaves what they inherit alone (see batch.warm_up)
-    _Host(work, jobs=jobs, limits=limits, burst=burst, slow=slow).serve(conn)
+    _Host(work, jobs=jobs, limits=limits, burst=burst, slow=slow, server=conn).serve(conn)
+
+
+def _worker_main(server: Connection, conn: Connection, work, limits: Limits) -> None:
+    """A worker of the host: it dies with the host (a host killed by the system leaves no
+    worker running an item without its deadline), and keeps no copy of the host's pipe to the
+    server, so the server sees at once that the host is gone."""
+    server.close()
+    try:
+        ctypes.CDLL(None, use_errno=True).prctl(_PR_SET_PDEATHSIG, signal.SIGKILL)
+    except (OSError, AttributeError):
+        pass  # not Linux: the worker leaves after its item, when it sees the host gone
+    _serve(conn, work, limits)
+
+
+_PR_SET_PDEATHSIG = 1
+
+
+def _close_sockets(keep: int) -> None:
+    """Close the sockets inherited from the server (its listener, its clients' connections):
+    held open here and in every worker, a connection the server closes would stay open."""
+    for name in os.listdir("/proc/self/fd") if os.path.isdir("/proc/self/fd") else ():
+        fd = int(name)
+        try:
+            if fd != keep and fd > 2 and stat.S_ISSOCK(os.fstat(fd).st_mode):
+                os.close(fd)
+        except OSError:
+            pass  # the directory's own descriptor, already closed
 
 
 class _Host(Pool):
     """The host's dispatcher: Pool's workers, fed from the server's pipe in arrival order."""
 
-    def __init__(self, work, *, jobs: int, limits: Limits, burst: int, slow: float) -> None:
+    def __init__(
+        self, work, *, jobs: int, limits: Limits, burst: int, slow: float, server: Connection
+    ) -> None:
         super().__init__(work, jobs=jobs, limits=limits)
-        self.burst, self.slow = max(0, int(burst)), slow
+        self.burst, self.slow, self.server = max(0, int(burst)), slow, server
         self._slots = itertools.count()
         self._waiting: deque[tuple[int, Any]] = deque()
         self._niced: set[int] = set()  # slots of workers on a slow item
@@ -201,6 +239,14 @@ class _Host(Pool):
             for worker, _number in busy.values():
                 self._retire(worker, kill=True)
             self.close()
+
+    def _fork(self, slot: int) -> _Worker:
+        parent, child = _FORK.Pipe()
+        args = (self.server, child, self.work, self.limits)
+        process = _FORK.Process(target=_worker_main, args=args, daemon=True)
+        process.start()
+        child.close()
+        return _Worker(process, parent, slot)
 
     def _watch(self, busy: dict, conn: Connection) -> None:
         """Kill the workers past their deadline; lower the priority of those on a slow item."""

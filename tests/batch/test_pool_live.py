@@ -7,7 +7,10 @@ from __future__ import annotations
 
 import asyncio
 import os
+import signal
+import socket
 import time
+from pathlib import Path
 
 from lagrade.judge.live import SLOW_NICE, LivePool
 from lagrade.judge.worker import Limits, note
@@ -98,3 +101,45 @@ def test_outcomes_are_awaited_on_an_event_loop_and_close_answers_the_rest():
         pool.close()
     assert held.result(timeout=5).status == "error"
     assert pool.submit("late", ("quick",)).result(timeout=5).status == "error"
+
+
+def _running(pid: int) -> bool:
+    """Whether a process exists and is not a zombie waiting for its new parent to reap it."""
+    try:
+        return Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()[0] != "Z"
+    except OSError:
+        return False
+
+
+def test_a_host_that_died_is_started_again():
+    pool = LivePool(_work, jobs=1, limits=Limits(seconds=30.0))
+    try:
+        first_pid, _ = pool.submit(0, ("quick",)).result(timeout=30).value
+        held = pool.submit(1, ("sleep", 20))
+        time.sleep(0.5)
+        host = pool._host.pid
+        workers = [int(p) for p in Path(f"/proc/{host}/task/{host}/children").read_text().split()]
+        assert workers
+        os.kill(host, signal.SIGKILL)  # as the system's OOM killer would
+        assert held.result(timeout=10).status == "error"
+        time.sleep(1.0)
+        assert not [pid for pid in workers if _running(pid)]  # they died with it
+        again = pool.submit(2, ("quick",)).result(timeout=30)
+        assert again.status == "ok" and again.value[0] != first_pid
+    finally:
+        pool.close()
+
+
+def test_the_host_does_not_hold_the_servers_sockets():
+    """A connection the server closes must close: the host and its workers keep no copy."""
+    listener = socket.create_server(("127.0.0.1", 0))
+    pool = LivePool(_work, jobs=1, limits=Limits(seconds=30.0))
+    try:
+        worker_pid, _ = pool.submit(0, ("quick",)).result(timeout=30).value
+        inode = os.fstat(listener.fileno()).st_ino
+        for pid in (pool._host.pid, worker_pid):
+            links = [os.readlink(f"/proc/{pid}/fd/{fd}") for fd in os.listdir(f"/proc/{pid}/fd")]
+            assert f"socket:[{inode}]" not in links, pid
+    finally:
+        pool.close()
+        listener.close()
