@@ -7,6 +7,8 @@ The workers belong to a host process, forked by `start` before the server has th
 sockets: it derives what `warm` derives (a class's questions), then forks its workers, which
 share that and start in milliseconds (a kill costs a fork, not a derivation). The server talks
 to the host over one pipe, from two threads of its own, so that a submission never blocks it.
+The host closes the sockets it inherits, its workers die with it, and a host that dies (the
+system's OOM killer) is started again by the next submission.
 
 A slow item must not hold up the quick ones: once an item has run `slow` seconds its worker's
 scheduling priority is lowered (nice 10, so quick items get the processors first; the worker is
