@@ -90,7 +90,8 @@ class ClassRoom:
 
     # --- workers --------------------------------------------------------------------------
     def judging(self) -> Judging:
-        """The killable workers that read previews and grade saves (started on first use)."""
+        """The killable workers that read previews and grade saves (`lagrade serve` starts
+        them before it listens; otherwise the first request does)."""
         if self._judging is None:
             self._judging = Judging(self.manifest, self.rubric, self.jobs)
         return self._judging
