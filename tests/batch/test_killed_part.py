@@ -4,6 +4,7 @@ after it are judged by a fresh worker, and the student's other points all count.
 
 from __future__ import annotations
 
+import importlib
 import json
 import re
 import shutil
@@ -17,6 +18,8 @@ from lagrade.cli.demo_class import write_submissions
 from lagrade.grading import batch
 from lagrade.grading.batch import grade
 from lagrade.judge.worker import Limits
+
+check_module = importlib.import_module("lagrade.judge.check")  # the package shadows the name
 
 #: A closed form whose exact stage (exact_then_adaptive, once floats overflow) multiplies
 #: fractions of multi-megabit integers: about 1 s in, one gcd of two 3.2-Mbit integers, a single
@@ -50,6 +53,19 @@ def _replace_answer(sheet: Path, problem: int, key: str, answer: str) -> None:
     )
     assert count == 1, f"no {key} in problem {problem} of {sheet}"
     sheet.write_text(head + f"[problem{problem}]" + section + sep + rest)
+
+
+@pytest.fixture(autouse=True, scope="module")
+def _question_cache_left_as_found():
+    """`grade` derives its questions in this process (`warm_up`) and shares each among the seeds
+    of a class: leave the cache as it was, so that a later test comparing `check` with a fresh
+    `grade` (tests/grading/test_one_checker.py) does not meet this class's questions."""
+    saved = (dict(check_module._problems), set(check_module._prepared))
+    yield
+    check_module._problems.clear()
+    check_module._problems.update(saved[0])
+    check_module._prepared.clear()
+    check_module._prepared.update(saved[1])
 
 
 @pytest.fixture(scope="module")
