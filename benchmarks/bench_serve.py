@@ -1,5 +1,7 @@
 """The answer page under load: 1, 50 and 200 simulated students at once against
-`lagrade serve` on 127.0.0.1, each typing (a preview per pause) and saving, in one run.
+`lagrade serve` on 127.0.0.1, each typing (a preview per pause) and saving, in one run; then
+20 students (20 rounds each) alone, and the same 20 while two others attack: each sends, again
+and again, a preview whose check holds a worker in C code for about 20 s (the limit is 3 s).
 
 Run: python benchmarks/bench_serve.py [--rounds 4] [--jobs 2]
 
@@ -9,6 +11,8 @@ saves the sheet with a marker of its own. Every student stops by itself after it
 the end every sheet on disk must be that student's own last save (no lost or mixed-up sheet).
 Reports per level: requests, wall time, median and p99 latency of previews and saves, errors.
 Latencies include queueing: with 200 students on 2 cores, a preview waits for the workers.
+Under attack, the attackers' replies are reported too: each should be `timeout` within the
+preview's limit + grace (5 s).
 """
 
 from __future__ import annotations
@@ -38,7 +42,14 @@ points = 1
 scene = "simple_pendulum"
 parts = ["dof", "lagrangian", "eom", "momenta"]
 names = { theta = ["theta"] }
+
+[[problems]]
+scene = "wedge"
+parts = [{ quantity = "block_acceleration" }]
 """
+#: A closed form whose exact stage runs one gcd of two 3.2-Mbit integers, a single C call of
+#: 15-20 s here (tests/batch/test_killed_part.py): what an attacker previews.
+SLOW_IN_C = "g*(1+(M+m)^2000)^30/(2+(M^2+2*M*m+m^2)^1000)^30"
 
 ANSWERS = [
     ("lagrangian", "1/2 m l^2 theta_dot^2 + m g l cos(theta)"),
@@ -51,6 +62,10 @@ ANSWERS = [
     ("dof", "1"),
 ]
 LEVELS = (1, 50, 200)
+#: Students previewing and saving, alone and then while two others attack, and their rounds
+#: (enough for the attackers' previews to be stopped and sent again several times).
+BYSTANDERS = 20
+BYSTANDER_ROUNDS = 20
 
 
 def make_class(root: Path, students: int) -> Path:
@@ -142,20 +157,57 @@ class Student(threading.Thread):
             conn.close()
 
 
+class Attacker(threading.Thread):
+    """A student who previews `SLOW_IN_C` again as soon as each preview is answered."""
+
+    def __init__(self, url: str, stop: threading.Event) -> None:
+        super().__init__(daemon=True)
+        parts = urlsplit(url)
+        self.host, self.port, self.path, self.stop = parts.hostname, parts.port, parts.path, stop
+        self.replies: list[tuple[float, str]] = []
+
+    def run(self) -> None:
+        conn = http.client.HTTPConnection(self.host, self.port, timeout=300)
+        body = json.dumps({"problem": 2, "key": "block_acceleration", "text": SLOW_IN_C})
+        try:
+            while not self.stop.is_set():
+                start = time.perf_counter()
+                conn.request("POST", self.path + "/preview", body=body.encode())
+                response = conn.getresponse()
+                reply = json.loads(response.read())
+                self.replies.append((time.perf_counter() - start, reply["status"]))
+        except (OSError, http.client.HTTPException, ValueError) as error:
+            self.replies.append((0.0, f"{type(error).__name__}: {error}"))
+        finally:
+            conn.close()
+
+
 def percentile(values: list[float], q: float) -> float:
     ordered = sorted(values)
     return ordered[min(len(ordered) - 1, round(q * (len(ordered) - 1)))] if ordered else 0.0
 
 
-def run_level(links: list[dict], sheets: Path, students: int, rounds: int) -> dict:
+def run_level(
+    links: list[dict], sheets: Path, students: int, rounds: int, attackers: int = 0
+) -> dict:
     chosen = links[:students]
     crowd = [Student(row["url"], rounds, seed=k) for k, row in enumerate(chosen)]
+    stop = threading.Event()
+    attacks = [Attacker(row["url"], stop) for row in links[students : students + attackers]]
+    for a in attacks:
+        a.start()
+    if attacks:
+        time.sleep(1.0)  # the attacks are in the workers before the students begin
     start = time.perf_counter()
     for s in crowd:
         s.start()
     for s in crowd:
         s.join()
     wall = time.perf_counter() - start
+    stop.set()
+    for a in attacks:
+        a.join()
+    replies = [r for a in attacks for r in a.replies]
     previews = [t for s in crowd for t in s.previews]
     saves = [t for s in crowd for t in s.saves]
     errors = [e for s in crowd for e in s.errors]
@@ -176,6 +228,9 @@ def run_level(links: list[dict], sheets: Path, students: int, rounds: int) -> di
         "save_p99_ms": percentile(saves, 0.99) * 1e3,
         "errors": len(errors),
         "lost_or_mixed_sheets": mixed,
+        "attacks": len(replies),
+        "attack_statuses": sorted({status for _, status in replies}),
+        "attack_max_s": max((t for t, _ in replies), default=0.0),
     }
 
 
@@ -196,15 +251,25 @@ def main() -> None:
                 f"{'students':>8} {'requests':>8} {'wall s':>7} {'preview med':>12} "
                 f"{'p99 ms':>8} {'save med':>9} {'p99 ms':>8} {'errors':>6} {'lost/mixed':>10}"
             )
-            for students in LEVELS:
-                r = run_level(links, root / "sheets", students, args.rounds)
+            runs = [(students, args.rounds, 0) for students in LEVELS]
+            runs += [(BYSTANDERS, BYSTANDER_ROUNDS, 0), (BYSTANDERS, BYSTANDER_ROUNDS, 2)]
+            for students, rounds, attackers in runs:
+                r = run_level(links, root / "sheets", students, rounds, attackers)
+                label = f"{students}+{attackers}att" if attackers else str(students)
                 print(
-                    f"{r['students']:>8} {r['requests']:>8} {r['wall_s']:>7.1f} "
+                    f"{label:>8} {r['requests']:>8} {r['wall_s']:>7.1f} "
                     f"{r['preview_median_ms']:>12.1f} {r['preview_p99_ms']:>8.1f} "
                     f"{r['save_median_ms']:>9.1f} {r['save_p99_ms']:>8.1f} {r['errors']:>6} "
                     f"{r['lost_or_mixed_sheets']:>10}",
                     flush=True,
                 )
+                if attackers:
+                    print(
+                        f"{'':>8} ({attackers} attackers: {r['attacks']} slow previews answered "
+                        f"{', '.join(r['attack_statuses'])}, the slowest in "
+                        f"{r['attack_max_s']:.1f} s)",
+                        flush=True,
+                    )
         finally:
             process.send_signal(signal.SIGTERM)
             process.wait(timeout=30)

@@ -16,6 +16,7 @@ def run(args: argparse.Namespace) -> int:
 
     import lagrade.grading.atomic as atomic
     from lagrade.grading.answer_page.app import build_classroom, make_app
+    from lagrade.grading.answer_page.deadlines import ReadDeadlines
     from lagrade.grading.answer_page.tokens import SECRET_NAME, links_csv, load_or_create_secret
     from lagrade.grading.manifest import load_manifest
 
@@ -26,6 +27,7 @@ def run(args: argparse.Namespace) -> int:
     secret = load_or_create_secret(secret_file)
     args.submissions.mkdir(parents=True, exist_ok=True)
     room = build_classroom(manifest, args.manifest, args.submissions, secret, jobs=args.jobs)
+    room.judging().start()  # fork the workers' host while this process has no socket or thread
     listener = _listen(args.host, args.port)
     host, port = listener.getsockname()[:2]
     base_url = (args.base_url or f"http://{_url_host(host)}:{port}").rstrip("/")
@@ -33,6 +35,7 @@ def run(args: argparse.Namespace) -> int:
         atomic.write_text(args.links, links_csv(manifest["students"], secret, base_url))
     config = uvicorn.Config(
         make_app(room),
+        http=ReadDeadlines,  # a request's head and body have deadlines (slowloris)
         log_level="warning",
         access_log=False,
         lifespan="on",

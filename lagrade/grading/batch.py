@@ -22,6 +22,7 @@ from typing import Any
 import lagrade.grading.atomic as atomic
 import lagrade.grading.gradebooks as gradebooks
 import lagrade.grading.report as report
+import lagrade.grading.resume as resume
 import lagrade.grading.submission as submission
 from lagrade.assign.manifest import project_version
 from lagrade.assign.views import MULTILINE, PROMPTS
@@ -183,6 +184,18 @@ def grade_part(
                 verdict = _judge(entry, part, answer, given, rubric)
         except PartTimeout:
             verdict = timeout_verdict(name, limit)
+    return _scored(part, verdict, rubric)
+
+
+def stopped_part(part: Mapping[str, Any], rubric: Rubric, limit: float) -> dict[str, Any]:
+    """The result of a part whose worker was killed at its limit + grace (C code the alarm
+    could not interrupt): `timeout`, as if the alarm had struck (`lagrade.grading.resume`)."""
+    return _scored(part, timeout_verdict(part["part"], limit), rubric)
+
+
+def _scored(part: Mapping[str, Any], verdict: Verdict, rubric: Rubric) -> dict[str, Any]:
+    """A part's result from its verdict: the points the rubric gives it and the feedback."""
+    name = part["part"]
     share = rubric.fraction(
         verdict.status, verdict.score, verdict.mistakes, verdict.follows_from_own_answer
     )
@@ -225,7 +238,9 @@ def _judge(entry, part, answer, given, rubric: Rubric) -> Verdict:
 
 def grade_student(manifest: Mapping, rubric: Rubric, task: Mapping[str, Any]) -> dict[str, Any]:
     """Grade one student's sheet (runs inside a worker; the manifest and rubric are inherited
-    when the worker is forked, only the small task crosses the pipe)."""
+    when the worker is forked, only the small task crosses the pipe). Each part is noted as it
+    is judged, so that a worker killed in one part costs only that part: the task `resumed`
+    from the kill (`lagrade.grading.resume`) keeps the parts judged and skips the one stopped."""
     student = task["student"]
     problems = manifest["problems"]
     keys = {p["index"]: [part["key"] for part in p["parts"]] for p in problems}
@@ -244,12 +259,19 @@ def grade_student(manifest: Mapping, rubric: Rubric, task: Mapping[str, Any]) ->
             and answers["lagrangian"].strip()
         ):
             given["lagrangian"] = answers["lagrangian"]
-        parts = [
-            grade_part(
-                entry, part, answers.get(part["key"]), given, rubric, task["part_time_limit"]
-            )
-            for part in problem["parts"]
-        ]
+        parts = []
+        for part in problem["parts"]:
+            part_id = f"{problem['index']}/{part['key']}"
+            result = resume.earlier(task, part_id)
+            if result is None and resume.stopped(task, part_id):
+                result = stopped_part(part, rubric, task["part_time_limit"])
+            if result is None:
+                resume.begin(part_id)
+                result = grade_part(
+                    entry, part, answers.get(part["key"]), given, rubric, task["part_time_limit"]
+                )
+                resume.judged(part_id, result)
+            parts.append(result)
         timeouts += [
             f"problem {problem['index']} {p['key']}" for p in parts if p["verdict"] == "timeout"
         ]
@@ -436,17 +458,26 @@ def _grade_into(
     done = len(results)
     work = functools.partial(grade_student, manifest, rubric)
     with Pool(work, jobs=jobs, limits=limits) as pool:
-        for outcome in pool.run(tasks):
-            student = by_id[outcome.key]
-            value = _outcome_result(outcome, out, student["id"])
-            results[student["id"]] = _store(
-                out,
-                manifest,
-                _finish(student, manifest, value, fingerprints[outcome.key], version),
-            )
-            done += 1
-            if progress:
-                progress(done, len(students), student["id"])
+        # A worker killed in a part leaves a task that resumes after it: judged in a later
+        # round, by a fresh worker (each round settles at least one part of each such sheet).
+        while tasks:
+            by_key = dict(tasks)
+            tasks = []
+            for outcome in pool.run(list(by_key.items())):
+                again = resume.resumed(by_key[outcome.key], outcome)
+                if again is not None:
+                    tasks.append((outcome.key, again))
+                    continue
+                student = by_id[outcome.key]
+                value = _outcome_result(outcome, out, student["id"])
+                results[student["id"]] = _store(
+                    out,
+                    manifest,
+                    _finish(student, manifest, value, fingerprints[outcome.key], version),
+                )
+                done += 1
+                if progress:
+                    progress(done, len(students), student["id"])
 
     ordered = [results[s["id"]] for s in students]
     report.write_class_reports(out, manifest, ordered, stray)

@@ -13,6 +13,9 @@ environment:
   answer was read;
 - `grade` judges each part with the same checker `lagrade grade` uses (rubric, follow-through
   from the student's own L) and writes a score and feedback per part.
+
+`parse` and `grade` judge in a worker process under `lagrade grade`'s rule (the part's alarm,
+the kill at its limit + grace, the memory limit): PrairieLearn's own process never runs a check.
 """
 
 from __future__ import annotations
@@ -26,6 +29,7 @@ from pathlib import Path
 from typing import Any
 
 import lagrade.grading.atomic as atomic
+import lagrade.grading.resume as resume
 import lagrade.untrusted as untrusted
 from lagrade.assign.assignment import (
     Assignment,
@@ -39,13 +43,15 @@ from lagrade.assign.variants import VariantChoice, build_pool
 from lagrade.assign.views import MULTILINE, problem_view
 from lagrade.bank.registry import scene_reference
 from lagrade.errors import AssignmentError
-from lagrade.grading.batch import grade_part
+from lagrade.grading.batch import grade_part, stopped_part
 from lagrade.grading.prompts import escape_html, prompt_html
 from lagrade.grading.rubric import Rubric, rubric_from_table
+from lagrade.judge.worker import PREPARE_LIMIT, Limits, Pool
 
 #: Variants in a problem's pool when the assignment does not say (`variants = N`).
 DEFAULT_POOL = 50
-#: Seconds per part when PrairieLearn grades (its own worker limits the whole call too).
+#: Seconds per part when PrairieLearn grades (its own worker limits the whole call too); a part
+#: whose check holds its worker in C code is killed `GRACE` seconds later.
 PART_TIME_LIMIT = 5.0
 _NAMESPACE = uuid.UUID("6f1c2a4e-3d0b-5b7e-9a61-1a2b3c4d5e6f")
 
@@ -233,23 +239,64 @@ def grade(
 def _judge_all(
     data: Mapping[str, Any], assignment: str, index: int, scenes: Mapping[str, str] | None
 ) -> dict[str, dict]:
-    problem, rubric = _problem(assignment, index, scenes)
-    submitted = data.get("submitted_answers", {}) or {}
-    entry = {**scene_reference(problem.scene), "seed": data["params"]["seed"]}
+    """Every part's result, judged in a worker process (`_backstop`): PrairieLearn's own
+    process never runs the checks, so C code that no alarm stops cannot hold it."""
+    task = {
+        "assignment": assignment,
+        "index": index,
+        "scenes": dict(scenes or {}),
+        "seed": data["params"]["seed"],
+        "submitted": dict(data.get("submitted_answers", {}) or {}),
+        "part_time_limit": PART_TIME_LIMIT,
+    }
+    return _backstop(task)
+
+
+def _judge_task(task: Mapping[str, Any]) -> dict[str, dict]:
+    """The body of `_judge_all`, in the worker: each part noted as it is judged, so that a kill
+    costs only the part it stopped (`lagrade.grading.resume`)."""
+    problem, rubric = _problem(task["assignment"], task["index"], task["scenes"])
+    submitted = task["submitted"]
+    limit = task["part_time_limit"]
+    entry = {**scene_reference(problem.scene), "seed": task["seed"]}
     answers = {part.key: _answer(part.part, submitted.get(part.key)) for part in problem.parts}
     lagrangian = next((answers[p.key] for p in problem.parts if p.part == "lagrangian"), None)
     given = {"lagrangian": lagrangian} if isinstance(lagrangian, str) and lagrangian else {}
-    return {
-        part.key: grade_part(
-            entry,
-            {"key": part.key, "part": part.part, "points": part.points, "quantity": part.quantity},
-            answers[part.key],
-            given,
-            rubric,
-            PART_TIME_LIMIT,
-        )
-        for part in problem.parts
-    }
+    results = {}
+    for part in problem.parts:
+        spec = {
+            "key": part.key,
+            "part": part.part,
+            "points": part.points,
+            "quantity": part.quantity,
+        }
+        result = resume.earlier(task, part.key)
+        if result is None and resume.stopped(task, part.key):
+            result = stopped_part(spec, rubric, limit)
+        if result is None:
+            resume.begin(part.key)
+            result = grade_part(entry, spec, answers[part.key], given, rubric, limit)
+            resume.judged(part.key, result)
+        results[part.key] = result
+    return results
+
+
+def _backstop(task: dict[str, Any]) -> dict[str, dict]:
+    """Run `_judge_task` in a killable worker (the rule of `lagrade grade`: the part's alarm,
+    the kill at its limit + grace, the memory limit); a kill in one part costs that part, and a
+    fresh worker judges the rest. The workers end with the call: PrairieLearn runs each request
+    in a process of its own and discards it, and a worker left behind would hold its pipes."""
+    with Pool(_judge_task, jobs=1, limits=Limits(seconds=PREPARE_LIMIT)) as pool:
+        while True:
+            (outcome,) = pool.run([(0, task)])
+            if outcome.status == "ok":
+                return outcome.value
+            if outcome.status == "refused":
+                raise outcome.value
+            again = resume.resumed(task, outcome)
+            if again is None:
+                raise RuntimeError(f"lagrade could not grade this submission: {outcome.reason}")
+            task = again
 
 
 def _answer(part: str, raw: Any) -> Any:

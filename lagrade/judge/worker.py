@@ -9,7 +9,9 @@ alarm interrupts Python-level work (`time_limit`: the part's verdict is `timeout
 keeps its caches), and the parent kills a worker that has not answered `GRACE` seconds after that
 (SIGKILL stops sympy or numpy stuck in C code); the item in hand then gets `timeout`, a fresh
 worker takes the rest. A worker moves the parent's deadline for the item in hand with
-`deadline(seconds)`.
+`deadline(seconds)`, and tells the parent what the item has achieved so far with `note(value)`:
+a killed item's `timeout` Outcome carries those notes, so work done before the kill (the parts
+of a sheet already judged) is kept and only the rest is done again.
 
 Workers are forked and persistent: what the parent derived before the pool started is shared,
 what a worker derives stays for its next items, and a worker is replaced after `Limits.recycle`
@@ -28,7 +30,7 @@ import traceback
 from collections import deque
 from collections.abc import Callable, Hashable, Iterable, Iterator
 from contextlib import contextmanager
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from multiprocessing.connection import Connection, wait
 from multiprocessing.reduction import ForkingPickler
 from typing import Any
@@ -152,6 +154,14 @@ def deadline(seconds: float) -> None:
         _parent.send(("deadline", float(seconds)))
 
 
+def note(value: Any) -> None:
+    """Inside a worker: record `value` (picklable, small) as progress of the item in hand. If the
+    worker is killed before the item finishes, its `timeout` Outcome's value is the tuple of
+    these notes in order. Outside a worker it does nothing."""
+    if _parent is not None:
+        _parent.send(("note", value))
+
+
 @dataclass(frozen=True)
 class Limits:
     """Per-item deadline (seconds from when a worker starts the item, until the item moves it),
@@ -167,7 +177,8 @@ class Limits:
 class Outcome:
     """What became of one item: `ok` with its value; `refused` with the LagradeError the work
     raised (a user's error, to be reported as such); `timeout` or `error` (a bug of ours, or a
-    worker that died) with a reason."""
+    worker that died) with a reason. A `timeout` whose worker was killed has as value the
+    notes the item sent before (`note`), a tuple, empty when it sent none."""
 
     key: Any
     status: str  # "ok" | "refused" | "timeout" | "error"
@@ -240,6 +251,7 @@ class _Worker:
     since: float = 0.0
     until: float = 0.0
     queued: tuple | None = None  # (position, key, item) sent ahead, waiting in the pipe
+    notes: list = field(default_factory=list)  # what the item in hand has noted so far
 
 
 #: Largest pickled item sent to a busy worker ahead of time. The worker reads it only when it
@@ -358,12 +370,7 @@ class Pool:
                         del busy[conn]
                         self._retire(worker, kill=True)
                         self._requeue(worker, pending)
-                        held[worker.key[1]] = Outcome(
-                            worker.key[0],
-                            "timeout",
-                            reason="took longer than its time limit and was stopped",
-                            seconds=time.monotonic() - worker.since,
-                        )
+                        held[worker.key[1]] = self._killed(worker)
                 if in_order:
                     while next_out in held:
                         yield held.pop(next_out)
@@ -379,6 +386,18 @@ class Pool:
         """The worker has begun the item at `position`: its clock starts now."""
         now = time.monotonic()
         worker.key, worker.since, worker.until = (key, position), now, now + self.limits.seconds
+        worker.notes = []
+
+    def _killed(self, worker: _Worker) -> Outcome:
+        """The Outcome of the item in hand of a worker killed at its deadline: `timeout`, with
+        the notes the item sent before (the worker itself is retired by the caller)."""
+        return Outcome(
+            worker.key[0],
+            "timeout",
+            value=tuple(worker.notes),
+            reason="took longer than its time limit and was stopped",
+            seconds=time.monotonic() - worker.since,
+        )
 
     def _send_ahead(self, busy: dict[Connection, _Worker], pending: dict) -> None:
         """Give each busy worker its next item now, so that it begins it the moment it sends
@@ -413,8 +432,9 @@ class Pool:
         pending.setdefault(group, deque()).appendleft((position, key, item))
 
     def _receive(self, worker: _Worker) -> Outcome | None:
-        """The worker's message: None after a deadline change, else the item's Outcome (the
-        worker goes back to the idle list, or is retired once it has served `recycle` items)."""
+        """The worker's message: None after a deadline change or a note, else the item's Outcome
+        (the worker goes back to the idle list, or is retired once it has served `recycle`
+        items)."""
         key = worker.key[0]
         try:
             message = worker.conn.recv()
@@ -426,6 +446,9 @@ class Pool:
             return Outcome(key, "error", reason=f"the worker process {died}", seconds=elapsed)
         if message[0] == "deadline":
             worker.until = time.monotonic() + message[1]
+            return None
+        if message[0] == "note":
+            worker.notes.append(message[1])
             return None
         _, status, value = message
         elapsed = time.monotonic() - worker.since

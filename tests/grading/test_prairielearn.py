@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import importlib.util
 import json
+import time
 import uuid
 from pathlib import Path
 
@@ -132,3 +133,45 @@ def test_unreadable_answers_are_format_errors_and_right_answers_score_full(quest
     assert data["partial_scores"]["dof"]["score"] == 0.0
     assert data["score"] == pytest.approx(3 / 4)  # dof 1 point of 1 + 2 + 1
     assert data["partial_scores"]["dof"]["feedback"]
+
+
+SLOW_ASSIGNMENT = """\
+title = "PL backstop test"
+points = 1
+
+[[problems]]
+scene = "wedge"
+parts = ["dof", "lagrangian", { quantity = "block_acceleration" }]
+"""
+#: Its exact stage runs one gcd of two 3.2-Mbit integers, about 1 s in: a single C call of
+#: 15-20 s on this machine, which no alarm interrupts (tests/batch/test_killed_part.py).
+SLOW_IN_C = "g*(1+(M+m)^2000)^30/(2+(M^2+2*M*m+m^2)^1000)^30"
+
+
+def test_grade_stops_a_part_held_in_c_code_and_grades_the_others(tmp_path):
+    """PrairieLearn calls grade() in its own process: the check runs in a worker killed at the
+    part's limit + grace, the held part is `timeout` and every other part is graded."""
+    from lagrade.grading import prairielearn
+    from lagrade.judge.worker import GRACE
+
+    (tmp_path / "a.toml").write_text(SLOW_ASSIGNMENT)
+    out = tmp_path / "questions"
+    assert (
+        main(["export", "prairielearn", str(tmp_path / "a.toml"), "--seed", "3", "--out", str(out)])
+        == 0
+    )
+    server = load_server(next(out.iterdir()))
+    data = new_data(5)
+    server.generate(data)
+    data["submitted_answers"] = {"dof": "2", "lagrangian": "m*g*h", "block_acceleration": SLOW_IN_C}
+    data["partial_scores"] = {}
+    start = time.monotonic()
+    server.grade(data)
+    elapsed = time.monotonic() - start
+    scores = data["partial_scores"]
+    assert scores["block_acceleration"]["score"] == 0.0
+    assert "ran out of time" in scores["block_acceleration"]["feedback"]
+    assert scores["dof"]["score"] == 1.0
+    assert scores["lagrangian"]["score"] == 0.0 and scores["lagrangian"]["feedback"]
+    # the part's limit and grace, and a fresh worker's start for the rest
+    assert elapsed < prairielearn.PART_TIME_LIMIT + GRACE + 2.0, elapsed

@@ -6,28 +6,27 @@
                                when the assignment allows, graded with feedback)
     GET  /static/page.js, /static/page.css   the page's own script and style (no CDN)
 
-Any other path, and any token that is not a roster student's, is 404 with no data. Judging
-runs in worker processes (the checker's time limit is a signal, which only a main thread can
-take); writing a student's sheet holds that student's lock, so two saves never interleave."""
+Any other path (a trailing slash included: never a redirect), and any token that is not a
+roster student's, is 404 with no data. Judging runs in killable worker processes, one item of
+each student at a time (`judging`); writing a student's sheet holds that student's lock, so two
+saves never interleave."""
 
 from __future__ import annotations
 
 import asyncio
 import contextlib
 import functools
-import multiprocessing
+import logging
 import threading
 import time
 from collections.abc import Mapping
-from concurrent.futures import ProcessPoolExecutor
-from concurrent.futures.process import BrokenProcessPool
 from dataclasses import dataclass, field
 from importlib import resources
 from pathlib import Path
 from typing import Any
 
 from starlette.applications import Starlette
-from starlette.requests import Request
+from starlette.requests import ClientDisconnect, Request
 from starlette.responses import HTMLResponse, JSONResponse, PlainTextResponse, Response
 from starlette.routing import Route
 
@@ -38,7 +37,7 @@ from lagrade.assign.templating import environment
 from lagrade.assign.variants import VariantChoice
 from lagrade.assign.views import MULTILINE, problem_view
 from lagrade.errors import LagradeError, UnreadableInput
-from lagrade.grading.answer_page import preview as preview_module
+from lagrade.grading.answer_page.judging import Judging
 from lagrade.grading.answer_page.settings import PageSettings, load_settings
 from lagrade.grading.answer_page.sheets import (
     MAX_ANSWER_CHARS,
@@ -47,7 +46,6 @@ from lagrade.grading.answer_page.sheets import (
     sheet_text,
 )
 from lagrade.grading.answer_page.tokens import token_table
-from lagrade.grading.batch import grade_student
 from lagrade.grading.manifest import carried_scene_texts
 from lagrade.grading.prompts import prompt_html
 from lagrade.grading.rubric import Rubric, load_rubric
@@ -57,6 +55,7 @@ MAX_BODY_BYTES = 512 * 1024
 #: Seconds one part may take when a save is graded.
 SAVE_PART_TIME_LIMIT = 10.0
 ATTEMPTS = ".attempts"
+_log = logging.getLogger("uvicorn.error")
 _HEADERS = {
     "Cache-Control": "no-store",
     "X-Content-Type-Options": "nosniff",
@@ -82,7 +81,7 @@ class ClassRoom:
     rubric: Rubric
     jobs: int = 2
     students: dict[str, Mapping[str, Any]] = field(default_factory=dict)
-    _pool: ProcessPoolExecutor | None = None
+    _judging: Judging | None = None
     _locks: dict[str, asyncio.Lock] = field(default_factory=dict)
     _views: dict[tuple, dict[str, Any]] = field(default_factory=dict)
     _drawing: threading.Lock = field(default_factory=threading.Lock)
@@ -91,32 +90,17 @@ class ClassRoom:
         self.students = {s["id"]: s for s in self.manifest["students"]}
 
     # --- workers --------------------------------------------------------------------------
-    def pool(self) -> ProcessPoolExecutor:
-        if self._pool is None:
-            # forkserver: the workers start from a clean process, not a copy of the event loop
-            context = multiprocessing.get_context("forkserver")
-            self._pool = ProcessPoolExecutor(self.jobs, mp_context=context)
-        return self._pool
-
-    async def in_worker(self, function, *args) -> Any:
-        """Run `function(*args)` in a worker process; a pool that lost a worker (killed by the
-        system) is replaced once and the call repeated."""
-        loop = asyncio.get_running_loop()
-        for attempt in (1, 2):
-            try:
-                return await loop.run_in_executor(self.pool(), function, *args)
-            except BrokenProcessPool:
-                broken, self._pool = self._pool, None
-                if broken is not None:
-                    broken.shutdown(wait=False, cancel_futures=True)
-                if attempt == 2:
-                    raise
-        raise AssertionError("unreachable")
+    def judging(self) -> Judging:
+        """The killable workers that read previews and grade saves (`lagrade serve` starts
+        them before it listens; otherwise the first request does)."""
+        if self._judging is None:
+            self._judging = Judging(self.manifest, self.rubric, self.jobs)
+        return self._judging
 
     def close(self) -> None:
-        if self._pool is not None:
-            self._pool.shutdown(wait=True, cancel_futures=True)
-            self._pool = None
+        if self._judging is not None:
+            self._judging.close()
+            self._judging = None
 
     def lock(self, student_id: str) -> asyncio.Lock:
         return self._locks.setdefault(student_id, asyncio.Lock())
@@ -181,13 +165,23 @@ def _student(room: ClassRoom, request: Request) -> str | None:
 
 
 async def _body(request: Request) -> Any:
-    """The JSON body, bounded and read by the project's untrusted-input reader."""
+    """The JSON body, bounded and read by the project's untrusted-input reader. A client that
+    goes away before its body is complete raises ClientDisconnect (see `_gone`)."""
     data = bytearray()
     async for chunk in request.stream():
         data += chunk
         if len(data) > MAX_BODY_BYTES:
             raise UnreadableInput(f"the request is larger than {MAX_BODY_BYTES // 1024} KiB")
     return untrusted.load_json(untrusted.decode(bytes(data), "the request"), "the request")
+
+
+def _gone(request: Request) -> Response:
+    """A client that disconnected before its request was complete: one line in the log (the
+    route named without its token, which is the student's key), nothing written."""
+    action = request.url.path.rsplit("/", 1)[-1]
+    host = request.client.host if request.client else "?"
+    _log.warning("lagrade: %s disconnected before sending its whole %s request", host, action)
+    return Response(status_code=400, headers=_HEADERS)
 
 
 def make_app(room: ClassRoom) -> Starlette:
@@ -222,13 +216,12 @@ def make_app(room: ClassRoom) -> Starlette:
         try:
             body = await _body(request)
             entry, part, text = _preview_request(room, student_id, body)
+        except ClientDisconnect:
+            return _gone(request)
         except (UnreadableInput, ValueError) as error:
             return _json({"status": "error", "message": str(error)}, 400)
-        try:
-            result = await room.in_worker(preview_module.preview, entry, part, text)
-        except BrokenProcessPool:
-            return _json({"status": "error", "message": _BUSY}, 503)
-        return _json(result)
+        field = (entry.get("index"), part["key"])
+        return _json(await room.judging().preview(student_id, field, entry, part, text))
 
     async def save(request: Request) -> Response:
         student_id = _student(room, request)
@@ -237,6 +230,8 @@ def make_app(room: ClassRoom) -> Starlette:
         try:
             body = await _body(request)
             answers = _answers(room, body)
+        except ClientDisconnect:
+            return _gone(request)
         except (UnreadableInput, ValueError) as error:
             return _json({"status": "error", "message": str(error)}, 400)
         student = room.students[student_id]
@@ -255,10 +250,7 @@ def make_app(room: ClassRoom) -> Starlette:
                 "saved_at": time.strftime("%H:%M:%S"),
             }
             if room.settings.feedback:
-                try:
-                    reply.update(await _graded(room, student_id, path))
-                except BrokenProcessPool:  # saved all the same; only the grading failed
-                    reply.update({"feedback": None, "message": _BUSY})
+                reply.update(await _graded(room, student_id, path))
         return _json(reply)
 
     async def static(request: Request) -> Response:
@@ -268,33 +260,36 @@ def make_app(room: ClassRoom) -> Starlette:
         media = _STATIC[name]
         return Response(_static_text(name), media_type=media, headers=_HEADERS)
 
-    async def home(request: Request) -> Response:
-        return PlainTextResponse(
-            "lagrade answer page: open the private link your instructor sent you.",
-            headers=_HEADERS,
-        )
-
     @contextlib.asynccontextmanager
     async def lifespan(app):
+        room.judging().start()  # already started by `lagrade serve`, before it listened
         try:
             yield
         finally:
             room.close()
 
     routes = [
-        Route("/", home),
         Route("/s/{token}", student_page),
         Route("/s/{token}/preview", preview, methods=["POST"]),
         Route("/s/{token}/save", save, methods=["POST"]),
         Route("/static/{name}", static),
     ]
     app = Starlette(routes=routes, lifespan=lifespan)
+    # Starlette answers a path with a trailing slash by a redirect whose Location it builds from
+    # the request's Host header, without our headers: every path that is not a page is 404.
+    app.router.redirect_slashes = False
     app.add_exception_handler(404, lambda request, exc: _not_found())
     app.add_exception_handler(405, lambda request, exc: _not_found())
+    app.add_exception_handler(Exception, _server_error)
     return app
 
 
-_BUSY = "The grader is restarting; try again in a moment."
+def _server_error(request: Request, exc: Exception) -> Response:
+    """A bug of ours: 500 with the same headers as every other answer (the traceback is in
+    the server's log)."""
+    return PlainTextResponse("Internal error.", status_code=500, headers=_HEADERS)
+
+
 _STATIC = {"page.js": "text/javascript", "page.css": "text/css"}
 
 
@@ -383,7 +378,7 @@ async def _graded(room: ClassRoom, student_id: str, path: Path) -> dict[str, Any
         "path": str(path),
         "part_time_limit": SAVE_PART_TIME_LIMIT,
     }
-    result = await room.in_worker(grade_student, room.manifest, room.rubric, task)
+    result = await room.judging().grade(student_id, task)
     used += 1
     atomic.write_json(_attempts_path(room, student_id), {"used": used})
     return {
@@ -394,7 +389,7 @@ async def _graded(room: ClassRoom, student_id: str, path: Path) -> dict[str, Any
 
 def _feedback(result: Mapping[str, Any]) -> dict[str, Any]:
     """What the student sees of a graded save: per part, the verdict, points and feedback."""
-    if result.get("status") == "invalid":
+    if not result.get("problems"):  # invalid, or not graded at all
         return {"reason": result.get("reason", ""), "parts": {}}
     parts = {}
     for problem in result.get("problems", []):

@@ -3,8 +3,8 @@ checker `lagrade grade` runs, so the preview never disagrees with the grade abou
 read), shown as MathML, or the parser's message with its caret. Whether the answer is right
 is not shown here: that is the grade's, and only when the assignment allows it.
 
-Runs inside the server's worker processes (the checker's time limit is a signal, which only a
-process's main thread can take)."""
+Runs inside the server's worker processes (`judging`: the checker's time limit is a signal,
+which only a process's main thread can take, and C code that ignores it is killed)."""
 
 from __future__ import annotations
 
@@ -32,7 +32,7 @@ def preview(entry: Mapping[str, Any], part: Mapping[str, Any], text: str) -> dic
         return {"status": "empty", "lines": [], "message": ""}
     result = grade_part(entry, part, text, {}, _RUBRIC, PREVIEW_TIME_LIMIT)
     if result["verdict"] == "timeout":
-        return {"status": "timeout", "lines": [], "message": "Reading this answer took too long."}
+        return timed_out()
     if result["verdict"] == "invalid":
         return {"status": "unreadable", "lines": [], "message": "\n".join(result["feedback"])}
     shown = result["interpreted"]
@@ -45,6 +45,12 @@ def preview(entry: Mapping[str, Any], part: Mapping[str, Any], text: str) -> dic
         ],
         "message": "\n".join(unread),
     }
+
+
+def timed_out() -> dict[str, Any]:
+    """The reply for an answer whose reading ran out of time, stopped by the alarm or by the
+    kill of its worker at the limit + grace."""
+    return {"status": "timeout", "lines": [], "message": "Reading this answer took too long."}
 
 
 def _mathml(entry: Mapping[str, Any], part: Mapping[str, Any], line: str) -> str:
