@@ -184,7 +184,7 @@ def _judge_all(data: Mapping[str, Any], assignment: str, index: int) -> dict[str
     problem, rubric = _problem(assignment, index)
     submitted = data.get("submitted_answers", {}) or {}
     entry = {"scene": problem.scene.id, "seed": data["params"]["seed"]}
-    answers = {part.key: _answer(part.part, submitted.get(part.key)) for part in problem.parts}
+    answers = {part.key: _answer(submitted.get(part.key)) for part in problem.parts}
     lagrangian = next((answers[p.key] for p in problem.parts if p.part == "lagrangian"), None)
     given = {"lagrangian": lagrangian} if isinstance(lagrangian, str) and lagrangian else {}
     return {
@@ -200,12 +200,10 @@ def _judge_all(data: Mapping[str, Any], assignment: str, index: int) -> dict[str
     }
 
 
-def _answer(part: str, raw: Any) -> Any:
-    """The text of a pl-string-input; several equations are separated by `;`."""
-    text = "" if raw is None else str(raw)
-    if part in MULTILINE:
-        return [line.strip() for line in text.split(";") if line.strip()]
-    return text
+def _answer(raw: Any) -> str:
+    """The text of a pl-string-input as typed: the part's checker splits it (several equations
+    separated by `;`, a list of names by commas), as it splits a sheet's answer."""
+    return "" if raw is None else str(raw)
 
 
 _problems: dict[tuple[str, int], tuple[Problem, Rubric]] = {}

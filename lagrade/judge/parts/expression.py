@@ -27,6 +27,7 @@ from lagrade.judge.parts.common import (
     values_text,
     witness_point,
 )
+from lagrade.judge.parts.items import single_text
 from lagrade.judge.parts.reading import read_single
 from lagrade.judge.problem import Problem
 from lagrade.judge.sampling import coordinate_range
@@ -155,6 +156,7 @@ def _judge_number(problem: Problem, got: sp.Expr, values: Mapping, tolerance: fl
 
 
 def check_expression(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
+    answer = single_text(answer, "expression")
     both = _closed_form_and_value(problem, answer, given)
     if both is not None:
         return both
