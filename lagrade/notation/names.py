@@ -16,10 +16,48 @@ from lagrade.notation.stream import TokenStream
 from lagrade.notation.vocabulary import Entry
 
 _VELOCITY_SUFFIX = re.compile(r"(.+?)_?(d?dot)\Z")
+#: A run of single letters, the last one perhaps subscripted (`GMm`, `mv_0`), as LaTeX sets a
+#: product of single-letter symbols.
+_LETTER_RUN = re.compile(r"([A-Za-z]{2,})(_[A-Za-z0-9]+)?\Z")
 
 
 class NameRules(TokenStream):
     """The rules for names, shared by the grammar's atoms, calls and diff(...)."""
+
+    def split_letter_runs(self, tokens: list[Token]) -> list[Token]:
+        """In LaTeX, adjacent letters are a product (`\\frac{GMm}{r}` is G·M·m/r): a name the
+        question does not know that is a run of single letters, each a declared name (the last
+        one may carry the subscript, `mv_0`), becomes those names, and the reading is noted.
+        Plain text never splits a name (`mgl` gets a suggestion instead)."""
+        table = self.lexicon.table
+        out: list[Token] = []
+        for k, tok in enumerate(tokens):
+            run = _LETTER_RUN.match(tok.text) if tok.kind == "name" else None
+            if (
+                run is None
+                or tok.marks
+                or tok.primes
+                or tok.text in table
+                or self.lexicon.is_function(tok.text)
+                or (tok.text == "dt" and k and tokens[k - 1].text == "/")  # d/dt, dx/dt
+            ):
+                out.append(tok)
+                continue
+            letters, subscript = run.group(1), run.group(2) or ""
+            names = [*letters[:-1], letters[-1] + subscript]
+            if not all(name in table for name in names):
+                out.append(tok)
+                continue
+            starts = [tok.start + i for i in range(len(letters))]
+            ends = [*starts[1:], tok.end]
+            out += [
+                Token("name", name, start, end, tok.spaced if i == 0 else False)
+                for i, (name, start, end) in enumerate(zip(names, starts, ends, strict=True))
+            ]
+            self.warn(
+                f"{tok.text} is read as {'*'.join(names)}: in LaTeX adjacent letters multiply."
+            )
+        return out
 
     def lookup(self, tok: Token) -> Entry:
         """The lexicon's entry for a name token; unknown names and stray primes fail."""
@@ -121,12 +159,45 @@ class NameRules(TokenStream):
             f"Unknown symbol '{name}'. Allowed: {self.lexicon.allowed}.", tok.start, tok.end, hint
         )
 
+    def time_operator(self, i: int) -> tuple[int, int] | None:
+        """(order, index of the token after it) when tokens i… are the operator d/dt or
+        d^2/dt^2 (written with or without spaces, d²/dt² too), else None. `dt` must be no name
+        of the question; `d` may be one (a distance d): `d/dt` has no other reading."""
+        tokens = self.tokens
+        texts = [tok.text for tok in tokens[i : i + 7]]
+        if not texts or texts[0] != "d" or tokens[i].marks or tokens[i].primes:
+            return None
+        if "dt" in self.lexicon.table:
+            return None
+        if texts[1:3] == ["/", "dt"] and tokens[i + 2].kind == "name":
+            return 1, i + 3
+        if texts[1:7] == ["^", "2", "/", "dt", "^", "2"]:
+            return 2, i + 7
+        return None
+
     def check_leibniz(self) -> None:
-        """dx/dt, d/dt(...), dtheta/dt, d^2x/dt^2: rejected before names are looked up."""
+        """dx/dt, dtheta/dt, d^2x/dt^2: rejected before names are looked up. The operator d/dt
+        (d^2/dt^2) applied to a bracket is the time derivative of what it holds; without a
+        bracket it is refused (`d/dt theta^2` could mean either square)."""
         table = self.lexicon.table
         tokens = self.tokens
+        operator_tokens: set[int] = set()
+        for i in range(len(tokens)):
+            found = self.time_operator(i)
+            if found is None:
+                continue
+            after = found[1]
+            if tokens[after].text != "(":
+                if "d" in table:
+                    continue  # d a distance: d/dt x reads, or fails, as a division
+                self.fail(
+                    "Write what d/dt differentiates in brackets, as in d/dt(m*r^2*theta_dot).",
+                    tokens[i].start,
+                    tokens[after - 1].end,
+                )
+            operator_tokens.update(range(i, after))
         for i, tok in enumerate(tokens):
-            if tok.kind != "name" or tok.text in table:
+            if tok.kind != "name" or tok.text in table or i in operator_tokens:
                 continue
             leibniz = (
                 (tok.text == "dt" and i > 0 and tokens[i - 1].text == "/")
@@ -154,7 +225,8 @@ class NameRules(TokenStream):
             if tok.text == "d" and tokens[i + 1].text == "/":
                 end = tokens[i + 2].end
             self.fail(
-                f"Leibniz notation is not supported; write {what}dot or diff({what}, t).",
+                f"Leibniz notation is not supported; write {what}dot, diff({what}, t) or "
+                f"d/dt({what}).",
                 start,
                 end,
             )

@@ -57,9 +57,10 @@ def _parse_source(src: Source, vocabulary: Vocabulary, latex: bool | None, mode:
         )
     lexicon = vocabulary._lexicon
     src = normalise(src)
-    if latex or (latex is None and is_latex(src.text)):
+    latex = bool(latex or (latex is None and is_latex(src.text)))
+    if latex:
         src = translate(src, keep_e="e" in lexicon.table)
-    parser = Parser(src, lexicon)
+    parser = Parser(src, lexicon, latex)
     lhs_node, rhs_node = parser.parse_answer(mode)
     lhs = build(lhs_node, src)
     rhs = build(rhs_node, src) if rhs_node is not None else None

@@ -25,8 +25,9 @@ class TokenStream:
         self.depth = 0
         self.bars = 0  # absolute-value bars open around the current position
         self.nodes = 0
+        self.extremum_arguments = 0  # arguments of Max and Min so far (limits.py)
         self.found: set[str] = set()
-        self.warnings: list[str] = []
+        self.warnings: list[str] = list(src.notes)
 
     def fail(self, message: str, start: int, end: int, hint: str | None = None) -> NoReturn:
         """A student's mistake at characters start…end of the text being read."""

@@ -132,3 +132,61 @@ def test_unreadable_answers_are_format_errors_and_right_answers_score_full(quest
     assert data["partial_scores"]["dof"]["score"] == 0.0
     assert data["score"] == pytest.approx(3 / 4)  # dof 1 point of 1 + 2 + 1
     assert data["partial_scores"]["dof"]["feedback"]
+
+
+LIST_ASSIGNMENT = """\
+title = "PL lists"
+points = 1
+
+[[problems]]
+scene = "kepler"
+parts = ["coordinates", "lagrangian", "eom", "momenta", "cyclic", "conserved"]
+"""
+
+
+@pytest.mark.parametrize("separator", ["; ", ", ", " and "])
+def test_a_pl_answer_is_read_as_check_reads_the_same_text(tmp_path, separator):
+    """The one door: PrairieLearn passes the typed text on as it is, so a list separated by
+    `;`, commas or "and" gets exactly `check`'s verdict and feedback (it used to split at `;`
+    only, and judged the rest as one unreadable equation)."""
+    from lagrade.bank.registry import get_scene
+    from lagrade.grading.rubric import Rubric
+    from lagrade.judge.check import check
+    from lagrade.judge.key import key_answer
+
+    (tmp_path / "a.toml").write_text(LIST_ASSIGNMENT)
+    out = tmp_path / "questions"
+    assert (
+        main(["export", "prairielearn", str(tmp_path / "a.toml"), "--seed", "5", "--out", str(out)])
+        == 0
+    )
+    server = load_server(next(out.iterdir()))
+    data = new_data(11)
+    server.generate(data)
+    seed = data["params"]["seed"]
+    variant = get_scene("kepler").variant(seed)
+    r, theta = variant.coordinates
+    typed = {
+        part: separator.join(
+            key_answer(variant, part) if part != "cyclic" else [theta, r]  # r is not cyclic
+        )
+        for part in ("eom", "momenta", "cyclic", "conserved")
+    }
+    typed["coordinates"] = separator.join([theta, r])
+    typed["lagrangian"] = key_answer(variant, "lagrangian")
+    data["submitted_answers"] = typed
+    data["partial_scores"] = {}
+    server.grade(data)
+    for part, text in typed.items():
+        given = {"lagrangian": typed["lagrangian"]} if part != "coordinates" else None
+        if part == "conserved":
+            given = {**given, "all": True}  # the handout asks for the conserved quantities
+        verdict = check({"scene": "kepler", "seed": seed}, part, text, time_limit=None, given=given)
+        share = Rubric().fraction(
+            verdict.status, verdict.score, verdict.mistakes, verdict.follows_from_own_answer
+        )
+        scored = data["partial_scores"][part]
+        assert scored["score"] == pytest.approx(share), (part, text)
+        assert scored["feedback"] == (" ".join(verdict.feedback) or verdict.status), (part, text)
+    assert data["partial_scores"]["eom"]["score"] == 1.0
+    assert data["partial_scores"]["cyclic"]["score"] == 0.5
