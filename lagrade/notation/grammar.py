@@ -429,7 +429,20 @@ class Parser(NameRules):
         return self.time_derivative(inner, order, start, inner.end)
 
     def time_derivative(self, inner: Node, order: int, start: int, end: int) -> Node:
+        """The node of D_t applied `order` times to `inner`. Of a name alone, only a coordinate's
+        (or a velocity's, or t's) is taken: d/dt(m) or d/dt(p_theta) is 0, which a student who
+        writes it does not mean, so it is refused as diff(m, t) is."""
         time = self.lexicon.table["t"].value
+        if inner.kind == "sym" and inner.value is not time:
+            motion = {s for j in self.lexicon.jets for s in (j.q, j.dot, j.ddot)}
+            if inner.value not in motion:
+                name = getattr(inner.value, "name", self.text[inner.start : inner.end])
+                coordinates = ", ".join(self.lexicon.coordinates) or "none"
+                self.fail(
+                    f"'{name}' is not a coordinate of this problem (coordinates: {coordinates}).",
+                    inner.start,
+                    inner.end,
+                )
         return self.node("ddt", start, end, inner, (order, time, tuple(self.lexicon.jets)))
 
     def parse_diff(self) -> Node:

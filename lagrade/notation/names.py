@@ -164,9 +164,9 @@ class NameRules(TokenStream):
         d^2/dt^2 (written with or without spaces, d²/dt² too), else None. `dt` must be no name
         of the question; `d` may be one (a distance d): `d/dt` has no other reading."""
         tokens = self.tokens
-        texts = [tok.text for tok in tokens[i : i + 7]]
-        if not texts or texts[0] != "d" or tokens[i].marks or tokens[i].primes:
+        if i >= len(tokens) or tokens[i].text != "d" or tokens[i].marks or tokens[i].primes:
             return None
+        texts = [tok.text for tok in tokens[i : i + 7]]
         if "dt" in self.lexicon.table:
             return None
         if texts[1:3] == ["/", "dt"] and tokens[i + 2].kind == "name":

@@ -194,8 +194,12 @@ def _read_name_source(src: Source, vocabulary: Vocabulary, latex: bool | None, e
     if latex or (latex is None and is_latex(src.text)):
         src = translate(src, keep_e="e" in lexicon.table)
     rules = Parser(src, lexicon)
+    tokens = rules.tokens[:-1]
+    of_t = {k + d for k, tok in enumerate(tokens) for d in (1, 2, 3) if _of_t(tokens, k)}
     names = []
-    for tok in rules.tokens[:-1]:
+    for k, tok in enumerate(tokens):
+        if k in of_t:  # theta(t) is theta
+            continue
         if tok.kind != "name":
             src.fail(expected, tok.start, tok.end)
         entry = lexicon.table.get(tok.text)
@@ -214,6 +218,12 @@ def _read_name_source(src: Source, vocabulary: Vocabulary, latex: bool | None, e
     if not names:
         src.fail("The answer is empty.", 0, len(src.text))
     return tuple(names)
+
+
+def _of_t(tokens, k: int) -> bool:
+    """Whether the name at k is followed by `(t)`, without a space (theta(t))."""
+    following = [tok.text for tok in tokens[k + 1 : k + 4]]
+    return tokens[k].kind == "name" and following == ["(", "t", ")"] and not tokens[k + 1].spaced
 
 
 def read_names(

@@ -67,6 +67,7 @@ ERRORS = [
         (0, 4),
     ),
     ("diff(m, t)", f"'m' {NOT_COORDINATE}", (5, 6)),
+    ("d/dt(m) = 0", f"'m' {NOT_COORDINATE}", (4, 7)),
     # derivatives
     ("dx/dt", "Leibniz notation is not supported; write xdot, diff(x, t) or d/dt(x).", (0, 5)),
     (
