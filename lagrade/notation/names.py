@@ -182,8 +182,8 @@ class NameRules(TokenStream):
         table = self.lexicon.table
         tokens = self.tokens
         operator_tokens: set[int] = set()
-        for i in range(len(tokens)):
-            found = self.time_operator(i)
+        for i, tok in enumerate(tokens):
+            found = self.time_operator(i) if tok.text == "d" else None
             if found is None:
                 continue
             after = found[1]
