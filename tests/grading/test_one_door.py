@@ -336,3 +336,37 @@ def test_the_case_that_used_to_differ(graded):
         per_line.feedback,
     )
     assert check(spec, "cyclic", f"{theta}\n", time_limit=None).status == "correct"
+
+
+def test_the_answer_page_previews_the_reading_check_gives(graded):
+    """The answer page's live preview reads through the same door: for every answer typed in the
+    page's one text field (a string), the lines it shows are the reading `check` gives."""
+    from lagrade.grading.answer_page.preview import preview
+
+    root, students, answers, entries, results = graded
+    for sid, _spelling, style, right in students:
+        if style not in ("commas", "and", "lines") or not right:
+            continue
+        for key, answer in answers[sid].items():
+            if not isinstance(answer, str):
+                continue
+            part = "expression" if key == QUANTITY else key
+            row = {
+                "key": key,
+                "part": part,
+                "points": 1,
+                "quantity": QUANTITY if key == QUANTITY else None,
+            }
+            shown = preview(entries[sid], row, answer)
+            request = _request(sid, entries[sid], key, answer, answers[sid])
+            by_check = check(request["problem"], part, answer, time_limit=None)
+            reading = (
+                by_check.interpreted
+                if isinstance(by_check.interpreted, list)
+                else [by_check.interpreted]
+            )
+            assert shown["status"] == "read", (sid, key, shown)
+            assert [line["plain"] for line in shown["lines"]] == [r for r in reading if r], (
+                sid,
+                key,
+            )
