@@ -30,34 +30,33 @@ class NameRules(TokenStream):
         one may carry the subscript, `mv_0`), becomes those names, and the reading is noted.
         Plain text never splits a name (`mgl` gets a suggestion instead)."""
         table = self.lexicon.table
-        out: list[Token] = []
+        splits: dict[int, list[Token]] = {}
         for k, tok in enumerate(tokens):
-            run = _LETTER_RUN.match(tok.text) if tok.kind == "name" else None
+            if tok.kind != "name" or tok.text in table or tok.marks or tok.primes:
+                continue
+            run = _LETTER_RUN.match(tok.text)
             if (
                 run is None
-                or tok.marks
-                or tok.primes
-                or tok.text in table
                 or self.lexicon.is_function(tok.text)
                 or (tok.text == "dt" and k and tokens[k - 1].text == "/")  # d/dt, dx/dt
             ):
-                out.append(tok)
                 continue
             letters, subscript = run.group(1), run.group(2) or ""
             names = [*letters[:-1], letters[-1] + subscript]
             if not all(name in table for name in names):
-                out.append(tok)
                 continue
             starts = [tok.start + i for i in range(len(letters))]
             ends = [*starts[1:], tok.end]
-            out += [
+            splits[k] = [
                 Token("name", name, start, end, tok.spaced if i == 0 else False)
                 for i, (name, start, end) in enumerate(zip(names, starts, ends, strict=True))
             ]
             self.warn(
                 f"{tok.text} is read as {'*'.join(names)}: in LaTeX adjacent letters multiply."
             )
-        return out
+        if not splits:
+            return tokens
+        return [piece for k, tok in enumerate(tokens) for piece in splits.get(k, [tok])]
 
     def lookup(self, tok: Token) -> Entry:
         """The lexicon's entry for a name token; unknown names and stray primes fail."""
@@ -175,30 +174,44 @@ class NameRules(TokenStream):
             return 2, i + 7
         return None
 
+    def read_time_operator(self, i: int) -> int:
+        """For a token `d` (or the `dt` of `d/dt` after a declared d) at i: the index after the
+        operator d/dt or d^2/dt^2 that starts there, when a bracket follows it; -1 when none
+        starts there. Without a bracket it fails (unless d is a declared name, when `d/dt x`
+        is left to read, or fail, as a division)."""
+        start = (
+            i
+            if self.tokens[i].text == "d"
+            else next((k for k in (i - 2, i - 4) if k >= 0 and self.time_operator(k)), -1)
+        )
+        found = self.time_operator(start) if start >= 0 else None
+        if found is None or found[1] <= i:
+            return -1
+        after = found[1]
+        if self.tokens[after].text != "(":
+            if "d" in self.lexicon.table:
+                return -1
+            self.fail(
+                "Write what d/dt differentiates in brackets, as in d/dt(m*r^2*theta_dot).",
+                self.tokens[start].start,
+                self.tokens[after - 1].end,
+            )
+        return after
+
     def check_leibniz(self) -> None:
         """dx/dt, dtheta/dt, d^2x/dt^2: rejected before names are looked up. The operator d/dt
         (d^2/dt^2) applied to a bracket is the time derivative of what it holds; without a
         bracket it is refused (`d/dt theta^2` could mean either square)."""
         table = self.lexicon.table
         tokens = self.tokens
-        operator_tokens: set[int] = set()
+        operator_end = -1  # tokens before this index belong to a d/dt operator already read
         for i, tok in enumerate(tokens):
-            found = self.time_operator(i) if tok.text == "d" else None
-            if found is None:
+            if tok.kind != "name" or tok.text in table or i < operator_end:
                 continue
-            after = found[1]
-            if tokens[after].text != "(":
-                if "d" in table:
-                    continue  # d a distance: d/dt x reads, or fails, as a division
-                self.fail(
-                    "Write what d/dt differentiates in brackets, as in d/dt(m*r^2*theta_dot).",
-                    tokens[i].start,
-                    tokens[after - 1].end,
-                )
-            operator_tokens.update(range(i, after))
-        for i, tok in enumerate(tokens):
-            if tok.kind != "name" or tok.text in table or i in operator_tokens:
-                continue
+            if tok.text in ("d", "dt"):  # d/dt(…); or …/dt after a declared d (a distance)
+                operator_end = self.read_time_operator(i)
+                if i < operator_end:
+                    continue
             leibniz = (
                 (tok.text == "dt" and i > 0 and tokens[i - 1].text == "/")
                 or (tok.text == "d" and tokens[i + 1].text == "/")
