@@ -13,24 +13,17 @@ The rules build a `nodes.Node` tree and never touch sympy; names are read by `na
 from __future__ import annotations
 
 from lagrade.notation.build import SEVERAL_ARGUMENTS, TWO_ARGUMENTS
-from lagrade.notation.lexer import Source, Token, read_number
+from lagrade.notation.lexer import Token, read_number
 from lagrade.notation.limits import MAX_EXPONENT, MAX_EXTREMUM_ARGUMENTS, MAX_FUNCTION_POWER
 from lagrade.notation.names import NameRules
 from lagrade.notation.nodes import Node
-from lagrade.notation.vocabulary import Lexicon
 
 _TERM_END = frozenset(("+", "-", ")", "=", ",", ";", "|"))
 _TRIG = frozenset(("sin", "cos", "tan", "sec", "csc", "cot", "sinh", "cosh", "tanh"))
 
 
 class Parser(NameRules):
-    """Recursive descent over the tokens of one answer; one method per grammar rule. `latex`:
-    the text was translated from LaTeX, where a run of declared single letters is a product."""
-
-    def __init__(self, src: Source, lexicon: Lexicon, latex: bool = False):
-        super().__init__(src, lexicon)
-        if latex:
-            self.tokens = self.split_letter_runs(self.tokens)
+    """Recursive descent over the tokens of one answer; one method per grammar rule."""
 
     def parse_answer(self, mode: str) -> tuple[Node, Node | None]:
         """answer := sum ['=' sum]; mode 'expression' forbids the '='."""
@@ -455,7 +448,11 @@ class Parser(NameRules):
         opening = self.next()
         target = self.peek()
         of_t = [self.peek(k).text for k in (1, 2, 3, 4)] == ["(", "t", ")", ","]
-        single = target.kind == "name" and (self.peek(1).text in (",", ")") or of_t)
+        single = (
+            target.kind == "name"
+            and not self.lexicon.is_function(target.text)  # diff(sin(t), t) is no theta(t)
+            and (self.peek(1).text in (",", ")") or of_t)
+        )
         inner = None
         if single:
             self.next()

@@ -40,7 +40,7 @@ class Source:
         self.stop = offset + len(text) if stop is None else stop
         self.starts = starts
         self.ends = ends
-        self.notes: list[str] = []  # how a rewriting read the text (a mixed number), for warnings
+        self.notes: tuple[str, ...] = ()  # how a rewriting read the text (2¾), for warnings
 
     def locate(self, start: int, end: int) -> tuple[int, int]:
         """Span (start, end) of this text → span in the original answer."""
@@ -76,7 +76,7 @@ class Source:
             starts.extend([s] * len(piece))
             ends.extend([e] * len(piece))
         derived = Source(self.original, "".join(texts), stop=self.stop, starts=starts, ends=ends)
-        derived.notes = list(self.notes)
+        derived.notes = self.notes
         return derived
 
 
@@ -208,7 +208,7 @@ def _mixed_number(src: Source, pieces: list[tuple[str, int, int]], i: int) -> bo
     del pieces[digits:]
     pieces.append((f"({whole}+{fraction})", start, i + 1))
     typed = src.text[start : i + 1]
-    src.notes.append(f"{typed} is read as the mixed number {whole} + {fraction}.")
+    src.notes = (*src.notes, f"{typed} is read as the mixed number {whole} + {fraction}.")
     return True
 
 

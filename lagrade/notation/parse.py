@@ -60,7 +60,9 @@ def _parse_source(src: Source, vocabulary: Vocabulary, latex: bool | None, mode:
     latex = bool(latex or (latex is None and is_latex(src.text)))
     if latex:
         src = translate(src, keep_e="e" in lexicon.table)
-    parser = Parser(src, lexicon, latex)
+    parser = Parser(src, lexicon)
+    if latex:  # LaTeX sets a product of single letters as a run of them (\frac{GMm}{r})
+        parser.tokens = parser.split_letter_runs(parser.tokens)
     lhs_node, rhs_node = parser.parse_answer(mode)
     lhs = build(lhs_node, src)
     rhs = build(rhs_node, src) if rhs_node is not None else None

@@ -34,8 +34,10 @@ class TokenStream:
         self.src.fail(message, start, end, hint)
 
     def peek(self, ahead: int = 0) -> Token:
-        index = self.pos + ahead
-        return self.tokens[index] if index < len(self.tokens) else self.tokens[-1]
+        try:  # the most called method of the parser: no bounds test on the usual path
+            return self.tokens[self.pos + ahead]
+        except IndexError:
+            return self.tokens[-1]
 
     def next(self) -> Token:
         tok = self.tokens[self.pos]

@@ -288,6 +288,7 @@ PLAIN = [
     ),
     ("diff(x^2, t, 2)", 2 * s.x * s.x_ddot + 2 * s.x_dot**2),
     ("diff(theta(t)^2, t)", 2 * s.theta * s.theta_dot),
+    ("diff(sin(t), t)", cos(s.t)),  # a function of t, not a coordinate written theta(t)
     (
         "d/dt(1/2 m x_dot^2 + 1/2 k x^2)",
         s.m * s.x_dot * s.x_ddot + s.k * s.x * s.x_dot,
