@@ -25,7 +25,7 @@ import lagrade.grading.report as report
 import lagrade.grading.resume as resume
 import lagrade.grading.submission as submission
 from lagrade.assign.manifest import project_version
-from lagrade.assign.views import MULTILINE, PROMPTS
+from lagrade.assign.views import PROMPTS
 from lagrade.bank.scenefile import sha256
 from lagrade.errors import AssignmentError, LagradeError
 from lagrade.grading.manifest import entry_spec, entry_variant, load_manifest
@@ -142,12 +142,6 @@ def _warm_with_key(question: Problem, part: Mapping[str, Any]) -> None:
         pass
 
 
-def _as_lines(answer: Any) -> list[str]:
-    if isinstance(answer, list):
-        return [line for item in answer for line in item.splitlines() if line.strip()]
-    return [line for line in str(answer).splitlines() if line.strip()]
-
-
 def _blank(answer: Any) -> bool:
     if isinstance(answer, list):
         return not any(str(a).strip() for a in answer)
@@ -214,26 +208,26 @@ def _scored(part: Mapping[str, Any], verdict: Verdict, rubric: Rubric) -> dict[s
 
 
 def _judge(entry, part, answer, given, rubric: Rubric) -> Verdict:
+    """The sheet's raw answer (its string, or the list of strings TOML gave) goes to the part's
+    checker as it is: splitting, separators and reading are the checker's (the one door), so
+    `grade` reads an answer exactly as `check` does."""
     name = part["part"]
     problem = question(_spec(entry, part))
-    if name in ("coordinates", "expression"):
-        text = answer if isinstance(answer, str) else " ".join(answer)
+    return run_checker(problem, name, answer, _given(entry, name, given, rubric))
+
+
+def _given(entry, name: str, given: dict[str, Any], rubric: Rubric) -> dict[str, Any] | None:
+    """What the student brings besides the answer: the handout's own values and the rubric's
+    tolerance for a numeric follow-up; their own L for follow-through; and for `conserved`
+    that the handout asks for all of them."""
+    if name == "expression":
         own = entry_variant(entry)  # this student's numbers
-        handout = {"values": own.values, "tolerance": rubric.numeric_tolerance}
-        return run_checker(problem, name, text, handout if name == "expression" else None)
-    value: Any = (
-        _as_lines(answer)
-        if name in MULTILINE
-        else (answer if isinstance(answer, str) else "\n".join(answer))
-    )
-    if name == "cyclic" and isinstance(value, str):
-        value = [n for n in value.replace(";", ",").replace("\n", ",").split(",") if n.strip()]
-        value = [n.strip() for n in value]
-        if [n.lower() for n in value] == ["none"]:
-            value = []
+        return {"values": own.values, "tolerance": rubric.numeric_tolerance}
+    if name not in FOLLOW_L:
+        return None
     if name == "conserved" and ASKS_ALL_CONSERVED:
-        given = {**given, "all": True}  # the handout asks for "the conserved quantities"
-    return run_checker(problem, name, value, given if name in FOLLOW_L else None)
+        return {**given, "all": True}  # the handout asks for "the conserved quantities"
+    return given
 
 
 def grade_student(manifest: Mapping, rubric: Rubric, task: Mapping[str, Any]) -> dict[str, Any]:
@@ -253,12 +247,9 @@ def grade_student(manifest: Mapping, rubric: Rubric, task: Mapping[str, Any]) ->
     for problem, entry in zip(problems, student["problems"], strict=True):
         answers = sheet.answers.get(problem["index"], {})
         given: dict[str, Any] = {}
-        if (
-            "lagrangian" in answers
-            and isinstance(answers["lagrangian"], str)
-            and answers["lagrangian"].strip()
-        ):
-            given["lagrangian"] = answers["lagrangian"]
+        own_l = answers.get("lagrangian")
+        if isinstance(own_l, str | list) and not _blank(own_l):
+            given["lagrangian"] = own_l  # raw, as every answer: the checker reads it
         parts = []
         for part in problem["parts"]:
             part_id = f"{problem['index']}/{part['key']}"

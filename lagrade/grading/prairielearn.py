@@ -259,7 +259,7 @@ def _judge_task(task: Mapping[str, Any]) -> dict[str, dict]:
     submitted = task["submitted"]
     limit = task["part_time_limit"]
     entry = {**scene_reference(problem.scene), "seed": task["seed"]}
-    answers = {part.key: _answer(part.part, submitted.get(part.key)) for part in problem.parts}
+    answers = {part.key: _answer(submitted.get(part.key)) for part in problem.parts}
     lagrangian = next((answers[p.key] for p in problem.parts if p.part == "lagrangian"), None)
     given = {"lagrangian": lagrangian} if isinstance(lagrangian, str) and lagrangian else {}
     results = {}
@@ -299,12 +299,10 @@ def _backstop(task: dict[str, Any]) -> dict[str, dict]:
             task = again
 
 
-def _answer(part: str, raw: Any) -> Any:
-    """The text of a pl-string-input; several equations are separated by `;`."""
-    text = "" if raw is None else str(raw)
-    if part in MULTILINE:
-        return [line.strip() for line in text.split(";") if line.strip()]
-    return text
+def _answer(raw: Any) -> str:
+    """The text of a pl-string-input as typed: the part's checker splits it (several equations
+    separated by `;`, a list of names by commas), as it splits a sheet's answer."""
+    return "" if raw is None else str(raw)
 
 
 _problems: dict[tuple[str, int, str], tuple[Problem, Rubric]] = {}

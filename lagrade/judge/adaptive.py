@@ -186,6 +186,10 @@ def _bounded_run(program: ev.Program, env: Mapping, B) -> list[tuple]:
             (b, eb), (x, ex) = vals[instr[1]], vals[instr[2]]
             v = B.exp(x * B.log(b))
             vals.append((v, abs(v) * (abs(B.log(b)) * ex + abs(x) * eb / abs(b)) + 8 * abs(v)))
+        elif op in ("max", "min"):  # exact choice; the winner's error, at most the largest
+            parts = [vals[k] for k in instr[1]]
+            v = ev.extreme(op, [p[0] for p in parts], B)
+            vals.append((v, ev.extreme("max", [p[1] for p in parts], B)))
         elif op == "atan2":  # |∂/∂y| = |x|/r², |∂/∂x| = |y|/r²
             (y, ey), (x, ex) = vals[instr[1]], vals[instr[2]]
             f = B.atan2(y, x)

@@ -65,6 +65,10 @@ class Program:
     symbols: frozenset[sp.Symbol]
 
 
+#: sympy's Max and Min → the instruction that takes the larger or smaller of its arguments.
+EXTREMA: dict[type, str] = {sp.Max: "max", sp.Min: "min"}
+
+
 def compile_program(exprs: Sequence[sp.Expr]) -> Program:
     """Compile `exprs` (each a sympy expression over the whitelist) into one Program whose
     outputs are the expressions in order."""
@@ -122,6 +126,8 @@ def _instruction(node: sp.Basic, emit, symbols: set) -> tuple:
         return ("powe", emit(base), emit(exponent))
     if isinstance(node, sp.atan2):
         return ("atan2", emit(node.args[0]), emit(node.args[1]))
+    if type(node) in EXTREMA:  # ("max", args): the largest of its arguments, elementwise
+        return (EXTREMA[type(node)], tuple(emit(a) for a in node.args))
     if isinstance(node, sp.Function):
         name = _FUNCTIONS.get(type(node))
         if name is None:
@@ -215,6 +221,47 @@ class _Mp:
 
 FLOAT = _Float
 MP = _Mp
+
+
+def extreme(op: str, values: Sequence, backend=FLOAT):
+    """max or min ("max", "min") of `values`, elementwise, in any backend: float64 arrays, and
+    otherwise (mpmath object arrays, scalars of mpmath or exact Fractions) value by value. It is
+    undefined (nan) where any value is, or is not real: a complex number has no order."""
+    if backend is FLOAT:
+        if any(np.iscomplexobj(v) for v in values):
+            real = [np.real(v) for v in values]
+            imaginary = sum(np.abs(np.imag(v)) for v in values)
+            return np.where(imaginary == 0, extreme(op, real), np.nan)
+        pick = np.maximum if op == "max" else np.minimum
+        out = values[0]
+        for v in values[1:]:
+            out = pick(out, v)
+        return out
+    choose = _larger if op == "max" else _smaller
+    return np.frompyfunc(lambda *xs: _extreme_of(choose, xs), len(values), 1)(*values)
+
+
+def _larger(a, b) -> bool:
+    return b > a
+
+
+def _smaller(a, b) -> bool:
+    return b < a
+
+
+def _extreme_of(choose, xs):
+    """The value that `choose` prefers among xs; nan when one is nan or not real."""
+    best = None
+    for x in xs:
+        if isinstance(x, mpmath.mpc):
+            if x.imag != 0:
+                return mpmath.mpf("nan")
+            x = x.real
+        if x != x:  # nan
+            return x
+        if best is None or choose(best, x):
+            best = x
+    return best
 
 
 def finite_in_mp(
@@ -337,6 +384,8 @@ def run(program: Program, env: Mapping[sp.Symbol, Any], backend=FLOAT) -> list:
             vals.append(backend.exp(vals[instr[2]] * backend.log(vals[instr[1]])))
         elif op == "atan2":
             vals.append(backend.atan2(vals[instr[1]], vals[instr[2]]))
+        elif op in ("max", "min"):
+            vals.append(extreme(op, [vals[k] for k in instr[1]], backend))
         else:  # fn
             vals.append(_apply(backend, instr[1], vals[instr[2]]))
     return [vals[k] for k in program.outputs]
@@ -422,12 +471,35 @@ def run_hyperdual(program: Program, env: Mapping[sp.Symbol, HyperDual], backend=
             q = _hd_mul(y, _hd_power(backend, x, -1))
             r = 1 / (1 + q[0] * q[0])
             vals.append(_hd_chain(q, backend.atan2(y[0], x[0]), r, -2 * q[0] * r * r))
+        elif op in ("max", "min"):
+            vals.append(_hd_extreme(op, [vals[k] for k in instr[1]], backend))
         else:
             name, x = instr[1], vals[instr[2]]
             f = _apply(backend, name, x[0])
             d1, d2 = _derivatives(backend, name, x[0], f)
             vals.append(_hd_chain(x, f, d1, d2))
     return [vals[k] for k in program.outputs]
+
+
+def _hd_extreme(op: str, xs: list[HyperDual], backend) -> HyperDual:
+    """max or min of hyper-dual numbers: the derivatives of the argument that wins at each
+    point (where two tie the function has a kink; either side's derivative is taken)."""
+    best = xs[0]
+    for x in xs[1:]:
+        value = extreme(op, [best[0], x[0]], backend)
+        if backend is FLOAT:
+            take = np.asarray(x[0] > best[0] if op == "max" else x[0] < best[0])
+        else:
+            larger = np.frompyfunc(lambda a, b: bool(b > a) if op == "max" else bool(b < a), 2, 1)
+            take = np.asarray(larger(best[0], x[0]), dtype=bool)
+        best = (
+            value,
+            *(
+                0 if _vanishes(a) and _vanishes(b) else np.where(take, b, a)
+                for a, b in zip(best[1:], x[1:], strict=True)
+            ),
+        )
+    return best
 
 
 def top_terms(expr: sp.Expr) -> tuple[sp.Expr, ...]:

@@ -32,8 +32,6 @@ def verify_variant(variant: SceneVariant, parts: Iterable) -> list[str]:
     built: dict[str | None, Problem] = {}
     for part in parts:
         name, quantity = part.part, getattr(part, "quantity", None)
-        if name == "coordinates":
-            continue  # names only; nothing the grader could disagree with
         which = quantity if name == "expression" else None
         if which not in built:
             built[which] = build_problem(_spec(variant, which))

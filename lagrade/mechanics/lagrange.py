@@ -58,12 +58,13 @@ def jet(name: str) -> Jet:
     )
 
 
-def total_derivative(expr: sp.Expr, jets: Sequence[Jet]) -> sp.Expr:
+def total_derivative(expr: sp.Expr, jets: Sequence[Jet], time: sp.Symbol = t) -> sp.Expr:
     """D_t expr = ∂expr/∂t + Σ q̇ ∂expr/∂q + Σ q̈ ∂expr/∂q̇, for expr in t, q and q̇ (a third
-    derivative has no symbol, so expr must not contain q̈)."""
+    derivative has no symbol, so expr must not contain q̈). `time`: the symbol t stands for
+    (an expression question may declare its own)."""
     if any(expr.has(j.ddot) for j in jets):
         raise ValueError("D_t of an expression containing an acceleration needs a third derivative")
-    result = sp.diff(expr, t)
+    result = sp.diff(expr, time)
     for j in jets:
         result += j.dot * sp.diff(expr, j.q) + j.ddot * sp.diff(expr, j.dot)
     return result

@@ -14,7 +14,7 @@ from __future__ import annotations
 import re
 from typing import Any
 
-from lagrade.notation.build import TWO_ARGUMENTS
+from lagrade.notation.build import TUPLE_ARGUMENTS
 
 # Binding strength: a sub-expression is bracketed when it binds more loosely than its place needs.
 _SUM, _PRODUCT, _SIGNED, _POWER, _ATOM = range(5)
@@ -45,9 +45,12 @@ def _render(node: Any, text: str) -> tuple[str, int]:
         base = _at_least(node.value, text, _ATOM)
         exponent = _at_least(node.extra, text, _ATOM)
         return f"{base}^{exponent}", _POWER
+    if kind == "ddt":
+        operator = "d/dt" if node.extra[0] == 1 else f"d^{node.extra[0]}/dt^{node.extra[0]}"
+        return f"{operator}({_render(node.value, text)[0]})", _ATOM
     if kind == "call":
         argument, power = node.extra
-        arguments = argument if node.value in TWO_ARGUMENTS else (argument,)
+        arguments = argument if node.value in TUPLE_ARGUMENTS else (argument,)
         call = f"{node.value}({', '.join(_render(a, text)[0] for a in arguments)})"
         return (f"{call}^{power}", _POWER) if power is not None else (call, _ATOM)
     raise AssertionError(f"unknown node kind {kind!r}")

@@ -12,9 +12,9 @@ The rules build a `nodes.Node` tree and never touch sympy; names are read by `na
 
 from __future__ import annotations
 
-from lagrade.notation.build import TWO_ARGUMENTS
+from lagrade.notation.build import SEVERAL_ARGUMENTS, TWO_ARGUMENTS
 from lagrade.notation.lexer import Token, read_number
-from lagrade.notation.limits import MAX_EXPONENT, MAX_FUNCTION_POWER
+from lagrade.notation.limits import MAX_EXPONENT, MAX_EXTREMUM_ARGUMENTS, MAX_FUNCTION_POWER
 from lagrade.notation.names import NameRules
 from lagrade.notation.nodes import Node
 
@@ -100,6 +100,14 @@ class Parser(NameRules):
                     if not tok.spaced:
                         start = self.tokens[self.pos - 1].start
                         self.fail(f"Cannot read the number '{a}{b}'.", start, tok.end)
+                    if self.peek(1).text == "/" and self.peek(2).kind == "num":
+                        c = self.peek(2).text  # 2 3/4: a mixed number, or a number with a space
+                        self.fail(
+                            f"Two numbers side by side: for the mixed number write {a} + {b}/{c}"
+                            f", for a product {a}*{b}/{c}.",
+                            self.tokens[self.pos - 1].start,
+                            self.peek(2).end,
+                        )
                     self.fail(
                         f"Two numbers side by side; write {a}{b} or {a}*{b}.",
                         self.tokens[self.pos - 1].start,
@@ -191,6 +199,9 @@ class Parser(NameRules):
         if tok.kind == "name":
             if tok.text == "diff" and "diff" not in self.lexicon.table:
                 return self.parse_diff()
+            operator = self.time_operator(self.pos) if tok.text == "d" else None
+            if operator is not None and self.peek(operator[1] - self.pos).text == "(":
+                return self.parse_time_derivative(*operator)
             if self.lexicon.is_function(tok.text):
                 return self.parse_call()
             self.next()
@@ -283,6 +294,11 @@ class Parser(NameRules):
             return self.node(
                 "call", tok.start, self.tokens[self.pos - 1].end, name, (arguments, power)
             )
+        if name in SEVERAL_ARGUMENTS:
+            arguments = self.parse_several_arguments(tok)
+            return self.node(
+                "call", tok.start, self.tokens[self.pos - 1].end, name, (arguments, power)
+            )
         if nxt.text == "(":
             argument = self.parse_group()
         elif (
@@ -315,6 +331,40 @@ class Parser(NameRules):
         self.expect_in_call(")", opening, function)
         self.depth -= 1
         return first, second
+
+    def parse_several_arguments(self, function: Token) -> tuple[Node, ...]:
+        """'(' sum (',' sum)+ ')' after Max or Min: two arguments or more, and no more than
+        MAX_EXTREMUM_ARGUMENTS in all the answer's calls together."""
+        name = function.text
+        opening = self.peek()
+        if opening.text != "(":
+            self.fail(f"Write {name}(a, b) with brackets.", function.start, function.end)
+        self.next()
+        self.enter(opening)
+        arguments = [self.parse_sum()]
+        while self.peek().text == ",":
+            self.operand_after(self.next())
+            arguments.append(self.parse_sum())
+        closing = self.peek()
+        if closing.text != ")":
+            if closing.kind == "end":
+                self.fail(self.missing_close(opening), opening.start, opening.end)
+            self.unexpected(closing)
+        self.next()
+        self.depth -= 1
+        if len(arguments) < 2:
+            self.fail(
+                f"{name} compares two values or more: {name}(a, b).", function.start, closing.end
+            )
+        self.extremum_arguments += len(arguments)
+        if self.extremum_arguments > MAX_EXTREMUM_ARGUMENTS:
+            self.fail(
+                f"Too many values to compare: at most {MAX_EXTREMUM_ARGUMENTS} in all the Max "
+                "and Min of one answer.",
+                function.start,
+                closing.end,
+            )
+        return tuple(arguments)
 
     def expect_in_call(self, text: str, opening: Token, function: Token) -> Token:
         """The ',' or ')' of a call of two arguments, or the message for what stands there."""
@@ -371,32 +421,66 @@ class Parser(NameRules):
             following.end,
         )
 
+    def parse_time_derivative(self, order: int, after: int) -> Node:
+        """ddt := 'd/dt' '(' sum ')' | 'd^2/dt^2' '(' sum ')': the total time derivative D_t
+        of what the bracket holds (built on the jets, `build._time_derivative`)."""
+        start = self.peek().start
+        self.pos = after
+        inner = self.parse_group()
+        return self.time_derivative(inner, order, start, inner.end)
+
+    def time_derivative(self, inner: Node, order: int, start: int, end: int) -> Node:
+        """The node of D_t applied `order` times to `inner`. Of a name alone, only a coordinate's
+        (or a velocity's, or t's) is taken: d/dt(m) or d/dt(p_theta) is 0, which a student who
+        writes it does not mean, so it is refused as diff(m, t) is."""
+        time = self.lexicon.table["t"].value
+        if inner.kind == "sym" and inner.value is not time:
+            motion = {s for j in self.lexicon.jets for s in (j.q, j.dot, j.ddot)}
+            if inner.value not in motion:
+                name = getattr(inner.value, "name", self.text[inner.start : inner.end])
+                coordinates = ", ".join(self.lexicon.coordinates) or "none"
+                self.fail(
+                    f"'{name}' is not a coordinate of this problem (coordinates: {coordinates}).",
+                    inner.start,
+                    inner.end,
+                )
+        return self.node("ddt", start, end, inner, (order, time, tuple(self.lexicon.jets)))
+
     def parse_diff(self) -> Node:
-        """diff := 'diff' '(' name ',' 't' [',' INTEGER] ')'"""
+        """diff := 'diff' '(' (name | sum) ',' 't' [',' INTEGER] ')': of a name, its velocity
+        or acceleration (a name that is no coordinate is refused); of an expression, its total
+        time derivative."""
         tok = self.next()
         if self.peek().text != "(":
             self.fail("Write diff(x, t) with brackets.", tok.start, tok.end)
         opening = self.next()
         target = self.peek()
-        if target.kind != "name":
-            self.fail(
-                "diff(...) takes a coordinate and t, as in diff(theta, t).", tok.start, target.end
-            )
-        self.next()
-        self.skip_of_t()
+        of_t = [self.peek(k).text for k in (1, 2, 3, 4)] == ["(", "t", ")", ","]
+        single = (
+            target.kind == "name"
+            and not self.lexicon.is_function(target.text)  # diff(sin(t), t) is no theta(t)
+            and (self.peek(1).text in (",", ")") or of_t)
+        )
+        inner = None
+        if single:
+            self.next()
+            self.skip_of_t()
+        else:
+            self.enter(opening)
+            inner = self.parse_sum()
+            self.depth -= 1
         comma = self.peek()
         if comma.text != ",":
+            if comma.kind == "end":
+                self.fail(self.missing_close(opening), opening.start, opening.end)
             if comma.text == ")":
+                what = target.text if single else "x"
                 self.fail(
-                    f"diff(...) needs the variable t: write diff({target.text}, t).",
+                    f"diff(...) needs the variable t: write diff({what}, t).",
                     tok.start,
                     comma.end,
                 )
-            self.fail(
-                "diff(...) takes a single coordinate, as in diff(theta, t).",
-                target.start,
-                comma.end,
-            )
+            self.unexpected(comma)
         self.next()
         var = self.peek()
         if not (var.kind == "name" and var.text == "t" and not var.marks and not var.primes):
@@ -420,6 +504,8 @@ class Parser(NameRules):
                 )
             self.fail("Expected ')' to close diff(...).", closing.start, closing.end)
         self.next()
+        if inner is not None:
+            return self.time_derivative(inner, order, tok.start, closing.end)
         entry = self.lookup(target)
         if entry.jet is None:
             self.not_a_coordinate(target.text, target)

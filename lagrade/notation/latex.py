@@ -18,11 +18,11 @@ _GREEK = (
     "upsilon phi chi psi omega Gamma Delta Theta Lambda Xi Pi Sigma Phi Psi Omega"
 ).split()
 _WORDS = {name: name for name in _GREEK} | {
-    "varphi": "phi", "vartheta": "theta", "varepsilon": "epsilon", "varrho": "rho",
+    "varphi": "varphi", "vartheta": "vartheta", "varepsilon": "varepsilon", "varrho": "varrho",
     "varsigma": "sigma", "varpi": "pi",
     "sin": "sin", "cos": "cos", "tan": "tan", "sec": "sec", "csc": "csc", "cot": "cot",
     "sinh": "sinh", "cosh": "cosh", "tanh": "tanh", "arcsin": "asin", "arccos": "acos",
-    "arctan": "atan", "exp": "exp", "ln": "ln", "log": "log",
+    "arctan": "atan", "exp": "exp", "ln": "ln", "log": "log", "max": "Max", "min": "Min",
 }  # fmt: skip
 _TIMES = {"cdot": "*", "times": "*", "ast": "*"}
 _SPACES = frozenset((",", ";", ":", "!", " ", "quad", "qquad", "(", ")", "[", "]", "displaystyle"))
@@ -38,6 +38,8 @@ _NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*\Z")
 _SUBSCRIPT = re.compile(r"[A-Za-z0-9_]+\Z")
 _INTEGER = re.compile(r"[0-9]+\Z")
 _LEIBNIZ_DENOMINATOR = re.compile(r"d\s*t(\s*\^\s*\(?\s*2\s*\)?)?\Z")
+#: Numerators of \frac{d}{dt} and \frac{d^2}{dt^2} (as translated), by the order they give.
+_TIME_OPERATOR = {"d": 1, "d^2": 2, "d^(2)": 2}
 
 
 class _Translator:
@@ -255,12 +257,31 @@ class _Translator:
         numerator = self.sub(n_first, n_last)
         denominator = self.sub(d_first, d_last)
         top, bottom = self.flat(numerator).strip(), self.flat(denominator).strip()
-        if top.startswith("d") and _LEIBNIZ_DENOMINATOR.match(bottom):
+        leibniz = _LEIBNIZ_DENOMINATOR.match(bottom)
+        operator = _TIME_OPERATOR.get(top.replace(" ", ""))
+        if leibniz and operator and (operator == 2) == bool(leibniz.group(1)):
+            # \frac{d}{dt}(…): the operator d/dt, applied by the grammar to the bracket after it
+            operator_text = "d/dt" if operator == 1 else "d^2/dt^2"
+            end = self.span_of(d_first, d_last)[1] + 1
+            self.skip_space()
+            after = self.peek()
+            if after is None or after[0] not in ("(", "\\left"):
+                # \frac{d}{dt}\frac{1}{2} m v^2: how far does it reach? Only a bracket says.
+                self.fail(
+                    "Write what \\frac{d}{dt} differentiates in round brackets, as in "
+                    "\\frac{d}{dt}\\left(m r^2 \\dot{\\theta}\\right).",
+                    start,
+                    end,
+                )
+            self.word(operator_text, start, end)
+            return
+        if top.startswith("d") and leibniz:
             what = top[1:].lstrip("^2 ").strip() or "x"
             what = what if _NAME.match(what) else "x"
             what = "\\" + what if what in _GREEK else what
             self.fail(
-                f"Leibniz notation is not supported; write \\dot{{{what}}} or diff({what}, t).",
+                f"Leibniz notation is not supported; write \\dot{{{what}}}, diff({what}, t) or "
+                f"\\frac{{d}}{{dt}}({what}).",
                 start,
                 self.span_of(d_first, d_last)[1] + 1,
             )
@@ -301,10 +322,16 @@ class _Translator:
             self.emit(")))", b, b)
 
     def dot(self, name: str, start: int, end: int) -> None:
-        """\\dot{x}, \\dot x, \\dot{x_M} and \\dot{x}_M: a name followed by the derivative mark."""
+        """\\dot{x}, \\dot x, \\dot{x_M} and \\dot{x}_M: a name followed by the derivative mark.
+        \\dot{(…)} over a bracket is the time derivative of what the bracket holds (d/dt(…))."""
         first, last = self.argument(name, start)
-        target = self.flat(self.sub(first, last)).replace(" ", "")
+        pieces = self.sub(first, last)
+        target = self.flat(pieces).replace(" ", "")
         b = self.span_of(first, last)[1]
+        if _is_bracketed(target):
+            self.word("d/dt" if name == "dot" else "d^2/dt^2", start, end)
+            self.out.extend(pieces)
+            return
         if not _NAME.match(target):
             self.fail(
                 f"\\{name}{{...}} must hold a single coordinate, as in \\{name}{{x}}.", start, b
@@ -337,6 +364,19 @@ class _Translator:
         elif bracket.startswith("\\"):
             self.fail(f"Unknown LaTeX delimiter '{bracket}'.", tok[1], tok[2])
         self.emit(bracket, start, tok[2])
+
+
+def _is_bracketed(text: str) -> bool:
+    """Whether text is one bracket from its first character to its last: `(a+b)`, not
+    `(a)+(b)`."""
+    if not (text.startswith("(") and text.endswith(")")):
+        return False
+    depth = 0
+    for k, c in enumerate(text):
+        depth += {"(": 1, ")": -1}.get(c, 0)
+        if depth == 0 and k < len(text) - 1:
+            return False
+    return depth == 0
 
 
 def translate(src: Source, keep_e: bool = False) -> Source:

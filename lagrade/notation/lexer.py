@@ -23,7 +23,7 @@ DDOT_MARK = "\u0308"
 class Source:
     """Text being read, and for each of its characters the span in the original answer."""
 
-    __slots__ = ("original", "text", "offset", "stop", "starts", "ends")
+    __slots__ = ("original", "text", "offset", "stop", "starts", "ends", "notes")
 
     def __init__(
         self,
@@ -40,6 +40,7 @@ class Source:
         self.stop = offset + len(text) if stop is None else stop
         self.starts = starts
         self.ends = ends
+        self.notes: tuple[str, ...] = ()  # how a rewriting read the text (2¾), for warnings
 
     def locate(self, start: int, end: int) -> tuple[int, int]:
         """Span (start, end) of this text → span in the original answer."""
@@ -74,7 +75,9 @@ class Source:
             texts.append(piece)
             starts.extend([s] * len(piece))
             ends.extend([e] * len(piece))
-        return Source(self.original, "".join(texts), stop=self.stop, starts=starts, ends=ends)
+        derived = Source(self.original, "".join(texts), stop=self.stop, starts=starts, ends=ends)
+        derived.notes = self.notes
+        return derived
 
 
 # --- Unicode normalisation -----------------------------------------------------------------------
@@ -106,6 +109,10 @@ GREEK = {
     "Γ": "Gamma", "Δ": "Delta", "Θ": "Theta", "Λ": "Lambda", "Ξ": "Xi", "Π": "Pi",
     "Σ": "Sigma", "Φ": "Phi", "Ψ": "Psi", "Ω": "Omega",
 }  # fmt: skip
+#: Letter variants read by their own name before NFKC (which would make ϑ a θ): a question may
+#: name its coordinate vartheta (the handout then prints ϑ); where it names only one of theta
+#: and vartheta, the lexicon reads either spelling as that one (`vocabulary.GREEK_VARIANTS`).
+VARIANT_LETTERS = {"ϑ": "vartheta", "ϱ": "varrho", "ϕ": "phi", "ϵ": "epsilon"}
 
 
 def _is_hidden(c: str) -> bool:
@@ -156,6 +163,9 @@ def normalise(src: Source) -> Source:
             pieces.append(("^" + "".join(_SUPERSCRIPTS[x] for x in text[i:j]), i, j))
             i = j
             continue
+        if c in _FRACTIONS and _mixed_number(src, pieces, i):
+            i += 1
+            continue
         if c in _FRACTIONS or c in _OPERATORS:  # before NFKC, which decomposes ≠ and ½
             pieces.append((_FRACTIONS.get(c) or _OPERATORS[c], i, i + 1))
             i += 1
@@ -167,6 +177,41 @@ def normalise(src: Source) -> Source:
     return src.derive(pieces)
 
 
+def _mixed_number(src: Source, pieces: list[tuple[str, int, int]], i: int) -> bool:
+    """2¾ (or 2 ¾) is the mixed number 2 + 3/4, as on paper, never 2·¾: when the fraction sign
+    at i follows a whole number, rewrite the two as `(2+3/4)` and note the reading. A decimal
+    before it (2.5½) has no such reading and is refused. False when no number comes before."""
+    k = len(pieces)
+    while k and pieces[k - 1][0] == " ":
+        k -= 1
+    digits = k
+    while digits and pieces[digits - 1][0].isdigit() and len(pieces[digits - 1][0]) == 1:
+        digits -= 1
+    if digits == k:
+        return False
+    before = pieces[digits - 1][0][-1:] if digits else ""
+    if before == ".":
+        first = digits - 1
+        while first and (pieces[first - 1][0].isdigit() or pieces[first - 1][0] == "."):
+            first -= 1
+        src.fail(
+            f"A fraction sign right after a decimal number: write {src.text[i]} as a sum "
+            "or a product with brackets, as in 2.5 + 1/2 or 2.5*(1/2).",
+            pieces[first][1],
+            i + 1,
+        )
+    if before.isalnum() or before == "_":  # the end of a name (m1½ is m1·½)
+        return False
+    whole = "".join(p[0] for p in pieces[digits:k])
+    fraction = _FRACTIONS[src.text[i]][1:-1]
+    start = pieces[digits][1]
+    del pieces[digits:]
+    pieces.append((f"({whole}+{fraction})", start, i + 1))
+    typed = src.text[start : i + 1]
+    src.notes = (*src.notes, f"{typed} is read as the mixed number {whole} + {fraction}.")
+    return True
+
+
 def _cluster(src: Source, i: int, previous: str) -> tuple[str, int, bool]:
     """The character at i with its combining marks, in plain notation: (text, end, whether it
     held a Greek letter). `previous` is the last character written before it."""
@@ -176,9 +221,16 @@ def _cluster(src: Source, i: int, previous: str) -> tuple[str, int, bool]:
         if _is_hidden(text[j]):
             src.fail(_hidden_message(text[j], src.locate(j, j)[0]), j, j + 1)
         j += 1
-    cluster = unicodedata.normalize("NFD", unicodedata.normalize("NFKC", text[i:j]))
     out = []
     greek = False
+    first = i
+    variant = VARIANT_LETTERS.get(c)
+    if variant is not None:  # ϑ̇: the variant's name, then its marks
+        if previous.isascii() and previous.isalpha():
+            out.append(" ")
+        out.append(variant)
+        greek, first = True, i + 1
+    cluster = unicodedata.normalize("NFD", unicodedata.normalize("NFKC", text[first:j]))
     for ch in cluster:
         if ch < "\x80" or ch == DOT_MARK or ch == DDOT_MARK:
             out.append(ch)

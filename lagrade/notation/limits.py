@@ -12,3 +12,8 @@ MAX_NUMBER_BITS = 4_000  # size of an exact number produced by a power
 #: terms to the n: what an expansion downstream could cost. (x - b)^5000 has 5,001 and is fine;
 #: (a + b + c + d + e)^1000 has 4·10^10 and is refused.
 MAX_EXPANDED_TERMS = 1_000_000
+#: Arguments of all the Max and Min calls of one answer together: a judge compares them pairwise.
+MAX_EXTREMUM_ARGUMENTS = 8
+#: Tree nodes a time derivative d/dt(…) may write out: the product rule turns a product of n
+#: factors into n products (sympy takes ~0.1 ms a node), and no answer needs more than this.
+MAX_DERIVATIVE_NODES = 2_000

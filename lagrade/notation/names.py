@@ -16,10 +16,47 @@ from lagrade.notation.stream import TokenStream
 from lagrade.notation.vocabulary import Entry
 
 _VELOCITY_SUFFIX = re.compile(r"(.+?)_?(d?dot)\Z")
+#: A run of single letters, the last one perhaps subscripted (`GMm`, `mv_0`), as LaTeX sets a
+#: product of single-letter symbols.
+_LETTER_RUN = re.compile(r"([A-Za-z]{2,})(_[A-Za-z0-9]+)?\Z")
 
 
 class NameRules(TokenStream):
     """The rules for names, shared by the grammar's atoms, calls and diff(...)."""
+
+    def split_letter_runs(self, tokens: list[Token]) -> list[Token]:
+        """In LaTeX, adjacent letters are a product (`\\frac{GMm}{r}` is G·M·m/r): a name the
+        question does not know that is a run of single letters, each a declared name (the last
+        one may carry the subscript, `mv_0`), becomes those names, and the reading is noted.
+        Plain text never splits a name (`mgl` gets a suggestion instead)."""
+        table = self.lexicon.table
+        splits: dict[int, list[Token]] = {}
+        for k, tok in enumerate(tokens):
+            if tok.kind != "name" or tok.text in table or tok.marks or tok.primes:
+                continue
+            run = _LETTER_RUN.match(tok.text)
+            if (
+                run is None
+                or self.lexicon.is_function(tok.text)
+                or (tok.text == "dt" and k and tokens[k - 1].text == "/")  # d/dt, dx/dt
+            ):
+                continue
+            letters, subscript = run.group(1), run.group(2) or ""
+            names = [*letters[:-1], letters[-1] + subscript]
+            if not all(name in table for name in names):
+                continue
+            starts = [tok.start + i for i in range(len(letters))]
+            ends = [*starts[1:], tok.end]
+            splits[k] = [
+                Token("name", name, start, end, tok.spaced if i == 0 else False)
+                for i, (name, start, end) in enumerate(zip(names, starts, ends, strict=True))
+            ]
+            self.warn(
+                f"{tok.text} is read as {'*'.join(names)}: in LaTeX adjacent letters multiply."
+            )
+        if not splits:
+            return tokens
+        return [piece for k, tok in enumerate(tokens) for piece in splits.get(k, [tok])]
 
     def lookup(self, tok: Token) -> Entry:
         """The lexicon's entry for a name token; unknown names and stray primes fail."""
@@ -129,13 +166,60 @@ class NameRules(TokenStream):
             f"Unknown symbol '{name}'. Allowed: {self.lexicon.allowed}.", tok.start, tok.end, hint
         )
 
+    def time_operator(self, i: int) -> tuple[int, int] | None:
+        """(order, index of the token after it) when tokens i… are the operator d/dt or
+        d^2/dt^2 (written with or without spaces, d²/dt² too), else None. `dt` must be no name
+        of the question; `d` may be one (a distance d): `d/dt` has no other reading."""
+        tokens = self.tokens
+        if i >= len(tokens) or tokens[i].text != "d" or tokens[i].marks or tokens[i].primes:
+            return None
+        texts = [tok.text for tok in tokens[i : i + 7]]
+        if "dt" in self.lexicon.table:
+            return None
+        if texts[1:3] == ["/", "dt"] and tokens[i + 2].kind == "name":
+            return 1, i + 3
+        if texts[1:7] == ["^", "2", "/", "dt", "^", "2"]:
+            return 2, i + 7
+        return None
+
+    def read_time_operator(self, i: int) -> int:
+        """For a token `d` (or the `dt` of `d/dt` after a declared d) at i: the index after the
+        operator d/dt or d^2/dt^2 that starts there, when a bracket follows it; -1 when none
+        starts there. Without a bracket it fails (unless d is a declared name, when `d/dt x`
+        is left to read, or fail, as a division)."""
+        start = (
+            i
+            if self.tokens[i].text == "d"
+            else next((k for k in (i - 2, i - 4) if k >= 0 and self.time_operator(k)), -1)
+        )
+        found = self.time_operator(start) if start >= 0 else None
+        if found is None or found[1] <= i:
+            return -1
+        after = found[1]
+        if self.tokens[after].text != "(":
+            if "d" in self.lexicon.table:
+                return -1
+            self.fail(
+                "Write what d/dt differentiates in brackets, as in d/dt(m*r^2*theta_dot).",
+                self.tokens[start].start,
+                self.tokens[after - 1].end,
+            )
+        return after
+
     def check_leibniz(self) -> None:
-        """dx/dt, d/dt(...), dtheta/dt, d^2x/dt^2: rejected before names are looked up."""
+        """dx/dt, dtheta/dt, d^2x/dt^2: rejected before names are looked up. The operator d/dt
+        (d^2/dt^2) applied to a bracket is the time derivative of what it holds; without a
+        bracket it is refused (`d/dt theta^2` could mean either square)."""
         table = self.lexicon.table
         tokens = self.tokens
+        operator_end = -1  # tokens before this index belong to a d/dt operator already read
         for i, tok in enumerate(tokens):
-            if tok.kind != "name" or tok.text in table:
+            if tok.kind != "name" or tok.text in table or i < operator_end:
                 continue
+            if tok.text in ("d", "dt"):  # d/dt(…); or …/dt after a declared d (a distance)
+                operator_end = self.read_time_operator(i)
+                if i < operator_end:
+                    continue
             leibniz = (
                 (tok.text == "dt" and i > 0 and tokens[i - 1].text == "/")
                 or (tok.text == "d" and tokens[i + 1].text == "/")
@@ -162,7 +246,8 @@ class NameRules(TokenStream):
             if tok.text == "d" and tokens[i + 1].text == "/":
                 end = tokens[i + 2].end
             self.fail(
-                f"Leibniz notation is not supported; write {what}dot or diff({what}, t).",
+                f"Leibniz notation is not supported; write {what}dot, diff({what}, t) or "
+                f"d/dt({what}).",
                 start,
                 end,
             )

@@ -11,7 +11,8 @@ does `build` turn it into sympy through the one whitelist table `build.SYMPY_CON
 from __future__ import annotations
 
 import re
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
 
 import sympy as sp
 
@@ -26,18 +27,21 @@ from lagrade.notation.parsed import Parsed
 from lagrade.notation.vocabulary import Vocabulary
 
 __all__ = [
+    "NameRead",
     "Parsed",
     "ParseError",
     "Vocabulary",
+    "is_latex",
     "parse_answer",
     "parse_equation",
     "parse_equations",
     "parse_expression",
+    "read_names",
     "split_equations",
 ]
 
 
-def _is_latex(text: str) -> bool:
+def is_latex(text: str) -> bool:
     """Auto-detection: a backslash, $…$ delimiters, or a braced power x^{2} mean LaTeX."""
     stripped = text.strip()
     return "\\" in text or "^{" in text or (stripped.startswith("$") and stripped.endswith("$"))
@@ -53,9 +57,12 @@ def _parse_source(src: Source, vocabulary: Vocabulary, latex: bool | None, mode:
         )
     lexicon = vocabulary._lexicon
     src = normalise(src)
-    if latex or (latex is None and _is_latex(src.text)):
+    latex = bool(latex or (latex is None and is_latex(src.text)))
+    if latex:
         src = translate(src, keep_e="e" in lexicon.table)
     parser = Parser(src, lexicon)
+    if latex:  # LaTeX sets a product of single letters as a run of them (\frac{GMm}{r})
+        parser.tokens = parser.split_letter_runs(parser.tokens)
     lhs_node, rhs_node = parser.parse_answer(mode)
     lhs = build(lhs_node, src)
     rhs = build(rhs_node, src) if rhs_node is not None else None
@@ -70,12 +77,18 @@ def _parse_source(src: Source, vocabulary: Vocabulary, latex: bool | None, mode:
     return Parsed(src.original, lhs, rhs, frozenset(parser.found), tuple(parser.warnings), shown)
 
 
-def _guarded(src: Source, vocabulary: Vocabulary, latex: bool | None, mode: str) -> Parsed:
+def _guarded(
+    src: Source,
+    vocabulary: Vocabulary,
+    latex: bool | None,
+    mode: str,
+    read: Callable = _parse_source,
+):
     """The one boundary: only ParseError leaves, whatever happened inside."""
     if not isinstance(vocabulary, Vocabulary):
         raise TypeError(f"vocabulary must be a Vocabulary, not {type(vocabulary).__name__}")
     try:
-        return _parse_source(src, vocabulary, latex, mode)
+        return read(src, vocabulary, latex, mode)
     except ParseError:
         raise
     except RecursionError:
@@ -133,7 +146,7 @@ def parse_equations(
                 MAX_TOTAL_LENGTH,
                 len(whole),
             )
-        mode = latex if latex is not None else _is_latex(whole)
+        mode = latex if latex is not None else is_latex(whole)
         start = 0
         for match in [*_SEPARATORS.finditer(whole), None]:
             end = match.start() if match else len(whole)
@@ -147,3 +160,84 @@ def parse_equations(
             "The answer is empty.", 0, 0
         )
     return results
+
+
+# --- lists of names --------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class NameRead:
+    """One name of a list of names (the coordinates, the cyclic ones) as the grammar reads it,
+    in whatever spelling it was typed: `name` is its canonical spelling (θ, \\theta and theta
+    give "theta"; θ₁ and theta1 give "theta_1"; θ̇ and thetadot give "theta_dot"), `symbol` the
+    question's symbol (None for a name the question does not know), `coordinate` the
+    coordinate it is, or is the velocity (`order` 1) or acceleration (`order` 2) of, and `span`
+    where it stands in `source`, the text as typed."""
+
+    name: str
+    symbol: sp.Symbol | None
+    coordinate: str | None
+    order: int
+    span: tuple[int, int]
+    source: str
+
+
+def _read_name_source(src: Source, vocabulary: Vocabulary, latex: bool | None, expected: str):
+    """Text → names: the same normalisation, LaTeX translation, tokens and lexicon as an
+    expression, but every token must be a name; anything else fails with `expected`."""
+    if len(src.text) > MAX_LENGTH:
+        src.fail(
+            f"The answer is too long ({len(src.text)} characters; the limit is {MAX_LENGTH}).",
+            MAX_LENGTH,
+            len(src.text),
+        )
+    lexicon = vocabulary._lexicon
+    src = normalise(src)
+    if latex or (latex is None and is_latex(src.text)):
+        src = translate(src, keep_e="e" in lexicon.table)
+    rules = Parser(src, lexicon)
+    tokens = rules.tokens[:-1]
+    of_t = {k + d for k, tok in enumerate(tokens) for d in (1, 2, 3) if _of_t(tokens, k)}
+    names = []
+    for k, tok in enumerate(tokens):
+        if k in of_t:  # theta(t) is theta
+            continue
+        if tok.kind != "name":
+            src.fail(expected, tok.start, tok.end)
+        entry = lexicon.table.get(tok.text)
+        span = src.locate(tok.start, tok.end)
+        if entry is None or entry.kind == "pi" or entry.value is sp.I:
+            names.append(NameRead(tok.text, None, None, tok.marks, span, src.original))
+            continue
+        rules.lookup(tok)  # primes where the question does not allow them fail here
+        order = entry.order + tok.marks + tok.primes
+        jet = entry.jet
+        if jet is None:
+            names.append(NameRead(entry.value.name, entry.value, None, order, span, src.original))
+            continue
+        symbol = rules.derivative(entry, order, tok.start, tok.end).value
+        names.append(NameRead(symbol.name, symbol, jet.name, order, span, src.original))
+    if not names:
+        src.fail("The answer is empty.", 0, len(src.text))
+    return tuple(names)
+
+
+def _of_t(tokens, k: int) -> bool:
+    """Whether the name at k is followed by `(t)`, without a space (theta(t))."""
+    following = [tok.text for tok in tokens[k + 1 : k + 4]]
+    return tokens[k].kind == "name" and following == ["(", "t", ")"] and not tokens[k + 1].spaced
+
+
+def read_names(
+    text: str,
+    vocabulary: Vocabulary,
+    *,
+    latex: bool | None = None,
+    expected: str = "Write names only here, as in theta, phi.",
+) -> tuple[NameRead, ...]:
+    """The names in `text` (separated by spaces), each in its canonical spelling and with the
+    question's symbol when the question knows it; a name the question does not know is read,
+    not refused (saying which names are wrong is the checker's). Anything but names fails with
+    `expected` and a caret."""
+    src = _source(text)
+    return _guarded(src, vocabulary, latex, expected, _read_name_source)

@@ -13,6 +13,7 @@ from dataclasses import dataclass
 import sympy as sp
 from markupsafe import Markup
 from sympy.printing.mathml import MathMLPresentationPrinter
+from sympy.printing.str import StrPrinter
 
 from lagrade.mechanics import lagrange as mech
 
@@ -120,13 +121,21 @@ def mathml(expr: sp.Basic, coordinates: Iterable[str] = (), display: str = "inli
     return Markup(f'<math xmlns="{_MATHML_NS}" display="{display}">{inner}</math>')
 
 
+class _PlainPrinter(StrPrinter):
+    """sympy's str printer, but Euler's number alone is `exp(1)`: `E` is a plain symbol to the
+    grammar, so what this printer writes reads back as what it printed."""
+
+    def _print_Exp1(self, expr: sp.Basic) -> str:
+        return "exp(1)"
+
+
 def plain(expr: sp.Basic, order: str | None = None) -> str:
     """The notation students type: `m*theta_dot^2/2`, `sin(theta)`, terms in sympy's usual order
     (`1 - x`); `order="lex"` sorts them strictly (`-x + 1`), as handouts do. An equation reads
     `lhs = rhs`, as the grader parses it (sympy would print `Eq(lhs, rhs)`)."""
     if isinstance(expr, sp.Equality):
         return f"{plain(expr.lhs, order)} = {plain(expr.rhs, order)}"
-    return sp.sstr(expr, order=order).replace("**", "^")
+    return _PlainPrinter({"order": order}).doprint(expr).replace("**", "^")
 
 
 def answer_latex(expr: sp.Basic) -> str:

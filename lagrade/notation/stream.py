@@ -25,16 +25,19 @@ class TokenStream:
         self.depth = 0
         self.bars = 0  # absolute-value bars open around the current position
         self.nodes = 0
+        self.extremum_arguments = 0  # arguments of Max and Min so far (limits.py)
         self.found: set[str] = set()
-        self.warnings: list[str] = []
+        self.warnings: list[str] = list(src.notes)
 
     def fail(self, message: str, start: int, end: int, hint: str | None = None) -> NoReturn:
         """A student's mistake at characters start…end of the text being read."""
         self.src.fail(message, start, end, hint)
 
     def peek(self, ahead: int = 0) -> Token:
-        index = self.pos + ahead
-        return self.tokens[index] if index < len(self.tokens) else self.tokens[-1]
+        try:  # the most called method of the parser: no bounds test on the usual path
+            return self.tokens[self.pos + ahead]
+        except IndexError:
+            return self.tokens[-1]
 
     def next(self) -> Token:
         tok = self.tokens[self.pos]

@@ -33,6 +33,21 @@ def _digit_variants(name: str) -> set[str]:
     return {name, re.sub(r"_(?=[0-9])", "", name), re.sub(r"(?<=[A-Za-z])(?=[0-9])", "_", name)}
 
 
+#: Greek letters with a variant shape LaTeX and Unicode spell apart (\\vartheta, ϑ): two
+#: spellings of one letter to a student, so a question that declares only one of the two reads
+#: the other as it (a coordinate named vartheta is typed θ, ϑ, theta or \\vartheta alike).
+GREEK_VARIANTS = ("theta", "phi", "epsilon", "rho")
+_VARIANT = re.compile(rf"(var)?({'|'.join(GREEK_VARIANTS)})(?=_|[0-9]|d?dot\Z|\Z)")
+
+
+def _variant_spelling(name: str) -> str | None:
+    """vartheta_dot for theta_dot, theta1 for vartheta1; None for a name with no variant."""
+    m = _VARIANT.match(name)
+    if m is None:
+        return None
+    return ("" if m.group(1) else "var") + m.group(2) + name[m.end() :]
+
+
 @dataclass(frozen=True)
 class Vocabulary:
     """What a question lets a student write: its coordinates (each with velocity and
@@ -146,6 +161,10 @@ class Lexicon:
         for name in list(vocabulary.parameters) + list(vocabulary.labels):
             for v in _digit_variants(name):
                 table.setdefault(v, exact[name])
+        for spelling, entry in list(table.items()):  # ϑ and θ: one letter, unless both declared
+            other = _variant_spelling(spelling)
+            if other is not None:
+                table.setdefault(other, entry)
         table.setdefault("t", Entry("sym", mechanics.t, None, 0))
         table.setdefault("pi", Entry("pi", sp.pi, None, 0))
         self.table = table

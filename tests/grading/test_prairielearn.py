@@ -175,3 +175,61 @@ def test_grade_stops_a_part_held_in_c_code_and_grades_the_others(tmp_path):
     assert scores["lagrangian"]["score"] == 0.0 and scores["lagrangian"]["feedback"]
     # the part's limit and grace, and a fresh worker's start for the rest
     assert elapsed < prairielearn.PART_TIME_LIMIT + GRACE + 2.0, elapsed
+
+
+LIST_ASSIGNMENT = """\
+title = "PL lists"
+points = 1
+
+[[problems]]
+scene = "kepler"
+parts = ["coordinates", "lagrangian", "eom", "momenta", "cyclic", "conserved"]
+"""
+
+
+@pytest.mark.parametrize("separator", ["; ", ", ", " and "])
+def test_a_pl_answer_is_read_as_check_reads_the_same_text(tmp_path, separator):
+    """The one door: PrairieLearn passes the typed text on as it is, so a list separated by
+    `;`, commas or "and" gets exactly `check`'s verdict and feedback (it used to split at `;`
+    only, and judged the rest as one unreadable equation)."""
+    from lagrade.bank.registry import get_scene
+    from lagrade.grading.rubric import Rubric
+    from lagrade.judge.check import check
+    from lagrade.judge.key import key_answer
+
+    (tmp_path / "a.toml").write_text(LIST_ASSIGNMENT)
+    out = tmp_path / "questions"
+    assert (
+        main(["export", "prairielearn", str(tmp_path / "a.toml"), "--seed", "5", "--out", str(out)])
+        == 0
+    )
+    server = load_server(next(out.iterdir()))
+    data = new_data(11)
+    server.generate(data)
+    seed = data["params"]["seed"]
+    variant = get_scene("kepler").variant(seed)
+    r, theta = variant.coordinates
+    typed = {
+        part: separator.join(
+            key_answer(variant, part) if part != "cyclic" else [theta, r]  # r is not cyclic
+        )
+        for part in ("eom", "momenta", "cyclic", "conserved")
+    }
+    typed["coordinates"] = separator.join([theta, r])
+    typed["lagrangian"] = key_answer(variant, "lagrangian")
+    data["submitted_answers"] = typed
+    data["partial_scores"] = {}
+    server.grade(data)
+    for part, text in typed.items():
+        given = {"lagrangian": typed["lagrangian"]} if part != "coordinates" else None
+        if part == "conserved":
+            given = {**given, "all": True}  # the handout asks for the conserved quantities
+        verdict = check({"scene": "kepler", "seed": seed}, part, text, time_limit=None, given=given)
+        share = Rubric().fraction(
+            verdict.status, verdict.score, verdict.mistakes, verdict.follows_from_own_answer
+        )
+        scored = data["partial_scores"][part]
+        assert scored["score"] == pytest.approx(share), (part, text)
+        assert scored["feedback"] == (" ".join(verdict.feedback) or verdict.status), (part, text)
+    assert data["partial_scores"]["eom"]["score"] == 1.0
+    assert data["partial_scores"]["cyclic"]["score"] == 0.0  # every coordinate: a blind guess

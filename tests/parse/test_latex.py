@@ -47,14 +47,14 @@ def test_both_dot_placements_are_the_same_symbol() -> None:
 
 
 def test_errors_point_into_the_latex_source() -> None:
-    text = r"\frac{1}{2} m \dot{x}_M^2 + \frac{g}{2} mq"
+    text = r"\frac{1}{2} m \dot{x}_M^2 + \frac{g}{2} mtheta"
     with pytest.raises(ParseError) as caught:
         parse_answer(text, VOCAB)
     assert (
         caught.value.message
-        == "Unknown symbol 'mq'. Did you mean m*q? Separate variables with * or a space."
+        == "Unknown symbol 'mtheta'. Did you mean m*theta? Separate variables with * or a space."
     )
-    assert text[slice(*caught.value.span)] == "mq"
+    assert text[slice(*caught.value.span)] == "mtheta"
 
 
 def test_auto_detection_and_forcing() -> None:
@@ -72,3 +72,24 @@ def test_latex_greek_in_unicode_and_commands_agree() -> None:
         == parse_answer("θ̇²", VOCAB).lhs
         == jet("theta").dot ** 2
     )
+
+
+def test_adjacent_declared_letters_multiply_in_latex_and_the_echo_shows_it() -> None:
+    """LaTeX sets G·M·m as `GMm`: a run of single letters, every one a declared name, is their
+    product there, and the echo and a warning show the split; plain text keeps its rule (a
+    suggestion, never a split)."""
+    vocab = Vocabulary.from_names(["r"], ["G", "M", "m"])
+    read = parse_answer(r"\frac{GMm}{r}", vocab)
+    G, M, m = (sp.Symbol(n, positive=True) for n in "GMm")
+    assert read.lhs == G * M * m / jet("r").q
+    assert read.echo == "G*M*m/r"
+    assert read.warnings == ("GMm is read as G*M*m: in LaTeX adjacent letters multiply.",)
+    with pytest.raises(ParseError, match=r"Did you mean G\*M\*m\?"):
+        parse_answer("GMm/r", vocab)
+
+
+def test_a_run_with_an_undeclared_letter_is_not_split() -> None:
+    vocab = Vocabulary.from_names(["r"], ["G", "M", "m"])
+    with pytest.raises(ParseError, match="Unknown symbol 'GMmx'"):
+        parse_answer(r"\frac{GMmx}{r}", vocab)
+    assert parse_answer(r"\frac{d}{dt}\left(r\right)", vocab).lhs == jet("r").dot  # d, t: no run

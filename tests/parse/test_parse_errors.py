@@ -67,17 +67,73 @@ ERRORS = [
         (0, 4),
     ),
     ("diff(m, t)", f"'m' {NOT_COORDINATE}", (5, 6)),
+    ("d/dt(m) = 0", f"'m' {NOT_COORDINATE}", (4, 7)),
     # derivatives
-    ("dx/dt", "Leibniz notation is not supported; write xdot or diff(x, t).", (0, 5)),
+    ("dx/dt", "Leibniz notation is not supported; write xdot, diff(x, t) or d/dt(x).", (0, 5)),
     (
-        "m d/dt(theta)",
-        "Leibniz notation is not supported; write thetadot or diff(theta, t).",
+        "dtheta/dt",
+        "Leibniz notation is not supported; write thetadot, diff(theta, t) or d/dt(theta).",
+        (0, 9),
+    ),
+    (
+        "d theta/d t",
+        "Leibniz notation is not supported; write thetadot, diff(theta, t) or d/dt(theta).",
+        (2, 9),
+    ),
+    (
+        "m d/dt theta^2",
+        "Write what d/dt differentiates in brackets, as in d/dt(m*r^2*theta_dot).",
         (2, 6),
     ),
-    ("dtheta/dt", "Leibniz notation is not supported; write thetadot or diff(theta, t).", (0, 9)),
-    ("d theta/d t", "Leibniz notation is not supported; write thetadot or diff(theta, t).", (2, 9)),
+    (
+        "d/dt(m theta_ddot)",
+        "This time derivative would be a third derivative: what it differentiates holds an "
+        "acceleration (theta_ddot), and only velocities and accelerations exist here.",
+        (0, 18),
+    ),
+    (
+        "d^2/dt^2(x_dot) = 0",
+        "This time derivative would be a third derivative: what it differentiates holds an "
+        "acceleration (x_ddot), and only velocities and accelerations exist here.",
+        (0, 15),
+    ),
+    (
+        "diff(diff(theta_dot, t), t)",
+        "This time derivative would be a third derivative: what it differentiates holds an "
+        "acceleration (theta_ddot), and only velocities and accelerations exist here.",
+        (0, 27),
+    ),
+    (
+        "d/dt(Max(x, q))",
+        "This time derivative cannot be worked out: sign, Max and Min have no derivative where "
+        "they jump or bend; write the derivative itself.",
+        (0, 15),
+    ),
+    (
+        "d/dt(" + "*".join(f"sin(theta + {k})" for k in range(40)) + ")",
+        "This time derivative is too large to work out (the product rule would write more than "
+        "2,000 terms and factors); differentiate it by hand, or a smaller expression.",
+        (0, 5 + 40 * 14 + 39 * 1 + 1 + 30),
+    ),
     ("diff(L, thetadot)", "diff(...) is only allowed with respect to t.", (8, 16)),
-    ("diff(theta^2, t)", "diff(...) takes a single coordinate, as in diff(theta, t).", (5, 11)),
+    ("diff(theta^2)", "diff(...) needs the variable t: write diff(x, t).", (0, 13)),
+    ("Max(m)", "Max compares two values or more: Max(a, b).", (0, 6)),
+    (
+        "Max(m, g, l, k, omega) + Min(x, q, theta, M)",
+        "Too many values to compare: at most 8 in all the Max and Min of one answer.",
+        (25, 44),
+    ),
+    (
+        "2.5½ m",
+        "A fraction sign right after a decimal number: write ½ as a sum or a product "
+        "with brackets, as in 2.5 + 1/2 or 2.5*(1/2).",
+        (0, 4),
+    ),
+    (
+        "2 3/4 m",
+        "Two numbers side by side: for the mixed number write 2 + 3/4, for a product 2*3/4.",
+        (0, 5),
+    ),
     ("diff(theta, t, 3)", "The order in diff(x, t, n) must be 1 or 2.", (15, 16)),
     (
         "diff(theta_dot, t, 2)",
@@ -190,11 +246,28 @@ ERRORS = [
     ("é", "Unexpected character 'é' (U+00E9) at position 1.", (0, 1)),
     ("\u0307x", "A combining dot must follow a coordinate's name, as in θ̇.", (0, 1)),
     # LaTeX
-    (r"\frac{dx}{dt}", "Leibniz notation is not supported; write \\dot{x} or diff(x, t).", (0, 13)),
+    (
+        r"\frac{dx}{dt}",
+        "Leibniz notation is not supported; write \\dot{x}, diff(x, t) or \\frac{d}{dt}(x).",
+        (0, 13),
+    ),
     (
         r"\frac{d\theta}{dt}",
-        "Leibniz notation is not supported; write \\dot{\\theta} or diff(\\theta, t).",
+        "Leibniz notation is not supported; write \\dot{\\theta}, diff(\\theta, t) or "
+        "\\frac{d}{dt}(\\theta).",
         (0, 18),
+    ),
+    (
+        r"\frac{d}{dt}\theta^2",
+        "Write what \\frac{d}{dt} differentiates in round brackets, as in "
+        "\\frac{d}{dt}\\left(m r^2 \\dot{\\theta}\\right).",
+        (0, 12),
+    ),
+    (
+        r"\frac{d}{dt}\frac{1}{2} m \dot{x}^2",
+        "Write what \\frac{d}{dt} differentiates in round brackets, as in "
+        "\\frac{d}{dt}\\left(m r^2 \\dot{\\theta}\\right).",
+        (0, 12),
     ),
     (
         r"\partial L",

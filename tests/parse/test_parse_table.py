@@ -268,6 +268,42 @@ PLAIN = [
     ("ｍ ｇ", s.m * s.g),
     ("m\u00a0g", s.m * s.g),
     ("m\tg\n", s.m * s.g),
+    # total time derivatives: D_t on the jets (issue 25)
+    (
+        "d/dt(m r^2 theta_dot) = 0",
+        (2 * s.m * s.r * s.r_dot * s.theta_dot + s.m * s.r**2 * s.theta_ddot, 0),
+    ),
+    (
+        "diff(m r^2 theta_dot, t) = 0",
+        (2 * s.m * s.r * s.r_dot * s.theta_dot + s.m * s.r**2 * s.theta_ddot, 0),
+    ),
+    ("d/dt (m x_dot) + k x", s.m * s.x_ddot + s.k * s.x),
+    ("m d/dt(theta)", s.m * s.theta_dot),
+    ("d/dt(theta)", s.theta_dot),
+    ("d/dt(d/dt(x))", s.x_ddot),
+    ("d^2/dt^2(r^2)", 2 * s.r * s.r_ddot + 2 * s.r_dot**2),
+    (
+        "d²/dt²(l sin(theta))",
+        s.l * cos(s.theta) * s.theta_ddot - s.l * sin(s.theta) * s.theta_dot**2,
+    ),
+    ("diff(x^2, t, 2)", 2 * s.x * s.x_ddot + 2 * s.x_dot**2),
+    ("diff(theta(t)^2, t)", 2 * s.theta * s.theta_dot),
+    ("diff(sin(t), t)", cos(s.t)),  # a function of t, not a coordinate written theta(t)
+    (
+        "d/dt(1/2 m x_dot^2 + 1/2 k x^2)",
+        s.m * s.x_dot * s.x_ddot + s.k * s.x * s.x_dot,
+    ),
+    ("d/dt(t^2 + m)", 2 * s.t),
+    ("d/dt(abs(x))", sp.sign(s.x) * s.x_dot),
+    # Max and Min, any number of arguments from two
+    ("Max(m, g)", sp.Max(s.m, s.g)),
+    ("max(m, g, l)", sp.Max(s.m, s.g, s.l)),
+    ("Min(x, q) + min(theta, 0)", sp.Min(s.x, s.q) + sp.Min(s.theta, 0)),
+    ("2 Max(x^2, b)", 2 * sp.Max(s.x**2, s.b)),
+    # mixed numbers: 2¾ is 2 + 3/4, never 2·3/4
+    ("2¾ m", Rational(11, 4) * s.m),
+    ("1½", Rational(3, 2)),
+    ("m 2 ½", Rational(5, 2) * s.m),
 ]
 
 LATEX = [
@@ -324,6 +360,25 @@ LATEX = [
     (r"\left(m + M\right) g", (s.m + s.M) * s.g),
     (r"m g \sin{\alpha}", s.m * s.g * sin(s.alpha)),
     (r"\frac{m g \sin\alpha}{M + m}", s.m * s.g * sin(s.alpha) / (s.M + s.m)),
+    # total time derivatives
+    (
+        r"\frac{d}{dt}\left(m r^2 \dot\theta\right) = 0",
+        (2 * s.m * s.r * s.r_dot * s.theta_dot + s.m * s.r**2 * s.theta_ddot, 0),
+    ),
+    (r"\frac{d}{dt}(m \dot{x}) = -k x", (s.m * s.x_ddot, -s.k * s.x)),
+    (r"\dfrac{d}{dt}\left(\frac{1}{2} m \dot{x}^2\right)", s.m * s.x_dot * s.x_ddot),
+    (
+        r"\dot{\left(m r^2 \dot\theta\right)}",
+        2 * s.m * s.r * s.r_dot * s.theta_dot + s.m * s.r**2 * s.theta_ddot,
+    ),
+    (r"\ddot{(r^2)}", 2 * s.r * s.r_ddot + 2 * s.r_dot**2),
+    (r"\frac{d^2}{dt^2}(r^2)", 2 * s.r * s.r_ddot + 2 * s.r_dot**2),
+    # adjacent single letters multiply in LaTeX when every one is a declared name
+    (r"\frac{gMm}{R}", s.g * s.M * s.m / s.R),
+    (r"mgl\cos\theta", s.m * s.g * s.l * cos(s.theta)),
+    (r"\frac{1}{2}mR^2\dot\theta^2", half * s.m * s.R**2 * s.theta_dot**2),
+    (r"$mgm_1$", s.m * s.g * s.m_1),
+    (r"\max(m, g) + \min(x, q)", sp.Max(s.m, s.g) + sp.Min(s.x, s.q)),
 ]
 
 
@@ -533,3 +588,40 @@ def test_latex_echo_has_dots_and_cdots() -> None:
     text = parsed.latex()
     assert r"\dot{x}_{M}^{2}" in text and r"\ddot{x}_{M}" in text and r"\dot{\theta}" in text
     assert r"m \cdot" in text
+
+
+def test_a_mixed_number_is_a_sum_and_the_reading_is_said() -> None:
+    """2¾ on paper is 2 + 3/4; reading it as the product 2·¾ (what a juxtaposition would give)
+    would be a silent misread. The warning says how it was read."""
+    read = parse_answer("2¾ m g", VOCAB)
+    assert read.lhs == Rational(11, 4) * s.m * s.g
+    assert read.warnings == ("2¾ is read as the mixed number 2 + 3/4.",)
+    assert parse_answer("x½", VOCAB).lhs == s.x / 2  # after a name, ½ is still a factor
+
+
+def test_time_derivative_echo_reads_back_to_the_same_expression() -> None:
+    for text in ("d/dt(m r^2 theta_dot)", r"\dot{\left(m r^2 \dot\theta\right)}", "d^2/dt^2(x^2)"):
+        read = parse_answer(text, VOCAB)
+        assert read.echo.startswith("d")
+        assert parse_answer(read.echo, VOCAB).lhs == read.lhs
+
+
+def test_max_and_min_are_left_as_written_not_compared_by_sympy() -> None:
+    """sympy compares every pair of Max's arguments when it builds one (seconds for a dozen);
+    the parser leaves them unevaluated and the judge evaluates them itself."""
+    read = parse_answer("Max(m g l, k x^2, M)", VOCAB)
+    assert isinstance(read.lhs, sp.Max) and len(read.lhs.args) == 3
+
+
+def test_a_coordinate_named_vartheta_is_read_in_every_spelling() -> None:
+    """A handout that names its coordinate vartheta prints ϑ; a student types ϑ, θ, theta,
+    \\vartheta or \\theta — one letter in two shapes. Only a question that declares both keeps
+    them apart."""
+    only = Vocabulary.from_names(["vartheta"], {})
+    q = jet("vartheta")
+    for text in ("vartheta", "theta", "ϑ", "θ", r"\vartheta", r"\theta"):
+        assert parse_answer(text, only).lhs == q.q, text
+    assert parse_answer("ϑ̇ + thetaddot", only).lhs == q.dot + q.ddot
+    both = Vocabulary.from_names(["theta", "vartheta"], {})
+    assert parse_answer("ϑ - θ", both).lhs == jet("vartheta").q - jet("theta").q
+    assert parse_answer(r"\vartheta - \theta", both).lhs == jet("vartheta").q - jet("theta").q

@@ -2,8 +2,9 @@
 and never raises over a student's mistake (text that does not parse is `invalid`, with the
 parser's message; in a part of several lines an unreadable line is named and counts as a
 wrong one, and the part is `invalid` only when no line reads). Every command that judges a
-part (`check`, `check --batch`, `grade`, key verification, the demo) comes through
-`run_checker`.
+part (`check`, `check --batch`, `grade`, key verification, the answer page, PrairieLearn, the
+demo) comes through `run_checker` with the raw answer — a string, or the list of strings a sheet
+or request holds — and the checker splits and reads it (`items`, `reading`): the one door.
 
     dof             an integer: 3N − k
     coordinates     the generalized coordinates, by name

@@ -22,10 +22,9 @@ from lagrade.judge.parts.common import (
     where_text,
     witness_point,
 )
+from lagrade.judge.parts.items import list_items, without_none
 from lagrade.judge.parts.reading import (
-    NONE_WORDS,
     has_acceleration,
-    items_of,
     own_lagrangian,
     read_labelled,
     read_lines,
@@ -73,12 +72,7 @@ def _conservation(
 
 
 def check_conserved(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
-    items = (
-        []
-        if isinstance(answer, str) and answer.strip().lower() in NONE_WORDS
-        else items_of(answer, "conserved")
-    )
-    items = [i for i in items if not (isinstance(i, str) and i.strip().lower() in NONE_WORDS)]
+    items = without_none(list_items(answer, "conserved"))
     lines = read_lines(items, lambda item: read_labelled(problem, item))
     reads = lines.reads
     echoes = lines.echoes or ["none"]

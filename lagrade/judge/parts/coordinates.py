@@ -1,20 +1,32 @@
-"""The `coordinates` part: the problem's generalized coordinates, by name, in any order."""
+"""The `coordinates` part: the problem's generalized coordinates, by name, in any order and in any
+spelling the grammar reads (θ, \\theta and theta are one name)."""
 
 from __future__ import annotations
 
 from collections.abc import Mapping
 from typing import Any
 
+from lagrade.judge.parts.items import list_items
+from lagrade.judge.parts.reading import read_names
 from lagrade.judge.problem import Problem
 from lagrade.judge.verdict import Verdict
 
 
 def check_coordinates(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
-    """Exactly the problem's coordinates, separated by commas, semicolons or spaces."""
-    text = answer if isinstance(answer, str) else " ".join(map(str, answer))
-    named = [n for n in text.replace(";", ",").replace(",", " ").split() if n]
+    """Exactly the problem's coordinates, listed like any list (commas, semicolons, lines,
+    "and") or separated by spaces. A name the problem does not use is a wrong coordinate, not
+    an unreadable answer: another set of coordinates is a wrong answer to this question."""
     wanted = list(problem.coordinates)
-    if sorted(named) == sorted(wanted):
+    example = ", ".join(wanted)
+    expected = f"Name the generalized coordinates, separated by commas, as in {example}."
+    read = read_names(problem, list_items(answer, "coordinates"), expected)
+    named = [name.name for name in read]
+    right = [name.coordinate for name in read if name.coordinate is not None and name.order == 0]
+    if len(right) == len(named) and sorted(right) == sorted(wanted):
         return Verdict("coordinates", "correct", 1.0, (), ", ".join(named), "exact")
-    feedback = f"This problem uses {len(wanted)} generalized coordinates ({', '.join(wanted)})."
-    return Verdict("coordinates", "incorrect", 0.0, (feedback,), ", ".join(named), "exact")
+    feedback = [f"This problem uses {len(wanted)} generalized coordinates ({example})."]
+    velocities = [name.name for name in read if name.coordinate is not None and name.order > 0]
+    if velocities:
+        shown = ", ".join(velocities)
+        feedback.append(f"A coordinate's velocity or acceleration is not a coordinate ({shown}).")
+    return Verdict("coordinates", "incorrect", 0.0, tuple(feedback), ", ".join(named), "exact")

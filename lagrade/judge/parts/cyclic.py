@@ -2,48 +2,39 @@
 
 from __future__ import annotations
 
-import re
 from collections.abc import Mapping
 from typing import Any
 
 import sympy as sp
 
 from lagrade.errors import ParseError
-from lagrade.judge.parts.reading import NONE_WORDS, items_of, own_lagrangian, read
+from lagrade.judge.parts.items import list_items, without_none
+from lagrade.judge.parts.reading import own_lagrangian, read_names
 from lagrade.judge.problem import Problem
 from lagrade.judge.verdict import Verdict
 from lagrade.notation.printer import plain
 
 
 def check_cyclic(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
-    items = (
-        items_of(answer, "cyclic")
-        if not isinstance(answer, str)
-        else re.split(r"\s*(?:,|;|\band\b)\s*", answer.strip())
-    )
+    """The coordinates named (in any spelling, separated as any list) against ∂L/∂q = 0; a
+    velocity named for its coordinate is half wrong, a name that is no coordinate unreadable."""
+    hint = f"Name the cyclic coordinates, e.g. {problem.coordinates[0]}; or write none."
+    read = read_names(problem, without_none(list_items(answer, "cyclic")), hint)
     names: list[str] = []
     echoes: list[str] = []
     velocity_named = []
-    coords = {j.q: j.name for j in problem.jets}
-    velocities = {j.dot: j.name for j in problem.jets}
-    for item in items:
-        if isinstance(item, str) and item.strip().lower() in NONE_WORDS:
-            continue
-        got = read(problem, item, (), "expression")
-        echoes.append(got.echo)
-        sym = got.expr
-        if sym in coords:
-            names.append(coords[sym])
-        elif sym in velocities:
-            velocity_named.append(velocities[sym])
-            names.append(velocities[sym])
-        else:
-            text = item if isinstance(item, str) else str(item)
+    for name in read:
+        if name.coordinate is None or name.order > 1:
+            what = f"'{name.name}' is not a coordinate of this problem"
             raise ParseError(
-                f"Name the cyclic coordinates, e.g. {problem.coordinates[0]}; or write none.",
-                (0, len(text)),
-                text,
+                f"{what} (coordinates: {', '.join(problem.coordinates)}). {hint}",
+                name.span,
+                name.source,
             )
+        echoes.append(name.name)
+        names.append(name.coordinate)
+        if name.order == 1:
+            velocity_named.append(name.coordinate)
     claimed = set(names)
     L = sp.expand(problem.system.L)
     truth = set(problem.system.cyclic_coordinates)

@@ -7,6 +7,7 @@ from collections.abc import Mapping
 from typing import Any
 
 import lagrade.untrusted as untrusted
+from lagrade.judge.parts.items import single_text
 from lagrade.judge.problem import Problem
 from lagrade.judge.verdict import Verdict, invalid
 
@@ -15,7 +16,9 @@ MAX_DIGITS = 30
 
 
 def check_dof(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
-    text = str(answer).strip() if not isinstance(answer, list) else ""
+    if not isinstance(answer, int):
+        answer = single_text(answer, "dof")
+    text = str(answer).strip()
     if isinstance(answer, bool) or not (isinstance(answer, int) or re.fullmatch(r"[+-]?\d+", text)):
         return invalid(
             "dof", "Write the number of degrees of freedom as a whole number, e.g. 2.", text

@@ -18,29 +18,18 @@ from lagrade.judge.parts.common import (
     where_text,
     witness_point,
 )
-from lagrade.judge.parts.reading import (
-    Read,
-    items_of,
-    own_lagrangian,
-    read,
-    read_lines,
-    read_parsed,
-)
-from lagrade.judge.problem import Problem, parser
+from lagrade.judge.parts.items import list_items
+from lagrade.judge.parts.reading import Read, own_lagrangian, read, read_lines
+from lagrade.judge.problem import Problem
 from lagrade.judge.rows import equation_rows, in_span, lagrangian_rows, row_rank
 from lagrade.judge.verdict import Verdict, invalid
 
 
 def check_eom(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
-    def read_line(item: Any) -> Read | list[Read]:
-        if isinstance(item, str):
-            return [
-                read_parsed(problem, parsed)
-                for parsed in parser().parse_equations(item, problem.vocabulary())
-            ]
-        return read(problem, item)
+    def read_line(item: Any) -> Read:
+        return read(problem, item, (), "equation" if isinstance(item, str) else "answer")
 
-    lines = read_lines(items_of(answer, "eom"), read_line)
+    lines = read_lines(list_items(answer, "eom"), read_line)
     reads = lines.reads
     echoes = lines.echoes
     entry = [k for k, e in enumerate(lines.entries) if isinstance(e, Read)]  # read → position

@@ -19,10 +19,10 @@ from lagrade.judge.parts.common import (
     where_text,
     witness_point,
 )
+from lagrade.judge.parts.items import list_items
 from lagrade.judge.parts.reading import (
     Read,
     Unreadable,
-    items_of,
     line_label,
     own_lagrangian,
     read,
@@ -35,7 +35,7 @@ from lagrade.judge.verdict import Verdict, invalid
 def check_momenta(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
     jets = problem.jets
     labels = [f"p_{j.name}" for j in jets]
-    items = items_of(answer, "momenta")
+    items = list_items(answer, "momenta")
 
     def read_line(item: Any) -> Read:
         got = read(problem, item, labels)

@@ -1,6 +1,6 @@
-"""Reading a part's answer: items of a list answer, each parsed by the project parser in the
-question's vocabulary, labels (`p_x = …`, `L = …`) dropped, and the student's own L for
-follow-through."""
+"""Reading a part's answer: the items `lagrade.judge.parts.items` split it into, each parsed by
+the project parser in the question's vocabulary, labels (`p_x = …`, `L = …`) dropped, lists of
+names read in any spelling, and the student's own L for follow-through."""
 
 from __future__ import annotations
 
@@ -15,8 +15,9 @@ import sympy as sp
 
 from lagrade.errors import ParseError, RequestError
 from lagrade.judge.compiled import Compiled
+from lagrade.judge.parts.items import single_text
 from lagrade.judge.problem import Problem, parser
-from lagrade.notation.parse import split_equations
+from lagrade.notation.parse import NameRead
 from lagrade.notation.printer import plain
 
 
@@ -31,14 +32,6 @@ class Read:
     @property
     def expr(self) -> sp.Expr:
         return self.lhs if self.rhs is None else self.lhs - self.rhs
-
-
-def items_of(answer: Any, part: str) -> list[Any]:
-    if isinstance(answer, str | sp.Basic):
-        return [answer]
-    if isinstance(answer, Sequence) and not isinstance(answer, str | bytes):
-        return list(answer)
-    raise RequestError(f"the answer to {part!r} must be a string or a list of strings")
 
 
 @dataclass(frozen=True)
@@ -80,11 +73,12 @@ class Lines:
 
 
 def read_lines(items: Sequence[Any], reader: Callable[[Any], Read | list[Read]]) -> Lines:
-    """The one place a list of answer lines is parsed: each line by `reader`, a line that does
-    not parse set aside as Unreadable so that the others are still judged. When no line reads
-    at all, the parser's error is raised (the part is `invalid`, as for a one-line answer)."""
+    """The one place a list of answer lines is parsed: each item (`items.list_items`) by
+    `reader`, a line that does not parse set aside as Unreadable so that the others are still
+    judged. When no line reads at all, the parser's error is raised (the part is `invalid`, as
+    for a one-line answer)."""
     entries: list[Read | Unreadable] = []
-    for item in _pieces(items):
+    for item in items:
         try:
             got = reader(item)
         except ParseError as error:
@@ -98,16 +92,6 @@ def read_lines(items: Sequence[Any], reader: Callable[[Any], Read | list[Read]])
             raise bad[0].error
         raise ParseError("No line of this answer can be read.\n" + "\n".join(lines.feedback()))
     return lines
-
-
-def _pieces(items: Sequence[Any]) -> list[Any]:
-    """Each item split where the parser splits equations (newline, ';', LaTeX '\\\\'), so that
-    one unreadable equation in `a = 0; b +* 2 = 0` does not hide the one that reads."""
-    return [
-        piece
-        for item in items
-        for piece in (split_equations(item) if isinstance(item, str) else [item])
-    ]
 
 
 def line_label(text: str) -> str | None:
@@ -133,7 +117,26 @@ def read(problem: Problem, item: Any, labels: Sequence[str] = (), mode: str = "a
         "equation": p.parse_equation,
         "expression": p.parse_expression,
     }
-    return read_parsed(problem, parse[mode](item, vocab))
+    return read_parsed(problem, parse[mode](item, vocab, latex=getattr(item, "latex", None)))
+
+
+def read_names(problem: Problem, items: Sequence[Any], expected: str) -> list[NameRead]:
+    """The names a list answer gives (coordinates, cyclic coordinates), each in any spelling the
+    grammar reads (θ, \\theta, theta; θ₁, theta1, theta_1; θ̇, thetadot), through the parser's
+    own lexicon. A name the question does not know is returned without a symbol; an item that
+    is not names fails with `expected`."""
+    names: list[NameRead] = []
+    for item in items:
+        if isinstance(item, sp.Symbol):  # from Python callers and tests, never student text
+            text = item.name
+        elif isinstance(item, str):
+            text = item
+        else:
+            raise RequestError(f"an answer item must be a string, got {type(item).__name__}")
+        names += parser().read_names(
+            text, problem.vocabulary(), latex=getattr(item, "latex", None), expected=expected
+        )
+    return names
 
 
 _notes: ContextVar[list[str] | None] = ContextVar("reading_notes", default=None)
@@ -190,10 +193,8 @@ def not_labelled(item: Any) -> ParseError:
 
 
 def read_single(problem: Problem, answer: Any, part: str, label: str) -> Read:
-    items = items_of(answer, part)
-    if len(items) != 1:
-        raise RequestError(f"the answer to {part!r} is a single expression")
-    return read_labelled(problem, items[0], (label,))
+    """The answer of a one-expression part (`items.single_text`), `label = …` allowed."""
+    return read_labelled(problem, single_text(answer, part), (label,))
 
 
 def own_lagrangian(problem: Problem, given: Mapping | None) -> sp.Expr | None:
@@ -202,13 +203,10 @@ def own_lagrangian(problem: Problem, given: Mapping | None) -> sp.Expr | None:
         return None
     try:
         with reading_notes():  # the notes belong to the lagrangian part, not to this one
-            expr = read_labelled(problem, given["lagrangian"], ("L",)).expr
+            expr = read_single(problem, given["lagrangian"], "lagrangian", "L").expr
     except (ParseError, RequestError):
         return None
     return None if has_acceleration(problem, expr) else expr
-
-
-NONE_WORDS = {"none", "no", "-", "", "∅", "nothing"}
 
 
 def has_acceleration(problem: Problem, expr: sp.Expr | Compiled) -> bool:

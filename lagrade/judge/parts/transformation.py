@@ -19,7 +19,8 @@ from lagrade.judge.parts.common import (
     where_text,
     witness_point,
 )
-from lagrade.judge.parts.reading import Read, items_of, read, read_lines
+from lagrade.judge.parts.items import list_items
+from lagrade.judge.parts.reading import Read, read, read_lines
 from lagrade.judge.problem import NEEDS_BODIES, Problem
 from lagrade.judge.rows import row_rank
 from lagrade.judge.sampling import Points
@@ -48,7 +49,7 @@ def check_transformation(problem: Problem, answer: Any, given: Mapping | None) -
             )
         return got
 
-    lines = read_lines(items_of(answer, "transformation"), read_line)
+    lines = read_lines(list_items(answer, "transformation"), read_line)
     echoes = lines.echoes
     unread = lines.feedback()  # an unreadable line counts as wrong: its coordinate is not given
     for got in lines.reads:
