@@ -1,7 +1,10 @@
 """Exact equivalence of expressions that are rational functions of their symbols and of sin, cos,
 tan (and cot, sec, csc) of integer combinations of them: exact rational arithmetic at random
 rational points, no rounding anywhere. The first stage of the default method
-(`lagrade.judge.adaptive.ExactThenAdaptive`); None for anything outside that class.
+(`lagrade.judge.adaptive.ExactThenAdaptive`); None for anything outside that class, and for a
+pair whose exact evaluation would cost too much (`MAX_TRIG_DEGREE`, `MAX_EXACT_WORK`): exact
+numbers grow with every power and every multiple of a trig argument, and a right answer must
+never run out of time here; the high-precision stage decides such pairs as surely.
 """
 
 from __future__ import annotations
@@ -34,6 +37,15 @@ _TRIG = (sp.sin, sp.cos, sp.tan, sp.cot, sp.sec, sp.csc)
 #: The highest power the exact test raises a random rational to (53-bit points: the result has
 #: up to 53 × n bits); higher powers go to the adaptive test, whose mpmath has no such cost.
 MAX_EXACT_POWER = 2_000
+#: The highest multiple n of a trig argument once every symbol is scaled to its unit: sin(n y)
+#: expands into a polynomial of degree n in sin y and cos y, and its exact value at a rational
+#: point into numbers of some 200 n bits (sin(10^6 t), sin(x/1000 + x/999) = sin(1999 y): none
+#: of that is computed; the high-precision stage takes the pair).
+MAX_TRIG_DEGREE = 48
+#: The estimated work of evaluating the pair once at a rational point (`exact_work`), in units
+#: of about 0.1 ns on this machine's 2 cores: 3·10^8 is some 30 ms per point. Above it the pair
+#: goes to the high-precision stage, which has no such growth.
+MAX_EXACT_WORK = 3e7
 
 
 class _OutOfScope(Exception):
@@ -165,13 +177,18 @@ def _flatten_monomials(answer: sp.Expr, reference: sp.Expr) -> tuple[sp.Expr, sp
 
 
 def _weierstrass_ready(answer: sp.Expr, reference: sp.Expr) -> tuple[sp.Expr, sp.Expr]:
-    """Both expressions with trig arguments reduced to single symbols (x = L·y, expand_trig)."""
+    """Both expressions with trig arguments reduced to single symbols (x = L·y, expand_trig).
+    _OutOfScope when an argument is a multiple beyond `MAX_TRIG_DEGREE` (checked before
+    expand_trig, whose own work grows with it)."""
     answer, reference = _flatten_monomials(answer, reference)
     units = _trig_units((answer, reference))
     scale = {s: units[s] * sp.Dummy(s.name, real=True) for s in units if units[s] != 1}
+    scaled = [e.xreplace(scale) if scale else e for e in (answer, reference)]
+    degree = _trig_degree(scaled)
+    if degree > MAX_TRIG_DEGREE:
+        raise _OutOfScope(f"a trig argument {degree} times a symbol: too costly exactly")
     out = []
-    for e in (answer, reference):
-        e = e.xreplace(scale) if scale else e
+    for e in scaled:
         if not e.atoms(*_TRIG):  # a rational function already (π passed only inside trig)
             out.append(e)
             continue
@@ -184,6 +201,84 @@ def _weierstrass_ready(answer: sp.Expr, reference: sp.Expr) -> tuple[sp.Expr, sp
         out.append(e)
     # Symbols scaled by L keep their domain through the original symbol (see _exact_compare).
     return out[0], out[1]
+
+
+def _trig_degree(exprs: Iterable[sp.Expr]) -> int:
+    """The largest Σ |n_i| over trig arguments Σ n_i y_i (+ r π) with integer n_i: the degree
+    of the polynomial in sin y_i, cos y_i that expand_trig makes of them."""
+    degree = 0
+    for e in exprs:
+        for f in e.atoms(*_TRIG):
+            total = 0
+            for term in sp.Add.make_args(f.args[0]):
+                coeff, rest = term.as_coeff_Mul()
+                if rest.free_symbols:
+                    total += abs(coeff)
+            degree = max(degree, total)
+    return int(math.ceil(degree))
+
+
+def exact_work(program: ev.Program, bits: Mapping[sp.Basic, tuple[int, int]]) -> float:
+    """An estimate of the work of running `program` once on Fractions, from the bits of each
+    input's numerator and denominator (`bits`), in 30-bit digits: a product or a sum of
+    fractions normalises by gcd, quadratic in their digits; a power is repeated squaring,
+    Karatsuba's n^1.585, without gcd. A denominator is followed as the product of the factors
+    it is made of, so that a sum over a common denominator (a polynomial's terms) stays the
+    size of its terms while a sum of 1/(x + k)^50 over k grows with every term, as the exact
+    numbers do."""
+    sizes: list[tuple[int, dict]] = []
+    work = 0.0
+    for k, instr in enumerate(program.code):
+        op = instr[0]
+        if op == "in":  # a float read exactly: its denominator is a power of two
+            num, den = bits.get(instr[1], (64, 64))
+            size = (num, {"two": den})
+        elif op == "const":
+            value = instr[1]
+            num, q = (
+                (abs(int(value.p)), int(value.q))
+                if isinstance(value, sp.Rational)
+                else (2**64, 2**64)
+            )
+            size = (num.bit_length(), {("const", q): q.bit_length()} if q != 1 else {})
+        elif op in ("add", "mul"):
+            num, den = sizes[instr[1][0]]
+            for j in instr[1][1:]:
+                n, d = sizes[j]
+                if op == "mul":
+                    num, den = num + n, _merged(den, d, lambda a, b: a + b)
+                else:  # over the lcm of the denominators
+                    both = _merged(den, d, max)
+                    total = sum(both.values())
+                    num, den = max(num - sum(den.values()), n - sum(d.values())) + total + 1, both
+                work += ((num + sum(den.values())) / 30) ** 2
+            size = (num, den)
+        elif op == "powi":
+            num, den = sizes[instr[1]]
+            e = abs(instr[2])
+            if instr[2] >= 0:
+                size = (num * e, {f: b * e for f, b in den.items()})
+            else:  # the base's numerator becomes a denominator of its own
+                size = (sum(den.values()) * e, {k: num * e})
+            work += 3 * ((size[0] + sum(size[1].values())) / 30) ** 1.585
+        else:  # never reached: such programs are out of scope
+            size = (64, {k: 64})
+        sizes.append(size)
+    return work
+
+
+def _merged(a: dict, b: dict, combine) -> dict:
+    out = dict(a)
+    for key, value in b.items():
+        out[key] = combine(out[key], value) if key in out else value
+    return out
+
+
+def _fraction_bits(lo: float, hi: float) -> tuple[int, int]:
+    """Bits of the numerator and denominator of a float drawn in (lo, hi), read exactly: a
+    53-bit mantissa over 2^(53 − e) for a binary exponent e below 53, an integer above."""
+    e = math.frexp(max(abs(lo), abs(hi), 1e-300))[1]
+    return (max(53, e), max(0, 53 - e))
 
 
 def _exact_compare(
@@ -210,9 +305,15 @@ def _exact_compare(
         return None
     if any(op[0] not in _RATIONAL_OPS for op in program.code):
         return None
-    alone: list[ev.Program] = []  # each side on its own, for a point where one is undefined
     ranges = [(s, _domain_of(s, domains).sample_range()) for s in symbols]
     half_tan = [(y, _half_tan_range(*_domain_of(y, domains).sample_range())) for y in trig_syms]
+    bits = {s: _fraction_bits(lo, hi) for s, (lo, hi) in ranges}
+    for y, (lo, hi) in half_tan:  # sin y = 2u/(1 + u²): twice the bits of u, and a few
+        u_num, u_den = _fraction_bits(lo, hi)
+        bits |= {stand_in[f(y)]: (2 * (u_num + u_den) + 2,) * 2 for f in _TRIG}
+    if exact_work(program, bits) > MAX_EXACT_WORK:
+        return None  # the high-precision stage decides this pair as surely, in bounded time
+    alone: list[ev.Program] = []  # each side on its own, for a point where one is undefined
     done = 0
     for _ in range(points * 4):
         env: dict[sp.Basic, Fraction] = {}
