@@ -190,8 +190,13 @@ def method_name(*outcomes: Outcome) -> str:
 
 
 def ratio_text(c: float) -> str:
-    f = Fraction(c).limit_denominator(1000)
-    return str(f) if abs(float(f) - c) <= 1e-9 * max(1, abs(c)) else f"{c:.6g}"
+    """A factor as a student reads it: a simple fraction (2, 1/2, 3/2) when c is one, else six
+    significant digits (1e+40, never the float's 40 digits of rounding, nor 0 for 1e-40)."""
+    if 1e-6 <= abs(c) <= 1e6:
+        f = Fraction(c).limit_denominator(1000)
+        if abs(float(f) - c) <= 1e-9 * abs(c):
+            return str(f)
+    return f"{c:.6g}"
 
 
 def reference_el(problem: Problem, points: Points):
