@@ -181,12 +181,23 @@ class Problem:
         cache = self.__dict__.setdefault("_points", {})
         if part not in cache:
             free = frozenset(self.domains)
-            cache[part] = self.space.draw(seed_for(self.key, part), free, self._validity(part))
+            points = self.space.draw(seed_for(self.key, part), free, self._validity(part))
+            if self._judged_in_complex(part):
+                points.complex_values = self.imaginary_unit is not None or not bool(
+                    finite_mask([self.reference_expression])(points.env).all()
+                )
+            cache[part] = points
         return cache[part]
 
+    def _judged_in_complex(self, part: str) -> bool:
+        """An expression is compared on principal branches in complex arithmetic: a complex
+        value of the reference is a value (docs/formats.md), so its points are drawn where it
+        has one, real or complex. Mechanics (L, its equations, momenta) is real."""
+        return self.kind == "expression" or part == "expression"
+
     def _validity(self, part: str):
-        if self.kind == "expression" or part == "expression":
-            return finite_mask([self.reference_expression])
+        if self._judged_in_complex(part):
+            return finite_mask([self.reference_expression], complex_values=True)
         if part == "transformation":
             return finite_mask([Compiled.of(x) for x in self.variant.transformation.values()])
         refs = [self.L, *self.euler_lagrange]

@@ -7,6 +7,7 @@ import re
 from collections.abc import Mapping
 from fractions import Fraction
 
+import mpmath
 import numpy as np
 import sympy as sp
 
@@ -14,7 +15,7 @@ from lagrade.errors import UnsupportedExpression
 from lagrade.judge.compiled import Compiled
 from lagrade.judge.decision import Outcome
 from lagrade.judge.derivatives import euler_lagrange_values
-from lagrade.judge.evaluate import FLOAT
+from lagrade.judge.evaluate import FLOAT, MP, MP_DIGITS
 from lagrade.judge.mutations import Mutant
 from lagrade.judge.parts.reading import Read
 from lagrade.judge.problem import Problem
@@ -99,6 +100,21 @@ def _shown_pair(mine: float, theirs: float) -> tuple[str, str] | None:
     return shown if shown[0] != shown[1] else None
 
 
+def _value_at(expr: Compiled, env: Mapping) -> complex | float:
+    """expr's value at a one-point env; in high precision when float64 has none there (an
+    intermediate past float range: M^20/m^19 of SI masses), as a float when it fits one."""
+    value = np.ravel(expr.values(env)[0])[0]
+    if np.isfinite(value):
+        return value
+    with mpmath.workdps(MP_DIGITS):
+        mp_env = {s: MP.array(v) for s, v in env.items()}
+        try:
+            exact = np.ravel(expr.values(mp_env, MP)[0])[0]
+            return float(exact) if mpmath.isfinite(exact) else np.nan
+        except (ZeroDivisionError, ValueError, OverflowError, TypeError):
+            return np.nan
+
+
 def values_text(
     problem: Problem, points: Points, outcome: Outcome, answer: Compiled, reference: Compiled,
     what: str, unit: str = "",
@@ -112,8 +128,7 @@ def values_text(
         return ""
     try:
         with np.errstate(all="ignore"):
-            mine = np.ravel(answer.values(env)[0])[0]
-            theirs = np.ravel(reference.values(env)[0])[0]
+            mine, theirs = (_value_at(e, env) for e in (answer, reference))
     except UnsupportedExpression:  # a symbol without a value here: say nothing, never guess
         return ""
     if np.iscomplexobj(mine) or np.iscomplexobj(theirs):  # rounded reals only
