@@ -121,6 +121,12 @@ def in_span(student: Rows, reference: Rows, k: int, backend=FLOAT) -> tuple[np.n
     return r, s
 
 
+def outside_span(x: np.ndarray, size: np.ndarray, reference: Rows):
+    """The part of rows x (points, n + 1) outside the span of the reference rows, and its size,
+    per point, in float64 (`in_span` for rows given as arrays)."""
+    return _in_span_float(x, size, reference.coef.astype(float), reference.size.astype(float))
+
+
 def _in_span_float(x: np.ndarray, size: np.ndarray, R: np.ndarray, R_size: np.ndarray):
     """in_span for all points at once: x (points, n+1), R (points, m, n+1)."""
     with np.errstate(all="ignore"):
