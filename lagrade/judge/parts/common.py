@@ -15,6 +15,7 @@ from lagrade.errors import UnsupportedExpression
 from lagrade.judge.compiled import Compiled
 from lagrade.judge.decision import Outcome
 from lagrade.judge.derivatives import euler_lagrange_values
+from lagrade.judge.dimensions import hint_for
 from lagrade.judge.evaluate import FLOAT, MP, MP_DIGITS
 from lagrade.judge.mutations import Mutant
 from lagrade.judge.parts.reading import Read
@@ -248,8 +249,10 @@ def incorrect(
     then what is wrong, with a point where it shows."""
     feedback = [as_sentence(mutant.message)] if mutant is not None else []
     feedback.append(sentence + where_text(witness, problem, values) + ".")
-    hint = handout_numbers(problem, got) if problem is not None else ""
-    feedback += [hint] if hint else []
+    if problem is not None:
+        expected = {"T": "kinetic", "V": "energy"}.get(part, "")
+        hints = [handout_numbers(problem, got), hint_for(problem, got.expr, expected)]
+        feedback += [hint for hint in hints if hint]
     mistakes = (mutant.kind,) if mutant is not None else ()
     return Verdict(
         part,
