@@ -92,17 +92,25 @@ def _is_linear(arg: sp.Expr) -> bool:
     return True
 
 
-def _trig_units(exprs: Iterable[sp.Expr]) -> dict[sp.Symbol, int]:
+def _trig_units(exprs: Iterable[sp.Expr]) -> tuple[dict[sp.Symbol, int], int]:
     """For each symbol inside a trig argument, the lcm of the denominators of its coefficients
-    there: with x = L·y every argument becomes an integer combination of the y's."""
+    there: with x = L·y every argument becomes an integer combination Σ n_i y_i of the y's; and
+    the largest Σ |n_i| over the arguments, the degree of the polynomial in sin y_i, cos y_i
+    that expand_trig makes of them (read in the same pass, before anything is expanded)."""
     units: dict[sp.Symbol, int] = {}
+    arguments: list[dict[sp.Symbol, sp.Rational]] = []
     for e in exprs:
         for f in e.atoms(*_TRIG):
             arg = f.args[0]
-            for s in arg.free_symbols:
-                q = sp.Rational(arg.coeff(s)).q
-                units[s] = math.lcm(units.get(s, 1), int(q))
-    return units
+            coefficients = {s: sp.Rational(arg.coeff(s)) for s in arg.free_symbols}
+            arguments.append(coefficients)
+            for s, c in coefficients.items():
+                units[s] = math.lcm(units.get(s, 1), int(c.q))
+    degree = max(
+        (sum(abs(c) * units[s] for s, c in coefficients.items()) for coefficients in arguments),
+        default=0,
+    )
+    return units, int(math.ceil(degree))
 
 
 def _pi_free(expr: sp.Expr) -> bool:
@@ -181,12 +189,11 @@ def _weierstrass_ready(answer: sp.Expr, reference: sp.Expr) -> tuple[sp.Expr, sp
     _OutOfScope when an argument is a multiple beyond `MAX_TRIG_DEGREE` (checked before
     expand_trig, whose own work grows with it)."""
     answer, reference = _flatten_monomials(answer, reference)
-    units = _trig_units((answer, reference))
-    scale = {s: units[s] * sp.Dummy(s.name, real=True) for s in units if units[s] != 1}
-    scaled = [e.xreplace(scale) if scale else e for e in (answer, reference)]
-    degree = _trig_degree(scaled)
+    units, degree = _trig_units((answer, reference))
     if degree > MAX_TRIG_DEGREE:
         raise _OutOfScope(f"a trig argument {degree} times a symbol: too costly exactly")
+    scale = {s: units[s] * sp.Dummy(s.name, real=True) for s in units if units[s] != 1}
+    scaled = [e.xreplace(scale) if scale else e for e in (answer, reference)]
     out = []
     for e in scaled:
         if not e.atoms(*_TRIG):  # a rational function already (π passed only inside trig)
@@ -203,21 +210,6 @@ def _weierstrass_ready(answer: sp.Expr, reference: sp.Expr) -> tuple[sp.Expr, sp
     return out[0], out[1]
 
 
-def _trig_degree(exprs: Iterable[sp.Expr]) -> int:
-    """The largest Σ |n_i| over trig arguments Σ n_i y_i (+ r π) with integer n_i: the degree
-    of the polynomial in sin y_i, cos y_i that expand_trig makes of them."""
-    degree = 0
-    for e in exprs:
-        for f in e.atoms(*_TRIG):
-            total = 0
-            for term in sp.Add.make_args(f.args[0]):
-                coeff, rest = term.as_coeff_Mul()
-                if rest.free_symbols:
-                    total += abs(coeff)
-            degree = max(degree, total)
-    return int(math.ceil(degree))
-
-
 def exact_work(program: ev.Program, bits: Mapping[sp.Basic, tuple[int, int]]) -> float:
     """An estimate of the work of running `program` once on Fractions, from the bits of each
     input's numerator and denominator (`bits`), in 30-bit digits: a product or a sum of
@@ -226,6 +218,8 @@ def exact_work(program: ev.Program, bits: Mapping[sp.Basic, tuple[int, int]]) ->
     it is made of, so that a sum over a common denominator (a polynomial's terms) stays the
     size of its terms while a sum of 1/(x + k)^50 over k grows with every term, as the exact
     numbers do."""
+    if _small(program, bits):
+        return 0.0
     sizes: list[tuple[int, dict]] = []
     work = 0.0
     for k, instr in enumerate(program.code):
@@ -265,6 +259,39 @@ def exact_work(program: ev.Program, bits: Mapping[sp.Basic, tuple[int, int]]) ->
             size = (64, {k: 64})
         sizes.append(size)
     return work
+
+
+def _small(program: ev.Program, bits: Mapping[sp.Basic, tuple[int, int]]) -> bool:
+    """A quick bound that settles most pairs: every number's bits taken as their worst
+    (denominators multiplied out in every sum), and still no instruction's work could bring the
+    whole program near `MAX_EXACT_WORK`."""
+    sizes: list[int] = []
+    for instr in program.code:
+        op = instr[0]
+        if op == "in":
+            size = sum(bits.get(instr[1], (64, 64)))
+        elif op == "const":
+            value = instr[1]
+            size = (
+                int(abs(value.p)).bit_length() + int(value.q).bit_length()
+                if isinstance(value, sp.Rational)
+                else 128
+            )
+        elif op in ("add", "mul"):
+            size = sum(sizes[k] for k in instr[1]) + len(instr[1])
+        elif op == "powi":
+            size = sizes[instr[1]] * abs(instr[2])
+        else:
+            size = 128
+        if size > _SMALL_BITS:
+            return False
+        sizes.append(size)
+    return len(sizes) * (_SMALL_BITS / 30) ** 2 <= MAX_EXACT_WORK
+
+
+#: The bits below which the quick bound of `_small` settles a program of a few hundred
+#: instructions as cheap.
+_SMALL_BITS = 3_000
 
 
 def _merged(a: dict, b: dict, combine) -> dict:
