@@ -57,7 +57,8 @@ def has_imaginary_unit(program: ev.Program) -> bool:
 def _as_array(values, n: int) -> np.ndarray:
     """Values as an array of length n, complex ones kept."""
     out = np.asarray(values)
-    out = out if np.iscomplexobj(out) else out.astype(float)
+    if out.dtype != float and not np.iscomplexobj(out):
+        out = out.astype(float)
     return np.broadcast_to(out, (n,)) if out.ndim == 0 else out
 
 

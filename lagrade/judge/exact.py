@@ -321,7 +321,10 @@ def _exact_compare(
     placeholder set from the half-angle tangent u, the pair is compiled once by the project's
     evaluator (`pair`, when given, is a and b compiled already) and run on Fractions: no sympy
     arithmetic per point."""
-    symbols = sorted_symbols(a, b)
+    if pair is not None and not trig:  # its symbols are the pair's, found when it was compiled
+        symbols = sorted(pair.symbols, key=lambda s: s.name)
+    else:
+        symbols = sorted_symbols(a, b)
     atoms = [f for e in (a, b) for f in e.atoms(*_TRIG)] if trig else []
     trig_syms = sorted({f.args[0] for f in atoms}, key=str)
     stand_in = {f(y): sp.Dummy(f"{f.__name__}_{y}") for y in trig_syms for f in _TRIG}
