@@ -434,11 +434,15 @@ class Catalogue:
         `mutants`, the earliest of equals (the catalogue's order puts the most specific first);
         None without one. Reading stops at a candidate that changes one term: none beats it."""
         best, fewest = None, None
+        counted = self.__dict__.setdefault("_changes", {})  # a mutant's count, once
 
         def consider(stack: Stack | None) -> bool:
             nonlocal best, fewest
             for candidate in found_in(stack) if stack is not None else ():
-                n = changes(candidate)
+                key = (name, id(candidate[1] if isinstance(candidate, tuple) else candidate))
+                if key not in counted:
+                    counted[key] = changes(candidate)
+                n = counted[key]
                 if fewest is None or n < fewest:
                     best, fewest = candidate, n
             return fewest == 1

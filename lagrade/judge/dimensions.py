@@ -26,15 +26,16 @@ from lagrade.mechanics.lagrange import LagrangianSystem, t
 from lagrade.mechanics.scene import RigidBody, SceneVariant
 from lagrade.notation.printer import plain
 
-#: A dimension: exponents of metre, kilogram, second and ampere.
-Dim = tuple[Fraction, Fraction, Fraction, Fraction]
+#: A dimension: exponents of metre, kilogram, second and ampere, in twelfths (whole numbers,
+#: so that comparing and adding them is cheap; a square or cube root of a unit is whole too).
+Dim = tuple[int, int, int, int]
+_PARTS = 12
 
-_ZERO = Fraction(0)
-NONE: Dim = (_ZERO,) * 4
+NONE: Dim = (0, 0, 0, 0)
 
 
 def _dim(m: int = 0, kg: int = 0, s: int = 0, a: int = 0) -> Dim:
-    return (Fraction(m), Fraction(kg), Fraction(s), Fraction(a))
+    return (_PARTS * m, _PARTS * kg, _PARTS * s, _PARTS * a)
 
 
 LENGTH, MASS, TIME = _dim(m=1), _dim(kg=1), _dim(s=1)
@@ -58,17 +59,21 @@ NAMES: dict[Dim, str] = {
 }  # fmt: skip
 
 
-def _add(a: Dim, b: Dim, k: Fraction = Fraction(1)) -> Dim:
-    return tuple(x + k * y for x, y in zip(a, b, strict=True))  # type: ignore[return-value]
+def _add(a: Dim, b: Dim, k: int = 1) -> Dim:
+    return (a[0] + k * b[0], a[1] + k * b[1], a[2] + k * b[2], a[3] + k * b[3])
 
 
-def _scale(a: Dim, k: Fraction) -> Dim:
-    return tuple(k * x for x in a)  # type: ignore[return-value]
+def _scale(a: Dim, k: Fraction) -> Dim | None:
+    """a·k, or None when that is no whole number of twelfths (an unusual root: unknown)."""
+    scaled = [x * k for x in a]
+    if any(x.denominator != 1 for x in scaled):
+        return None
+    return tuple(int(x) for x in scaled)  # type: ignore[return-value]
 
 
 # --- reading a unit ---------------------------------------------------------------------------
 
-_TOKEN = re.compile(r"\s*(?:([A-Za-z]+|1)|(\^|\*\*)|([-+]?\d+(?:/\d+)?)|([*·/()]))")
+_TOKEN = re.compile(r"\s*(?:([-+]?\d+(?:/\d+)?)|([A-Za-z]+)|(\^|\*\*)|([*·/()]))")
 
 
 def read_unit(text: str) -> Dim | None:
@@ -94,9 +99,9 @@ def _product(tokens: list[str]) -> tuple[Dim, list[str]]:
     """factor ( [*·/] factor | factor )*, '/' dividing by the next factor only."""
     dim, tokens = _factor(tokens)
     while tokens and tokens[0] != ")":
-        sign = Fraction(1)
+        sign = 1
         if tokens[0] in ("*", "·", "/"):
-            sign = Fraction(-1) if tokens[0] == "/" else sign
+            sign = -1 if tokens[0] == "/" else sign
             tokens = tokens[1:]
         factor, tokens = _factor(tokens)
         dim = _add(dim, factor, sign)
@@ -113,7 +118,13 @@ def _factor(tokens: list[str]) -> tuple[Dim, list[str]]:
     else:
         dim = UNITS[head]
     if tokens and tokens[0] in ("^", "**"):
+        if tokens[1] == "(":  # kg^(1/2)
+            if tokens[3] != ")":
+                raise ValueError("an exponent in brackets is one number")
+            tokens = [tokens[0], tokens[2], *tokens[4:]]
         dim, tokens = _scale(dim, Fraction(tokens[1].replace("+", ""))), tokens[2:]
+        if dim is None:
+            raise ValueError("a power that is no whole number of twelfths")
     return dim, tokens
 
 
@@ -121,8 +132,8 @@ def unit_text(dim: Dim) -> str:
     """(2, 1, −2, 0) → "kg·m²/s²"; "no units" for a pure number."""
     names = ("m", "kg", "s", "A")
     order = (1, 0, 2, 3)  # kg before m, as units are usually written
-    up = [_power(names[i], dim[i]) for i in order if dim[i] > 0]
-    down = [_power(names[i], -dim[i]) for i in order if dim[i] < 0]
+    up = [_power(names[i], Fraction(dim[i], _PARTS)) for i in order if dim[i] > 0]
+    down = [_power(names[i], Fraction(-dim[i], _PARTS)) for i in order if dim[i] < 0]
     if not up and not down:
         return "no units"
     below = "·".join(down)
@@ -169,8 +180,8 @@ def symbol_dimensions(variant: SceneVariant) -> dict[sp.Symbol, Dim]:
             break
     for j in variant.jets:
         if j.q in known:
-            known[j.dot] = _add(known[j.q], TIME, Fraction(-1))
-            known[j.ddot] = _add(known[j.q], TIME, Fraction(-2))
+            known[j.dot] = _add(known[j.q], TIME, -1)
+            known[j.ddot] = _add(known[j.q], TIME, -2)
     return known
 
 
@@ -194,17 +205,19 @@ def _infer(expr: sp.Expr, dim: Dim, known: dict, unknowns: list[sp.Symbol]) -> N
         else:
             if len(unknown) == 1:
                 base, k = unknown[0]
-                known[base] = _scale(_add(dim, rest, Fraction(-1)), 1 / k)
+                found = _scale(_add(dim, rest, -1), 1 / k)
+                if found is not None:
+                    known[base] = found
 
 
 def dimension(expr: sp.Expr, known: Mapping[sp.Symbol, Dim]) -> Dim | str | None:
     """The dimension of expr; `MIXED` when its parts disagree (a sum of a length and a time, a
     function of a length); None when some symbol's dimension is unknown."""
-    if isinstance(expr, sp.Symbol):
+    if expr.is_Symbol:
         return known.get(expr)
-    if expr.is_Number or expr in (sp.pi, sp.E, sp.I):
+    if expr.is_Number or expr is sp.pi or expr is sp.E or expr is sp.I:  # `is`: sympy's == is slow
         return NONE
-    if isinstance(expr, sp.Mul):
+    if expr.is_Mul:
         total = NONE
         for factor in expr.args:
             d = dimension(factor, known)
@@ -212,16 +225,16 @@ def dimension(expr: sp.Expr, known: Mapping[sp.Symbol, Dim]) -> Dim | str | None
                 return d
             total = _add(total, d)
         return total
-    if isinstance(expr, sp.Pow):
+    if expr.is_Pow:
         base, exponent = expr.args
         d = dimension(base, known)
         if d is None or d == MIXED:
             return d
         if exponent.is_Rational:
-            return _scale(d, Fraction(int(exponent.p), int(exponent.q)))
+            return _scale(d, Fraction(int(exponent.p), int(exponent.q)))  # None: unknown
         e = dimension(exponent, known)
         return NONE if d == NONE and e == NONE else (None if e is None else MIXED)
-    if isinstance(expr, sp.Add):
+    if expr.is_Add:
         dims = {dimension(a, known) for a in expr.args}
         if None in dims:
             return None
@@ -369,10 +382,10 @@ def _expected(problem, known: Mapping[sp.Symbol, Dim], what: str) -> list[Dim]:
     if what in ("energy", "kinetic"):
         return [ENERGY]
     if what == "equation":
-        return [_add(ENERGY, d, Fraction(-1)) for d in dims if d is not None]
+        return [_add(ENERGY, d, -1) for d in dims if d is not None]
     if what.startswith("momentum:"):
         d = dims[int(what.split(":")[1])]
-        return [] if d is None else [_add(_add(ENERGY, TIME), d, Fraction(-1))]
+        return [] if d is None else [_add(_add(ENERGY, TIME), d, -1)]
     return []
 
 
