@@ -239,8 +239,14 @@ def dimension(expr: sp.Expr, known: Mapping[sp.Symbol, Dim]) -> Dim | str | None
         if None in dims:
             return None
         return dims.pop() if len(dims) == 1 else MIXED
-    if isinstance(expr, (sp.Abs,)):
+    if isinstance(expr, sp.Abs):
         return dimension(expr.args[0], known)
+    if isinstance(expr, sp.sign):  # the sign of a length is a number
+        d = dimension(expr.args[0], known)
+        return d if d is None or d == MIXED else NONE
+    if isinstance(expr, (sp.Max, sp.Min)):  # of quantities of one dimension, that dimension
+        dims = {dimension(a, known) for a in expr.args}
+        return None if None in dims else (dims.pop() if len(dims) == 1 else MIXED)
     if isinstance(expr, sp.Function):  # sin, exp, log, atan2 …: of pure numbers, a number
         dims = [dimension(a, known) for a in expr.args]
         if None in dims:
@@ -301,7 +307,7 @@ def _mixed_sentence(term: sp.Expr, known: Mapping[sp.Symbol, Dim]) -> str:
                 if isinstance(d := dimension(a, known), tuple)
             ]
             return f"In {plain(term)}, {' and '.join(parts)} are added but have different units."
-        if isinstance(sub, sp.Function) and not isinstance(sub, sp.Abs):
+        if isinstance(sub, sp.Function) and not isinstance(sub, (sp.Abs, sp.sign, sp.Max, sp.Min)):
             args = [dimension(a, known) for a in sub.args]
             if all(isinstance(d, tuple) for d in args) and any(d != NONE for d in args):
                 shown = ", ".join(
