@@ -136,6 +136,13 @@ class Catalogue:
         T = sp.Add(*(x for x in expanded_terms(L) if velocities_in(x, p.jets)))
         return Split(T, sp.expand(T - L))
 
+    @cached_property
+    def _split_lagrangian(self) -> tuple[sp.Expr, set]:
+        """T − V as the mutants are made from it, and the symbols of motion (a constant, free
+        of them, changes no motion)."""
+        moving = {x for j in self.problem.jets for x in (j.q, j.dot)}
+        return self.split.T - self.split.V, moving | {t}
+
     @property
     def parameters(self) -> list[sp.Symbol]:
         return list(self.problem.parameters.values())
@@ -302,8 +309,7 @@ class Catalogue:
         if answer_el is None:
             answer_el = euler_lagrange_values(answer, self.problem.jets, points.env)
         reference_el = self.el_values(self.problem.L, points)
-        L = self.split.T - self.split.V  # the form the mutants are made from
-        moving = {s for j in self.problem.jets for s in (j.q, j.dot)} | {t}
+        L, moving = self._split_lagrangian
 
         def true_ones(stack: Stack) -> list:
             return [
@@ -362,11 +368,8 @@ class Catalogue:
         E = p.system.euler_lagrange
 
         def true_ones(stack: Stack) -> list:
-            return [
-                pair
-                for pair, row in every_row(stack, s, points.group)
-                if row_fix_is_right(s, row, pair[0], reference)
-            ]
+            hits = every_row(stack, s, points.group)
+            return [pair for pair, row in hits if row_fix_is_right(s, row, pair[0], reference)]
 
         found = self._every(
             self.rows,

@@ -395,6 +395,13 @@ def _expected(problem, known: Mapping[sp.Symbol, Dim], what: str) -> list[Dim]:
     return []
 
 
+def tells(mutant) -> bool:
+    """Whether a dimension hint can add to a named mistake: none named, or a term that lacks a
+    parameter factor (its units differ from the others'); a sign, a factor 2 or ½, a missing or
+    swapped term keeps every term's units, so the hint would say nothing (and is not sought)."""
+    return mutant is None or mutant.kind == "missing_factor"
+
+
 def dimensions_of(problem) -> dict[sp.Symbol, Dim]:
     """The symbol dimensions of a bank variant's question, computed once; {} for an ad-hoc
     problem (no units are declared)."""

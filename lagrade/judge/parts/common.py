@@ -15,7 +15,7 @@ from lagrade.errors import UnsupportedExpression
 from lagrade.judge.compiled import Compiled
 from lagrade.judge.decision import Outcome
 from lagrade.judge.derivatives import euler_lagrange_values
-from lagrade.judge.dimensions import hint_for
+from lagrade.judge.dimensions import hint_for, tells
 from lagrade.judge.evaluate import FLOAT, MP, MP_DIGITS
 from lagrade.judge.mutations import Mutant
 from lagrade.judge.parts.reading import Read
@@ -251,7 +251,8 @@ def incorrect(
     feedback.append(sentence + where_text(witness, problem, values) + ".")
     if problem is not None:
         expected = {"T": "kinetic", "V": "energy"}.get(part, "")
-        hints = [handout_numbers(problem, got), hint_for(problem, got.expr, expected)]
+        dimensions = hint_for(problem, got.expr, expected) if tells(mutant) else ""
+        hints = [handout_numbers(problem, got), dimensions]
         feedback += [hint for hint in hints if hint]
     mistakes = (mutant.kind,) if mutant is not None else ()
     return Verdict(

@@ -167,7 +167,9 @@ def check_lagrangian(problem: Problem, answer: Any, given: Mapping | None) -> Ve
     got = read_single(problem, answer, "lagrangian", "L")
     status, score, feedback, out, witness, mistakes = judge_lagrangian(problem, got.expr)
     if status != "correct":
-        hints = [handout_numbers(problem, got), hint_for(problem, got.expr, "energy")]
+        named = not mistakes or "missing_factor" in mistakes  # see dimensions.tells
+        dimensions = hint_for(problem, got.expr, "energy") if named else ""
+        hints = [handout_numbers(problem, got), dimensions]
         feedback += [hint for hint in hints if hint]
     return Verdict(
         "lagrangian",

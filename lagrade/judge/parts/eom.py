@@ -11,7 +11,7 @@ import sympy as sp
 
 from lagrade.judge.compiled import Compiled
 from lagrade.judge.decision import decide
-from lagrade.judge.dimensions import hint_for
+from lagrade.judge.dimensions import hint_for, tells
 from lagrade.judge.evaluate import FLOAT, UnsupportedExpression
 from lagrade.judge.parts.common import (
     acceleration_text,
@@ -102,7 +102,7 @@ def check_eom(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
                 )
                 + "."
             )
-        dimensions = hint_for(problem, exprs[k], "equation")
+        dimensions = hint_for(problem, exprs[k], "equation") if tells(mutant) else ""
         if dimensions:
             feedback.append(f"{label}: {dimensions[0].lower()}{dimensions[1:]}")
     rank = row_rank(rows.coef.astype(float), right)
