@@ -54,7 +54,7 @@ from lagrade.judge.mutations import (
     terms_changed,
     velocities_in,
 )
-from lagrade.judge.rows import Rows, equation_rows
+from lagrade.judge.rows import Rows, equation_rows, span_basis
 from lagrade.judge.sampling import Points
 from lagrade.judge.worker import Budget, set_aside
 from lagrade.mechanics.lagrange import Jet, LagrangianSystem, t
@@ -365,11 +365,12 @@ class Catalogue:
         with np.errstate(all="ignore"):
             s = equation_rows([student], p.jets, points.env)
         reference = p.reference_rows(points)
+        basis = p.cached("row-basis", points, lambda: span_basis(reference))
         E = p.system.euler_lagrange
 
         def true_ones(stack: Stack) -> list:
             hits = every_row(stack, s, points.group)
-            return [pair for pair, row in hits if row_fix_is_right(s, row, pair[0], reference)]
+            return [pair for pair, x in hits if row_fix_is_right(s, x, pair[0], reference, basis)]
 
         found = self._every(
             self.rows,

@@ -199,19 +199,22 @@ def every_row(
     return found
 
 
-def row_fix_is_right(student: Rows, mutated_row: np.ndarray, i: int, reference: Rows) -> bool:
+def row_fix_is_right(
+    student: Rows, mutated_row: np.ndarray, i: int, reference: Rows, basis: tuple
+) -> bool:
     """Whether undoing the mistake in the student's equation as written — removing what the
     mistake changed in row i, Δ = mutated row − reference row, at the scale its message prints
     it (either side of the student's `=` may hold the terms), not after rescaling the student's
     row to the mutated one — leaves a right equation (in the span of the reference rows). For
     m r² θ̈ + m r ṙ θ̇ = 0, "2 m r ṙ θ̇ is half what it should be" is true; "m r² θ̈ is twice
-    too large" is true only of the student's equation doubled."""
+    too large" is true only of the student's equation doubled. `basis`: the reference rows'
+    `span_basis`."""
     x, xs = student.coef[:, 0, :].astype(float), student.size[:, 0].astype(float)
     with np.errstate(all="ignore"):
         delta = mutated_row - reference.coef[:, i, :].astype(float)
         scale = xs + np.linalg.norm(delta, axis=1) + reference.size[:, i].astype(float)
         for sign in (1.0, -1.0):
-            r, s = outside_span(x - sign * delta, scale, reference)
+            r, s = outside_span(x - sign * delta, scale, basis)
             if vanish_rows(r[None], s[None])[0]:
                 return True
     return False

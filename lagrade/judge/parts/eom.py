@@ -28,7 +28,14 @@ from lagrade.judge.parts.reading import (
     read_parsed,
 )
 from lagrade.judge.problem import Problem, parser
-from lagrade.judge.rows import equation_rows, in_span, lagrangian_rows, row_rank
+from lagrade.judge.rows import (
+    equation_rows,
+    in_span,
+    lagrangian_rows,
+    outside_span,
+    row_rank,
+    span_basis,
+)
 from lagrade.judge.verdict import Verdict, invalid
 
 
@@ -151,9 +158,11 @@ def _nonlinear_residual(compiled, k, jets, points, backend):
 
 
 def _span_residual(problem, compiled, ref_rows, k, points, backend):
-    if backend is FLOAT:
+    if backend is FLOAT:  # the reference rows' basis is made once per set of points
         student = equation_rows([compiled[k]], problem.jets, points.env)
-        return in_span(student, ref_rows, 0)
+        basis = problem.cached("row-basis", points, lambda: span_basis(ref_rows))
+        x, size = student.coef[:, 0, :].astype(float), student.size[:, 0].astype(float)
+        return outside_span(x, size, basis)
     env = points.arrays(backend)
     student = equation_rows([compiled[k]], problem.jets, env, backend)
     ref = equation_rows(problem.euler_lagrange, problem.jets, env, backend)
