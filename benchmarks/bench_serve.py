@@ -21,6 +21,7 @@ import argparse
 import csv
 import http.client
 import json
+import os
 import random
 import signal
 import statistics
@@ -47,9 +48,12 @@ names = { theta = ["theta"] }
 scene = "wedge"
 parts = [{ quantity = "block_acceleration" }]
 """
-#: A closed form whose exact stage runs one gcd of two 3.2-Mbit integers, a single C call of
-#: 15-20 s here (tests/batch/test_killed_part.py): what an attacker previews.
-SLOW_IN_C = "g*(1+(M+m)^2000)^30/(2+(M^2+2*M*m+m^2)^1000)^30"
+#: What an attacker previews: the marker on which the server's planted checker
+#: (`tests/planted.py`) spins in one C call that no alarm interrupts. Real answers that did so
+#: (an exact stage multiplying multi-megabit integers) are bounded by the judge now; the plant
+#: passes every other answer to the real checker unchanged.
+SLOW_IN_C = "zzhang"
+REPOSITORY = Path(__file__).resolve().parents[1]
 
 ANSWERS = [
     ("lagrangian", "1/2 m l^2 theta_dot^2 + m g l cos(theta)"),
@@ -83,7 +87,7 @@ def start(manifest: Path, sheets: Path, links: Path, jobs: int) -> tuple[subproc
         [
             sys.executable,
             "-c",
-            "from lagrade.cli.main import entry; entry()",
+            "import tests.planted as p; p.install(); from lagrade.cli.main import entry; entry()",
             "serve",
             str(manifest),
             "--submissions",
@@ -97,6 +101,7 @@ def start(manifest: Path, sheets: Path, links: Path, jobs: int) -> tuple[subproc
         ],
         stdout=log.open("w"),
         stderr=subprocess.STDOUT,
+        env={**os.environ, "PYTHONPATH": str(REPOSITORY)},
     )
     deadline = time.monotonic() + 120
     while time.monotonic() < deadline and process.poll() is None:

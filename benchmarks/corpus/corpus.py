@@ -52,6 +52,9 @@ class Pair:
     domains: Mapping[str, str] = field(default_factory=dict)
     note: str = ""
     source: str = ""  # where a case nobody here wrote comes from (external.jsonl)
+    #: How the question spells the imaginary unit, where it declares one ("I"): then both
+    #: sides are read with it as a number, as `check` reads an expression question that does.
+    imaginary_unit: str | None = None
 
     def to_json(self) -> str:
         record = asdict(self)
@@ -60,6 +63,8 @@ class Pair:
         record["domains"] = dict(self.domains)
         if not record["source"]:  # only the external cases carry one
             del record["source"]
+        if record["imaginary_unit"] is None:
+            del record["imaginary_unit"]
         return json.dumps(record, ensure_ascii=False, sort_keys=False)
 
     @classmethod
@@ -70,7 +75,15 @@ class Pair:
 
     @property
     def vocabulary(self) -> Vocabulary:
-        return Vocabulary.from_names(self.coordinates, dict(self.parameters))
+        return Vocabulary.from_names(
+            self.coordinates, dict(self.parameters), imaginary_unit=self.imaginary_unit
+        )
+
+    @property
+    def problem(self) -> dict:
+        """The question as a `check` request's problem field."""
+        spec = {"expression": self.reference, "parameters": dict(self.parameters)}
+        return spec | ({"imaginary_unit": self.imaginary_unit} if self.imaginary_unit else {})
 
 
 @dataclass(frozen=True)

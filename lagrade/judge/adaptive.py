@@ -41,16 +41,25 @@ def draw(
 
 
 def compile_pair(answer: sp.Expr, reference: sp.Expr) -> ev.Program | None:
-    """The pair as one program, or None when these methods cannot judge it: an expression the
-    evaluator does not know, or complex arithmetic (the imaginary unit, where a question
-    declares it), which the real-valued error bounds here do not cover."""
+    """The pair as one program, or None when these methods cannot judge it (an expression the
+    evaluator does not know). The imaginary unit, where a question declares it, is a number
+    like any other: the values are then complex (`has_imaginary_unit`)."""
     try:
-        program = ev.compile_program([answer, reference])
+        return ev.compile_program([answer, reference])
     except ev.UnsupportedExpression:
         return None
-    if any(instr[0] == "const" and instr[1] is sp.I for instr in program.code):
-        return None
-    return program
+
+
+def has_imaginary_unit(program: ev.Program) -> bool:
+    return any(instr[0] == "const" and instr[1] is sp.I for instr in program.code)
+
+
+def _as_array(values, n: int) -> np.ndarray:
+    """Values as an array of length n, complex ones kept."""
+    out = np.asarray(values)
+    if out.dtype != float and not np.iscomplexobj(out):
+        out = out.astype(float)
+    return np.broadcast_to(out, (n,)) if out.ndim == 0 else out
 
 
 def as_float_array(values, n: int) -> np.ndarray:
@@ -59,16 +68,20 @@ def as_float_array(values, n: int) -> np.ndarray:
 
 
 def evaluate_float(program: ev.Program, env: Mapping[sp.Symbol, np.ndarray], n: int):
+    """(a, b) in float64 at the points (complex128 where the imaginary unit makes them so)."""
     with np.errstate(all="ignore"):
         a, b = ev.run(program, env, ev.FLOAT)
-    return as_float_array(a, n), as_float_array(b, n)
+    return _as_array(a, n), _as_array(b, n)
 
 
-def sampled_pair(answer, reference, ranges_of, n: int, seed: int) -> tuple | None:
-    """(program, symbols, (a, b, env)) for the pair at n points where the reference is
-    defined, each symbol drawn in `ranges_of(symbols, widen)` (the unbounded sides stretched
-    by `WIDEN` while no point is found); None when the pair cannot be compiled or too few
-    points are usable (the method has no verdict)."""
+def sampled_pair(
+    answer, reference, ranges_of, n: int, seed: int, complex_values: bool = False
+) -> tuple | None:
+    """(program, symbols, (a, b, env)) for the pair at n points where the reference has a value
+    (with `complex_values`, a complex one on principal branches counts), each symbol drawn in
+    `ranges_of(symbols, widen)` (the unbounded sides stretched by `WIDEN` while no point is
+    found); None when the pair cannot be compiled or too few points are usable (the method has
+    no verdict)."""
     program = compile_pair(answer, reference)
     if program is None:
         return None
@@ -76,7 +89,7 @@ def sampled_pair(answer, reference, ranges_of, n: int, seed: int) -> tuple | Non
     rng = np.random.default_rng(seed)
     got = None
     for widen in WIDEN:  # the physical scale first; farther out only where nothing is defined
-        got = usable_points(program, symbols, ranges_of(symbols, widen), n, rng, rounds=2)
+        got = usable_points(program, symbols, ranges_of(symbols, widen), n, rng, 2, complex_values)
         if got is not None:
             break
     return None if got is None else (program, symbols, got)
@@ -89,9 +102,14 @@ def usable_points(
     n: int,
     rng,
     rounds: int = 6,
+    complex_values: bool = False,
 ) -> tuple[np.ndarray, np.ndarray, dict] | None:
-    """Values of (answer, reference) at n points where the reference is defined (finite and
-    real); points where it is not are redrawn, `rounds` times at most. None: too few points."""
+    """Values of (answer, reference) at n points where the reference has a value; points where
+    it has none are redrawn, `rounds` times at most. None: too few points. Where float64 has
+    no value, the reference may still have one: past float range (SI quantities to a power, a
+    ratio of two such), which mpmath tells, or with `complex_values` a complex one (log of a
+    negative number: principal branches, docs/formats.md), which complex128 tells; the values
+    there are left non-finite in float64 for the stages after it to decide."""
     kept_a, kept_b, kept_env = [], [], {s: [] for s in symbols}
     have = 0
     for _ in range(rounds):
@@ -100,10 +118,8 @@ def usable_points(
         env = draw(symbols, ranges, batch, rng)
         a, b = evaluate_float(program, env, batch)
         ok = np.isfinite(b)
-        beyond = np.isinf(b)  # past float range (SI quantities to a power): ask mpmath
-        if beyond.any():
-            # the reference is the program's second output
-            ok |= beyond & ev.finite_in_mp(lambda p: ev.run(program, p, ev.MP)[1:], env, beyond)
+        if not ok.all():
+            ok |= _has_value_beyond_float(program, env, ~ok, batch, complex_values)
         idx = np.nonzero(ok)[0][:want]
         kept_a.append(a[idx])
         kept_b.append(b[idx])
@@ -116,6 +132,24 @@ def usable_points(
         return None
     env_all = {s: np.concatenate(v) for s, v in kept_env.items()}
     return np.concatenate(kept_a), np.concatenate(kept_b), env_all
+
+
+def _has_value_beyond_float(
+    program: ev.Program, env, where: np.ndarray, n: int, complex_values: bool
+) -> np.ndarray:
+    """Whether the reference (the program's second output) has a value at the points `where`
+    that float64 misses: a complex one (complex128), or one past float range (mpmath). Only
+    points without a value in complex128 either go to mpmath (a real domain error, sqrt of a
+    negative number, has a complex value: it costs no mpmath)."""
+    with np.errstate(all="ignore"):
+        b = np.broadcast_to(np.asarray(ev.run(program, env, ev.COMPLEX)[1], complex), (n,))
+    in_complex = where & np.isfinite(b)
+    ok = in_complex if complex_values else np.zeros(n, dtype=bool)
+    beyond = where & ~in_complex
+    if beyond.any():
+        backend = ev.MP_COMPLEX if complex_values else ev.MP
+        ok |= beyond & ev.finite_in_mp(lambda p: ev.run(program, p, backend)[1:], env, beyond)
+    return ok
 
 
 # --- the study's proposal: exact where possible, else rounding-aware numbers --------------------
@@ -231,15 +265,23 @@ class ExactThenAdaptive:
 
     def decide(self, answer, reference, domains) -> bool | None:
         sampled = sampled_pair(
-            answer, reference, lambda s, w=1.0: sample_ranges(s, domains, w), self.points, self.seed
+            answer,
+            reference,
+            lambda s, w=1.0: sample_ranges(s, domains, w),
+            self.points,
+            self.seed,
+            complex_values=True,  # principal branches: a complex value is a value
         )
         if sampled is None:
             return None
-        program, symbols, (_, _, env) = sampled
+        program, symbols, (_, b_float, env) = sampled
         n = len(next(iter(env.values()))) if env else 1
+        # where the reference is complex, its values are compared in complex arithmetic
+        real = np.all(np.isfinite(b_float)) and not has_imaginary_unit(program)
+        backend = ev.FLOAT if real else ev.COMPLEX
         with np.errstate(all="ignore"):
-            (a, ea), (b, eb) = _bounded_run(program, env, ev.FLOAT)
-        a, b = as_float_array(a, n), as_float_array(b, n)
+            (a, ea), (b, eb) = _bounded_run(program, env, backend)
+        a, b = _as_array(a, n), _as_array(b, n)
         bound = _SAFETY * np.finfo(float).eps * (as_float_array(ea, n) + as_float_array(eb, n))
         finite = np.isfinite(a) & np.isfinite(b) & np.isfinite(bound)
         with np.errstate(all="ignore"):  # inf − inf where both are past float range
@@ -329,10 +371,11 @@ class _MpComplex:
 
 
 def _mp_bounded(program: ev.Program, values: Mapping) -> tuple:
-    """(value, bound) of a one-output program in mpmath; a division by zero is undefined (nan)."""
+    """(value, bound) of a one-output program in mpmath on principal branches (a complex value
+    is a value); a division by zero is undefined (nan)."""
     try:
-        return _bounded_run(program, values, _MpScalar)[0]
-    except ZeroDivisionError:
+        return _bounded_run(program, values, _MpComplex)[0]
+    except (ZeroDivisionError, ValueError, OverflowError):
         return mpmath.mpf("nan"), mpmath.mpf("nan")
 
 
@@ -345,9 +388,9 @@ def _adaptive_mp(answer: sp.Expr, reference: sp.Expr, symbols, env, chosen) -> b
             with mpmath.workdps(digits):
                 values = {s: mpmath.mpf(v) for s, v in point.items()}
                 (a, ea), (b, eb) = _mp_bounded(prog_a, values), _mp_bounded(prog_b, values)
-                if not (mpmath.isfinite(b) and mpmath.isfinite(eb)):
+                if not (_finite(b) and _finite(eb)):
                     break  # the reference is undefined here after all: skip the point
-                if not (mpmath.isfinite(a) and mpmath.isfinite(ea)):
+                if not (_finite(a) and _finite(ea)):
                     return False
                 u = mpmath.mpf(2) ** (-mpmath.mp.prec)
                 bound = _SAFETY * u * (ea + eb)
@@ -358,28 +401,3 @@ def _adaptive_mp(answer: sp.Expr, reference: sp.Expr, symbols, env, chosen) -> b
                 if bound <= mpmath.mpf(10) ** (-digits // 2) * scale:
                     break  # equal at this point
     return True
-
-
-class _MpScalar:
-    """mpmath scalars as a backend of `_bounded_run`; complex results (outside the real domain)
-    become nan, as in float64."""
-
-    @staticmethod
-    def _real(f):
-        def g(*xs):
-            try:
-                y = f(*xs)
-            except (ValueError, ZeroDivisionError, OverflowError):
-                return mpmath.mpf("nan")
-            return mpmath.mpf("nan") if isinstance(y, mpmath.mpc) else y
-
-        return staticmethod(g)
-
-    sin, cos, tan = _real(mpmath.sin), _real(mpmath.cos), _real(mpmath.tan)
-    exp, log, sqrt = _real(mpmath.exp), _real(mpmath.log), _real(mpmath.sqrt)
-    asin, acos, atan = _real(mpmath.asin), _real(mpmath.acos), _real(mpmath.atan)
-    sinh, cosh, tanh = _real(mpmath.sinh), _real(mpmath.cosh), _real(mpmath.tanh)
-    asinh, acosh, atanh = _real(mpmath.asinh), _real(mpmath.acosh), _real(mpmath.atanh)
-    power, sign, atan2 = _real(mpmath.power), _real(mpmath.sign), _real(mpmath.atan2)
-    abs = staticmethod(abs)
-    const = staticmethod(ev.MP.const)

@@ -17,7 +17,7 @@ from collections.abc import Callable, Iterator, Sequence
 from dataclasses import dataclass
 from functools import cached_property
 from itertools import chain
-from typing import Protocol, TypeVar, Union
+from typing import Any, Protocol, TypeVar, Union
 
 import numpy as np
 import sympy as sp
@@ -29,12 +29,14 @@ from lagrade.judge.lazylist import LazyList
 from lagrade.judge.matching import (
     SKIPPED,
     Stack,
-    first_lagrangian,
+    every_lagrangian,
+    every_row,
     first_offset,
     first_plain,
-    first_row,
     full,
     lagrangian_arrays,
+    lagrangian_fix_is_right,
+    row_fix_is_right,
     span_arrays,
     stacked,
 )
@@ -49,12 +51,13 @@ from lagrade.judge.mutations import (
     iter_term_mutants,
     kinetic_mutants,
     swap_sin_cos,
+    terms_changed,
     velocities_in,
 )
-from lagrade.judge.rows import Rows, equation_rows
+from lagrade.judge.rows import Rows, equation_rows, span_basis
 from lagrade.judge.sampling import Points
 from lagrade.judge.worker import Budget, set_aside
-from lagrade.mechanics.lagrange import Jet, LagrangianSystem
+from lagrade.mechanics.lagrange import Jet, LagrangianSystem, t
 from lagrade.mechanics.scene import SceneVariant
 
 _T = TypeVar("_T")
@@ -132,6 +135,13 @@ class Catalogue:
         L = sp.expand(p.system.L)
         T = sp.Add(*(x for x in expanded_terms(L) if velocities_in(x, p.jets)))
         return Split(T, sp.expand(T - L))
+
+    @cached_property
+    def _split_lagrangian(self) -> tuple[sp.Expr, set]:
+        """T − V as the mutants are made from it, and the symbols of motion (a constant, free
+        of them, changes no motion)."""
+        moving = {x for j in self.problem.jets for x in (j.q, j.dot)}
+        return self.split.T - self.split.V, moving | {t}
 
     @property
     def parameters(self) -> list[sp.Symbol]:
@@ -291,17 +301,30 @@ class Catalogue:
         points: Points,
         answer_el: tuple[np.ndarray, np.ndarray] | None = None,
     ) -> Mutant | None:
-        """The mutant with E(answer) = c E(mutant), c ≠ 0 per parameter group (float64 only:
-        a diagnosis names a likely mistake, the verdict is decided elsewhere). `answer_el`:
+        """The mistake that explains the answer: a mutant with E(answer) = c E(mutant), c ≠ 0
+        per parameter group, whose fix, applied to the answer as written, gives a right L
+        (`lagrangian_fix_is_right`); of several, the one that changes the fewest terms (float64
+        only: a diagnosis names a mistake, the verdict is decided elsewhere). `answer_el`:
         E(answer) and its size at the points, when the verdict has computed them already."""
         if answer_el is None:
             answer_el = euler_lagrange_values(answer, self.problem.jets, points.env)
-        return self._first(
+        reference_el = self.el_values(self.problem.L, points)
+        L, moving = self._split_lagrangian
+
+        def true_ones(stack: Stack) -> list:
+            return [
+                m
+                for m, Eb, Sb in every_lagrangian(stack, answer_el)
+                if lagrangian_fix_is_right(answer_el, (Eb, Sb), reference_el, points.group)
+            ]
+
+        return self._every(
             self.lagrangian,
             "el-stack",
             points,
             lambda chunk: self._el_stack(chunk, points),
-            lambda stack: first_lagrangian(stack, answer_el),
+            true_ones,
+            lambda m: terms_changed(m, L, lambda term: bool(term.free_symbols & moving)),
         )
 
     def match_plain(self, mutants: Mutants, answer: Compiled, points: Points) -> Mutant | None:
@@ -334,16 +357,28 @@ class Catalogue:
         )
 
     def match_row(self, student: Compiled, points: Points) -> Mutant | None:
-        """The mutation whose mutated system has the student's equation in its span."""
+        """The mistake that explains the student's equation: a mutation whose mutated system
+        has the equation in its span, for the row the mistake is in, and whose fix, applied to
+        the equation as the student wrote it, gives a right equation (`row_fix_is_right`); of
+        several, the one that changes the fewest terms of what the student wrote."""
         p = self.problem
         with np.errstate(all="ignore"):
             s = equation_rows([student], p.jets, points.env)
-        found = self._first(
+        reference = p.reference_rows(points)
+        basis = p.cached("row-basis", points, lambda: span_basis(reference))
+        E = p.system.euler_lagrange
+
+        def true_ones(stack: Stack) -> list:
+            hits = every_row(stack, s, points.group)
+            return [pair for pair, x in hits if row_fix_is_right(s, x, pair[0], reference, basis)]
+
+        found = self._every(
             self.rows,
             "row-stack",
             points,
             lambda chunk: self._row_stack(chunk, points),
-            lambda stack: first_row(stack, s, points.group),
+            true_ones,
+            lambda pair: terms_changed(pair[1], E[pair[0]]),
         )
         return None if found is None else found[1]
 
@@ -389,6 +424,35 @@ class Catalogue:
                 if found is not None:
                     return found
             k += 1
+
+    def _every(
+        self,
+        mutants: Mutants,
+        name: str,
+        points: Points,
+        stack_of: Callable,
+        found_in: Callable[[Stack], list],
+        changes: Callable[[Any], int],
+    ):
+        """The candidate of fewest `changes` among all that `found_in` finds in the stacks of
+        `mutants`, the earliest of equals (the catalogue's order puts the most specific first);
+        None without one. Reading stops at a candidate that changes one term: none beats it."""
+        best, fewest = None, None
+        counted = self.__dict__.setdefault("_changes", {})  # a mutant's count, once
+
+        def consider(stack: Stack | None) -> bool:
+            nonlocal best, fewest
+            for candidate in found_in(stack) if stack is not None else ():
+                key = (name, id(candidate[1] if isinstance(candidate, tuple) else candidate))
+                if key not in counted:
+                    counted[key] = changes(candidate)
+                n = counted[key]
+                if fewest is None or n < fewest:
+                    best, fewest = candidate, n
+            return fewest == 1
+
+        self._first(mutants, name, points, stack_of, lambda stack: consider(stack) or None)
+        return best
 
     def _ready(self, name: str, candidates: Sequence, points: Points) -> bool:
         """The stack `name` of `candidates` at `points` is built (reading it does no work)."""

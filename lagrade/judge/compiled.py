@@ -10,8 +10,10 @@ import numpy as np
 import sympy as sp
 
 from lagrade.judge.evaluate import (
+    COMPLEX,
     FLOAT,
     MP,
+    MP_COMPLEX,
     Program,
     compile_program,
     finite_in_mp,
@@ -104,28 +106,47 @@ def total(items: Iterable):
 def to_length(x, n: int, backend=FLOAT):
     """x as an array of length n (constants come out of the evaluator as scalars)."""
     if np.ndim(x) == 0:
-        kind = (complex if np.iscomplexobj(x) else float) if backend is FLOAT else object
+        in_floats = backend is FLOAT or backend is COMPLEX
+        kind = (complex if np.iscomplexobj(x) else float) if in_floats else object
         return np.full(n, x, dtype=kind)
     return x
 
 
-def finite_mask(compiled: Sequence[Compiled]) -> Callable[[dict], np.ndarray]:
-    """A validity test for sampling: every compiled reference is finite at the point. A value
-    beyond float range (SI quantities to a power: (M r)^10 with M = 2e30 kg, r = 1.5e11 m) is
-    finite all the same when high precision, whose exponents are unbounded, says so: judging
-    must not depend on float range."""
+def finite_mask(
+    compiled: Sequence[Compiled], complex_values: bool = False
+) -> Callable[[dict], np.ndarray]:
+    """A validity test for sampling: every compiled reference has a value at the point.
+
+    A value beyond float range (SI quantities to a power: (M r)^10 with M = 2e30 kg, r = 1.5e11
+    m; a ratio M^20/m^19 whose float is inf/inf) is a value all the same when high precision,
+    whose exponents are unbounded, says so: judging must not depend on float range. With
+    `complex_values` (an expression question), a complex value on principal branches is a value
+    too (log of a negative number); undefined means no value at all: a pole, log 0. Points
+    where float64 has none are tried in complex128 first (cheap, vectorised), and only those
+    without a value there either (an overflow, or a true pole) in high precision."""
 
     def valid(env: dict) -> np.ndarray:
         n = len(next(iter(env.values())))
         ok = np.ones(n, dtype=bool)
         with np.errstate(all="ignore"):
             for c in compiled:
-                value, size = c.values(env)
-                finite = np.isfinite(to_length(value, n)) & np.isfinite(to_length(size, n))
-                huge = ~finite & np.isinf(to_length(size, n))
-                if huge.any():
-                    finite |= huge & finite_in_mp(lambda p, c=c: c.values(p, MP), env, huge)
-                ok &= finite
+                ok &= _has_values(c, env, n, complex_values)
         return ok
 
     return valid
+
+
+def _has_values(c: Compiled, env: dict, n: int, complex_values: bool) -> np.ndarray:
+    value, size = c.values(env)
+    finite = np.isfinite(to_length(value, n)) & np.isfinite(to_length(size, n))
+    if finite.all():
+        return finite
+    value, size = c.values(env, COMPLEX)
+    in_complex = np.isfinite(to_length(value, n)) & np.isfinite(to_length(size, n))
+    if complex_values:
+        finite |= in_complex
+    beyond = ~finite & ~in_complex  # no value even in complex128: past float range, or a pole
+    if beyond.any():
+        backend = MP_COMPLEX if complex_values else MP
+        finite |= beyond & finite_in_mp(lambda p: c.values(p, backend), env, beyond)
+    return finite

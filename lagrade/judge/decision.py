@@ -35,35 +35,41 @@ class Outcome:
 Residual = Callable[[object], tuple[np.ndarray, np.ndarray]]
 
 
-def decide(residual: Residual) -> Outcome:
+def decide(residual: Residual, backends: tuple = (FLOAT, MP)) -> Outcome:
     """Decide whether `residual` vanishes identically. `residual(backend)` returns arrays
     (r, s) of the residual and the size of the terms it is made of, per point (a second axis
-    is allowed: several components per point). nan in r means the answer is undefined there."""
+    is allowed: several components per point). nan in r means the answer is undefined there.
+    `backends`: the float and high-precision backends (complex ones for values compared in
+    complex arithmetic, `Points.backends`).
+
+    A point where float64 has no value (an overflow: SI quantities to a high power, whose
+    ratio is inf/inf) is judged in high precision, whose exponents are unbounded, unless the
+    answers already differ clearly elsewhere; only a point without a value there is undefined."""
+    float_backend, mp_backend = backends
     with np.errstate(all="ignore"):
-        r, s = residual(FLOAT)
+        r, s = residual(float_backend)
         r, s = np.asarray(r), np.asarray(s, dtype=float)
         r = r if np.iscomplexobj(r) else r.astype(float)  # never drop an imaginary part
         ratio = _ratio(r, s)
     per_point = ratio.reshape(ratio.shape[0], -1).max(axis=1) if ratio.ndim > 1 else ratio
-    if not np.all(np.isfinite(per_point)):
-        # a counter-example where both sides are defined, when there is one: a point where
-        # one side is undefined is quoted only when the answers differ nowhere else
-        differ = np.flatnonzero(np.isfinite(per_point) & (per_point > DIFFERENT_ABOVE))
-        if differ.size:
-            return Outcome(False, "numeric", math.inf, int(differ[per_point[differ].argmax()]))
-        where = int(np.flatnonzero(~np.isfinite(per_point))[0])
-        return Outcome(False, "numeric", math.inf, where, "undefined")
-    worst = float(per_point.max()) if per_point.size else 0.0
-    if worst < EQUAL_BELOW:
-        return Outcome(True, "numeric", worst)
-    if worst > DIFFERENT_ABOVE:
-        return Outcome(False, "numeric", worst, int(per_point.argmax()))
+    finite = np.isfinite(per_point)
+    worst = float(per_point[finite].max()) if finite.any() else 0.0
+    if finite.all():
+        if worst < EQUAL_BELOW:
+            return Outcome(True, "numeric", worst)
+        if worst > DIFFERENT_ABOVE:
+            return Outcome(False, "numeric", worst, int(per_point.argmax()))
+    elif worst > DIFFERENT_ABOVE:
+        # different where both sides have values: the counter-example is quoted there, not at
+        # a point where one side is undefined
+        differ = np.flatnonzero(finite & (per_point > DIFFERENT_ABOVE))
+        return Outcome(False, "numeric", math.inf, int(differ[per_point[differ].argmax()]))
     with mpmath.workdps(MP_DIGITS), np.errstate(all="ignore"):
         try:
-            r_mp, s_mp = residual(MP)
+            r_mp, s_mp = residual(mp_backend)
         except (ZeroDivisionError, OverflowError, ValueError):
             # mpmath raises where float64 gives inf or nan (1/0, 0 ** -1): undefined there.
-            where = int(per_point.argmax())
+            where = int(np.flatnonzero(~finite)[0]) if not finite.all() else int(per_point.argmax())
             return Outcome(False, "numeric+mpmath50", math.inf, where, "undefined")
         ratio_mp = np.array(
             [_mp_ratio(a, b) for a, b in zip(np.ravel(r_mp), np.ravel(s_mp), strict=True)]
@@ -71,6 +77,9 @@ def decide(residual: Residual) -> Outcome:
     per_point = (
         ratio_mp.reshape(ratio_mp.shape[0], -1).max(axis=1) if ratio_mp.ndim > 1 else ratio_mp
     )
+    if not np.all(np.isfinite(per_point)):
+        where = int(np.flatnonzero(~np.isfinite(per_point))[0])
+        return Outcome(False, "numeric+mpmath50", math.inf, where, "undefined")
     worst_mp = float(per_point.max())
     if worst_mp < MP_EQUAL_BELOW:
         return Outcome(True, "numeric+mpmath50", worst_mp)

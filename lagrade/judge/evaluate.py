@@ -219,8 +219,103 @@ class _Mp:
         return np.array([mpmath.isfinite(v) for v in arr.ravel()], dtype=bool).reshape(arr.shape)
 
 
+def _as_complex(x) -> np.ndarray:
+    """x as complex128, a zero imaginary part made +0: mpmath's zero has no sign, and −0 would
+    flip sqrt and log across their cuts (−2 − 0j has sqrt −1.41j)."""
+    return np.asarray(x, dtype=complex) + 0j
+
+
+def _principal(f, lower_side_above_one: bool = False):
+    """A numpy complex function on principal branches as mpmath and sympy take them: on a cut,
+    a real argument lies on the side counter-clockwise continuity gives it; numpy's C99
+    functions put +0j on the upper side, so asin, acos and atanh of a real x > 1 are taken at
+    x − 0j (asin 2 = π/2 − 1.317i, as sympy's asin(2))."""
+
+    def g(x):
+        z = _as_complex(x)
+        if lower_side_above_one:
+            z = np.where((z.imag == 0) & (z.real > 1), np.conj(z), z)
+        return f(z)
+
+    return g
+
+
+class _Complex:
+    """complex128 numpy on principal branches: the values of a question whose reference is
+    complex (a logarithm or root of a negative number, the declared imaginary unit) — complex
+    values are values, as docs/formats.md promises."""
+
+    name = "numeric"
+    sin, cos, tan, exp = np.sin, np.cos, np.tan, np.exp
+    sinh, cosh, tanh, asinh, atan = np.sinh, np.cosh, np.tanh, np.arcsinh, np.arctan
+    log, sqrt, acosh = _principal(np.log), _principal(np.sqrt), _principal(np.arccosh)
+    asin, acos = _principal(np.arcsin, True), _principal(np.arccos, True)
+    atanh = _principal(np.arctanh, True)
+    abs, sign = np.abs, np.sign  # |z| and z/|z|, as sympy's Abs and sign of a complex number
+
+    @staticmethod
+    def power(base, exponent):
+        return np.power(_as_complex(base), exponent)
+
+    @staticmethod
+    def atan2(y, x):
+        """A real function: no value where an argument is not real."""
+        y, x = _as_complex(y), _as_complex(x)
+        real = (y.imag == 0) & (x.imag == 0)
+        return np.where(real, np.arctan2(y.real, x.real), np.nan)
+
+    @staticmethod
+    def const(value: sp.Expr) -> complex:
+        return complex(value)
+
+    @staticmethod
+    def array(values: np.ndarray) -> np.ndarray:
+        return np.asarray(values, dtype=float)
+
+    @staticmethod
+    def finite(values) -> np.ndarray:
+        return np.isfinite(values)
+
+
+def _mp_complex(f, nargs: int = 1):
+    """An mpmath function made elementwise on principal branches, complex results kept (a
+    division by zero or a domain error has no value: nan)."""
+
+    def value(*xs):
+        try:
+            return f(*xs)
+        except (ValueError, ZeroDivisionError, OverflowError, TypeError):
+            return mpmath.mpf("nan")
+
+    return np.frompyfunc(value, nargs, 1)
+
+
+def _mp_atan2(y, x):
+    if isinstance(y, mpmath.mpc) or isinstance(x, mpmath.mpc):
+        return mpmath.mpf("nan")  # atan2 is a real function
+    return mpmath.atan2(y, x)
+
+
+class _MpComplex(_Mp):
+    """mpmath at MP_DIGITS digits on principal branches, complex values kept: the confirming
+    evaluation of a question judged in complex arithmetic."""
+
+    name = "mpmath"
+    sin, cos, tan = _mp_complex(mpmath.sin), _mp_complex(mpmath.cos), _mp_complex(mpmath.tan)
+    exp, log = _mp_complex(mpmath.exp), _mp_complex(mpmath.log)
+    asin, acos, atan = _mp_complex(mpmath.asin), _mp_complex(mpmath.acos), _mp_complex(mpmath.atan)
+    sinh, cosh = _mp_complex(mpmath.sinh), _mp_complex(mpmath.cosh)
+    tanh, sqrt = _mp_complex(mpmath.tanh), _mp_complex(mpmath.sqrt)
+    asinh, acosh = _mp_complex(mpmath.asinh), _mp_complex(mpmath.acosh)
+    atanh, sign = _mp_complex(mpmath.atanh), _mp_complex(mpmath.sign)
+    atan2, power = _mp_complex(_mp_atan2, 2), _mp_complex(mpmath.power, 2)
+
+
 FLOAT = _Float
 MP = _Mp
+#: The same, in complex arithmetic on principal branches (`Points.complex_values`).
+COMPLEX = _Complex
+MP_COMPLEX = _MpComplex
 
 
 def extreme(op: str, values: Sequence, backend=FLOAT):

@@ -1,7 +1,10 @@
 """Exact equivalence of expressions that are rational functions of their symbols and of sin, cos,
 tan (and cot, sec, csc) of integer combinations of them: exact rational arithmetic at random
 rational points, no rounding anywhere. The first stage of the default method
-(`lagrade.judge.adaptive.ExactThenAdaptive`); None for anything outside that class.
+(`lagrade.judge.adaptive.ExactThenAdaptive`); None for anything outside that class, and for a
+pair whose exact evaluation would cost too much (`MAX_TRIG_DEGREE`, `MAX_EXACT_WORK`): exact
+numbers grow with every power and every multiple of a trig argument, and a right answer must
+never run out of time here; the high-precision stage decides such pairs as surely.
 """
 
 from __future__ import annotations
@@ -34,6 +37,15 @@ _TRIG = (sp.sin, sp.cos, sp.tan, sp.cot, sp.sec, sp.csc)
 #: The highest power the exact test raises a random rational to (53-bit points: the result has
 #: up to 53 × n bits); higher powers go to the adaptive test, whose mpmath has no such cost.
 MAX_EXACT_POWER = 2_000
+#: The highest multiple n of a trig argument once every symbol is scaled to its unit: sin(n y)
+#: expands into a polynomial of degree n in sin y and cos y, and its exact value at a rational
+#: point into numbers of some 200 n bits (sin(10^6 t), sin(x/1000 + x/999) = sin(1999 y): none
+#: of that is computed; the high-precision stage takes the pair).
+MAX_TRIG_DEGREE = 48
+#: The estimated work of evaluating the pair once at a rational point (`exact_work`), in units
+#: of about 0.1 ns on this machine's 2 cores: 3·10^8 is some 30 ms per point. Above it the pair
+#: goes to the high-precision stage, which has no such growth.
+MAX_EXACT_WORK = 3e7
 
 
 class _OutOfScope(Exception):
@@ -80,17 +92,25 @@ def _is_linear(arg: sp.Expr) -> bool:
     return True
 
 
-def _trig_units(exprs: Iterable[sp.Expr]) -> dict[sp.Symbol, int]:
+def _trig_units(exprs: Iterable[sp.Expr]) -> tuple[dict[sp.Symbol, int], int]:
     """For each symbol inside a trig argument, the lcm of the denominators of its coefficients
-    there: with x = L·y every argument becomes an integer combination of the y's."""
+    there: with x = L·y every argument becomes an integer combination Σ n_i y_i of the y's; and
+    the largest Σ |n_i| over the arguments, the degree of the polynomial in sin y_i, cos y_i
+    that expand_trig makes of them (read in the same pass, before anything is expanded)."""
     units: dict[sp.Symbol, int] = {}
+    arguments: list[dict[sp.Symbol, sp.Rational]] = []
     for e in exprs:
         for f in e.atoms(*_TRIG):
             arg = f.args[0]
-            for s in arg.free_symbols:
-                q = sp.Rational(arg.coeff(s)).q
-                units[s] = math.lcm(units.get(s, 1), int(q))
-    return units
+            coefficients = {s: sp.Rational(arg.coeff(s)) for s in arg.free_symbols}
+            arguments.append(coefficients)
+            for s, c in coefficients.items():
+                units[s] = math.lcm(units.get(s, 1), int(c.q))
+    degree = max(
+        (sum(abs(c) * units[s] for s, c in coefficients.items()) for coefficients in arguments),
+        default=0,
+    )
+    return units, int(math.ceil(degree))
 
 
 def _pi_free(expr: sp.Expr) -> bool:
@@ -165,13 +185,17 @@ def _flatten_monomials(answer: sp.Expr, reference: sp.Expr) -> tuple[sp.Expr, sp
 
 
 def _weierstrass_ready(answer: sp.Expr, reference: sp.Expr) -> tuple[sp.Expr, sp.Expr]:
-    """Both expressions with trig arguments reduced to single symbols (x = L·y, expand_trig)."""
+    """Both expressions with trig arguments reduced to single symbols (x = L·y, expand_trig).
+    _OutOfScope when an argument is a multiple beyond `MAX_TRIG_DEGREE` (checked before
+    expand_trig, whose own work grows with it)."""
     answer, reference = _flatten_monomials(answer, reference)
-    units = _trig_units((answer, reference))
+    units, degree = _trig_units((answer, reference))
+    if degree > MAX_TRIG_DEGREE:
+        raise _OutOfScope(f"a trig argument {degree} times a symbol: too costly exactly")
     scale = {s: units[s] * sp.Dummy(s.name, real=True) for s in units if units[s] != 1}
+    scaled = [e.xreplace(scale) if scale else e for e in (answer, reference)]
     out = []
-    for e in (answer, reference):
-        e = e.xreplace(scale) if scale else e
+    for e in scaled:
         if not e.atoms(*_TRIG):  # a rational function already (π passed only inside trig)
             out.append(e)
             continue
@@ -184,6 +208,104 @@ def _weierstrass_ready(answer: sp.Expr, reference: sp.Expr) -> tuple[sp.Expr, sp
         out.append(e)
     # Symbols scaled by L keep their domain through the original symbol (see _exact_compare).
     return out[0], out[1]
+
+
+def exact_work(program: ev.Program, bits: Mapping[sp.Basic, tuple[int, int]]) -> float:
+    """An estimate of the work of running `program` once on Fractions, from the bits of each
+    input's numerator and denominator (`bits`), in 30-bit digits: a product or a sum of
+    fractions normalises by gcd, quadratic in their digits; a power is repeated squaring,
+    Karatsuba's n^1.585, without gcd. A denominator is followed as the product of the factors
+    it is made of, so that a sum over a common denominator (a polynomial's terms) stays the
+    size of its terms while a sum of 1/(x + k)^50 over k grows with every term, as the exact
+    numbers do."""
+    if _small(program, bits):
+        return 0.0
+    sizes: list[tuple[int, dict]] = []
+    work = 0.0
+    for k, instr in enumerate(program.code):
+        op = instr[0]
+        if op == "in":  # a float read exactly: its denominator is a power of two
+            num, den = bits.get(instr[1], (64, 64))
+            size = (num, {"two": den})
+        elif op == "const":
+            value = instr[1]
+            num, q = (
+                (abs(int(value.p)), int(value.q))
+                if isinstance(value, sp.Rational)
+                else (2**64, 2**64)
+            )
+            size = (num.bit_length(), {("const", q): q.bit_length()} if q != 1 else {})
+        elif op in ("add", "mul"):
+            num, den = sizes[instr[1][0]]
+            for j in instr[1][1:]:
+                n, d = sizes[j]
+                if op == "mul":
+                    num, den = num + n, _merged(den, d, lambda a, b: a + b)
+                else:  # over the lcm of the denominators
+                    both = _merged(den, d, max)
+                    total = sum(both.values())
+                    num, den = max(num - sum(den.values()), n - sum(d.values())) + total + 1, both
+                work += ((num + sum(den.values())) / 30) ** 2
+            size = (num, den)
+        elif op == "powi":
+            num, den = sizes[instr[1]]
+            e = abs(instr[2])
+            if instr[2] >= 0:
+                size = (num * e, {f: b * e for f, b in den.items()})
+            else:  # the base's numerator becomes a denominator of its own
+                size = (sum(den.values()) * e, {k: num * e})
+            work += 3 * ((size[0] + sum(size[1].values())) / 30) ** 1.585
+        else:  # never reached: such programs are out of scope
+            size = (64, {k: 64})
+        sizes.append(size)
+    return work
+
+
+def _small(program: ev.Program, bits: Mapping[sp.Basic, tuple[int, int]]) -> bool:
+    """A quick bound that settles most pairs: every number's bits taken as their worst
+    (denominators multiplied out in every sum), and still no instruction's work could bring the
+    whole program near `MAX_EXACT_WORK`."""
+    sizes: list[int] = []
+    for instr in program.code:
+        op = instr[0]
+        if op == "in":
+            size = sum(bits.get(instr[1], (64, 64)))
+        elif op == "const":
+            value = instr[1]
+            size = (
+                int(abs(value.p)).bit_length() + int(value.q).bit_length()
+                if isinstance(value, sp.Rational)
+                else 128
+            )
+        elif op in ("add", "mul"):
+            size = sum(sizes[k] for k in instr[1]) + len(instr[1])
+        elif op == "powi":
+            size = sizes[instr[1]] * abs(instr[2])
+        else:
+            size = 128
+        if size > _SMALL_BITS:
+            return False
+        sizes.append(size)
+    return len(sizes) * (_SMALL_BITS / 30) ** 2 <= MAX_EXACT_WORK
+
+
+#: The bits below which the quick bound of `_small` settles a program of a few hundred
+#: instructions as cheap.
+_SMALL_BITS = 3_000
+
+
+def _merged(a: dict, b: dict, combine) -> dict:
+    out = dict(a)
+    for key, value in b.items():
+        out[key] = combine(out[key], value) if key in out else value
+    return out
+
+
+def _fraction_bits(lo: float, hi: float) -> tuple[int, int]:
+    """Bits of the numerator and denominator of a float drawn in (lo, hi), read exactly: a
+    53-bit mantissa over 2^(53 − e) for a binary exponent e below 53, an integer above."""
+    e = math.frexp(max(abs(lo), abs(hi), 1e-300))[1]
+    return (max(53, e), max(0, 53 - e))
 
 
 def _exact_compare(
@@ -199,7 +321,10 @@ def _exact_compare(
     placeholder set from the half-angle tangent u, the pair is compiled once by the project's
     evaluator (`pair`, when given, is a and b compiled already) and run on Fractions: no sympy
     arithmetic per point."""
-    symbols = sorted_symbols(a, b)
+    if pair is not None and not trig:  # its symbols are the pair's, found when it was compiled
+        symbols = sorted(pair.symbols, key=lambda s: s.name)
+    else:
+        symbols = sorted_symbols(a, b)
     atoms = [f for e in (a, b) for f in e.atoms(*_TRIG)] if trig else []
     trig_syms = sorted({f.args[0] for f in atoms}, key=str)
     stand_in = {f(y): sp.Dummy(f"{f.__name__}_{y}") for y in trig_syms for f in _TRIG}
@@ -210,9 +335,15 @@ def _exact_compare(
         return None
     if any(op[0] not in _RATIONAL_OPS for op in program.code):
         return None
-    alone: list[ev.Program] = []  # each side on its own, for a point where one is undefined
     ranges = [(s, _domain_of(s, domains).sample_range()) for s in symbols]
     half_tan = [(y, _half_tan_range(*_domain_of(y, domains).sample_range())) for y in trig_syms]
+    bits = {s: _fraction_bits(lo, hi) for s, (lo, hi) in ranges}
+    for y, (lo, hi) in half_tan:  # sin y = 2u/(1 + u²): twice the bits of u, and a few
+        u_num, u_den = _fraction_bits(lo, hi)
+        bits |= {stand_in[f(y)]: (2 * (u_num + u_den) + 2,) * 2 for f in _TRIG}
+    if exact_work(program, bits) > MAX_EXACT_WORK:
+        return None  # the high-precision stage decides this pair as surely, in bounded time
+    alone: list[ev.Program] = []  # each side on its own, for a point where one is undefined
     done = 0
     for _ in range(points * 4):
         env: dict[sp.Basic, Fraction] = {}

@@ -1,7 +1,12 @@
 """Which of a question's mutants the catalogue keeps: those the part's test can tell from the
 right answer and from every mutant kept before them (the first, most specific, wins), decided by
 fingerprint at the part's sample points. A filter sees the mutants in catalogue order and
-remembers what it kept, so a lazily built catalogue keeps exactly what a whole one keeps."""
+remembers what it kept, so a lazily built catalogue keeps exactly what a whole one keeps.
+
+Two mutants that differ by a factor are both kept (a Lagrangian's E, an equation's row, not
+normalised): the part's test cannot tell them apart, but which one is true of what the student
+wrote depends on the student's own scale (`matching.row_fix_is_right`) — for m r² θ̈ + m r ṙ θ̇,
+"2 m r ṙ θ̇ is half what it should be", not "m r² θ̈ is twice too large"."""
 
 from __future__ import annotations
 
@@ -36,12 +41,12 @@ class Catalogue(Protocol):
 def fingerprint(
     catalogue: Catalogue, compiled: Compiled, mode: str, points: Points
 ) -> np.ndarray | None:
-    """What the part's test sees of an answer: E(L) normalised (L is judged up to a factor),
-    plain values, or values up to a constant per parameter group (V)."""
+    """What the part's test sees of an answer: E(L) (at the scale written: a multiple of a
+    mutant is another explanation), plain values, or values up to a constant per parameter
+    group (V)."""
     if mode == "el":
         v = catalogue.el_values(compiled, points)[0].ravel()
-        norm = np.linalg.norm(v)
-        return None if norm == 0 else v / norm * np.sign(v[np.argmax(np.abs(v))])
+        return None if not np.any(v) else np.asarray(v, float)
     v = np.asarray(catalogue.values(compiled, points)[0], float)
     if mode == "offset":
         v = v - v[np.searchsorted(points.group, points.group)]
@@ -86,7 +91,8 @@ def keeper(
 
 def same_dynamics(catalogue: Catalogue, m: Mutant, reference: Compiled, points: Points) -> bool:
     """A 'mistake' whose Euler–Lagrange equations are a multiple of the reference's is no
-    mistake: the Lagrangian check accepts it, so the catalogue must not name it. The float64
+    mistake: the Lagrangian check accepts it (or, negative, names the convention), so the
+    catalogue must not name it. The float64
     values of both are the ones the fingerprints were made from (computed once, not again per
     mutant); only a test that float64 cannot settle evaluates anew at high precision."""
     jets = catalogue.problem.jets
@@ -99,12 +105,16 @@ def same_dynamics(catalogue: Catalogue, m: Mutant, reference: Compiled, points: 
 
     answer_el = catalogue.el_values(mutant, points)
     match = lagrangians_match(mutant, reference_values, jets, points, answer_el=answer_el)
-    return bool(match.outcome.equal) and all(c > 0 for c in match.factors)
+    # c < 0 too: V − T has the right motion in the wrong convention, which the L check names
+    factors = match.factors
+    same_sign = all(c > 0 for c in factors) or all(c < 0 for c in factors)
+    return bool(match.outcome.equal) and bool(factors) and same_sign
 
 
 def row_keeper(catalogue: Catalogue) -> Callable[[tuple[int, Mutant]], bool]:
     """`keeper` for row mutants: a mutated row that still follows from the right equations
-    changes nothing, and rows equal up to sign are duplicates."""
+    changes nothing, and equal rows are duplicates (rows that differ by a factor are not: see
+    the module's docstring)."""
     p = catalogue.problem
     seen: list[np.ndarray] = []
 
@@ -118,15 +128,13 @@ def row_keeper(catalogue: Catalogue) -> Callable[[tuple[int, Mutant]], bool]:
         r, s = in_span(rows, p.reference_rows(points), 0)
         if np.all(np.abs(r) <= 1e-8 * s):
             return False  # the mutated row is still a consequence of the right equations
-        fp = rows.coef[:, 0, :].ravel()
+        fp = rows.coef[:, 0, :].ravel().astype(float)
         norm = np.linalg.norm(fp)
         if not np.isfinite(norm) or norm == 0:
             return False
-        fp = fp / norm
         if seen:
             kept = np.asarray(seen)
-            apart = np.minimum(np.linalg.norm(kept - fp, axis=1), np.linalg.norm(kept + fp, axis=1))
-            if np.any(apart < 1e-8):
+            if np.any(np.linalg.norm(kept - fp, axis=1) < 1e-8 * norm):
                 return False
         seen.append(fp)
         return True

@@ -12,7 +12,7 @@ from typing import Any
 import numpy as np
 
 from lagrade.judge.evaluate import UnsupportedExpression
-from lagrade.judge.rows import Rows
+from lagrade.judge.rows import Rows, outside_span
 from lagrade.judge.sampling import Points
 
 # What a mutant may raise when it is compiled or evaluated: such a mutant is never matched.
@@ -84,6 +84,18 @@ def lagrangian_arrays(Eb: np.ndarray, Sb: np.ndarray, group: np.ndarray) -> tupl
 def first_lagrangian(stack: Stack, answer_el: tuple[np.ndarray, np.ndarray]):
     """The first mutant with E(answer) = c E(mutant), c ≠ 0 per parameter group, given E(answer)
     and its size at the points."""
+    return stack.first(_lagrangians_ok(stack, answer_el))
+
+
+def every_lagrangian(stack: Stack, answer_el: tuple[np.ndarray, np.ndarray]) -> list[tuple]:
+    """Every mutant `first_lagrangian` would accept, in catalogue order, each with its E and
+    the size of its terms at the points: (mutant, E, size)."""
+    Eb, Sb = stack.arrays[:2]
+    hits = np.flatnonzero(_lagrangians_ok(stack, answer_el))
+    return [(stack.candidates[stack.index[h]], Eb[h], Sb[h]) for h in hits]
+
+
+def _lagrangians_ok(stack: Stack, answer_el: tuple[np.ndarray, np.ndarray]) -> np.ndarray:
     Ea, Sa = answer_el
     Eb, Sb, den, in_group, group_of = stack.arrays
     with np.errstate(all="ignore"):
@@ -92,8 +104,30 @@ def first_lagrangian(stack: Stack, answer_el: tuple[np.ndarray, np.ndarray]):
         c = np.einsum("mpk,pk->mp", Eb, Ea) @ in_group / den  # (mutants, groups)
         ok = np.all((den != 0) & (np.abs(c) >= 1e-9), axis=1)
         c = c[:, group_of, None]  # per point: (mutants, points, 1)
-        ok &= vanish_rows(Ea - c * Eb, Sa + np.abs(c) * Sb)
-    return stack.first(ok)
+        return ok & vanish_rows(Ea - c * Eb, Sa + np.abs(c) * Sb)
+
+
+def lagrangian_fix_is_right(
+    answer_el: tuple[np.ndarray, np.ndarray],
+    mutant_el: tuple[np.ndarray, np.ndarray],
+    reference_el: tuple[np.ndarray, np.ndarray],
+    group: np.ndarray,
+) -> bool:
+    """Whether undoing the mistake in the student's L as written — removing what the mistake
+    changed, L_mut − L, at the scale its message prints it, not after rescaling the student's
+    L to the mutant — leaves a right L: E(L′) − E(L_mut − L) = c E(L), c > 0 per group. (For
+    ½ m ẋ² − k x², "−k x²/2 is twice too large" is true; "m ẋ²/2 is half what it should be"
+    is true only of the student's L doubled.)"""
+    (Ea, Sa), (Eb, Sb), (Er, Sr) = answer_el, mutant_el, reference_el
+    with np.errstate(all="ignore"):
+        fixed = Ea - (Eb - Er)
+        size = Sa + Sb + Sr
+        num = np.bincount(group, np.sum(fixed * Er, axis=1))
+        den = np.bincount(group, np.sum(Er * Er, axis=1))
+        c = num / den
+        if not (np.all(np.isfinite(c)) and np.all(c > 0)):
+            return False
+        return bool(vanish_rows((fixed - c[group][:, None] * Er)[None], size[None])[0])
 
 
 # --- values: equal, or equal up to a constant per parameter group ---------------------------------
@@ -137,6 +171,15 @@ def first_row(stack: Stack, student: Rows, group: np.ndarray | None = None):
     and whose mutated row is the one the student's equation is for (`is_for_row`): a Kepler θ
     equation without 2 m r ṙ θ̇ lies in the span of {r equation without m r̈, θ equation},
     but naming the r equation would be false."""
+    found = every_row(stack, student, group, first_only=True)
+    return found[0][0] if found else None
+
+
+def every_row(
+    stack: Stack, student: Rows, group: np.ndarray | None = None, first_only: bool = False
+) -> list[tuple]:
+    """Every (row, mutant) `first_row` would accept, in catalogue order, each with its mutated
+    row at the points: ((row, mutant), row coefficients (points, n + 1))."""
     Q, rel_ref, R = stack.arrays
     x, xs = student.coef[:, 0, :].astype(float), student.size[:, 0].astype(float)
     with np.errstate(all="ignore"):
@@ -146,11 +189,35 @@ def first_row(stack: Stack, student: Rows, group: np.ndarray | None = None):
         r = np.linalg.norm(res, axis=2)
         size = xs + np.linalg.norm(x, axis=1) * rel_ref
         ok = vanish_rows(r, size)
+    found = []
     for hit in np.flatnonzero(ok):
         candidate = stack.candidates[stack.index[hit]]
         if is_for_row(x, R[hit], candidate[0], group):
-            return candidate
-    return None
+            found.append((candidate, R[hit][:, candidate[0], :]))
+            if first_only:
+                break
+    return found
+
+
+def row_fix_is_right(
+    student: Rows, mutated_row: np.ndarray, i: int, reference: Rows, basis: tuple
+) -> bool:
+    """Whether undoing the mistake in the student's equation as written — removing what the
+    mistake changed in row i, Δ = mutated row − reference row, at the scale its message prints
+    it (either side of the student's `=` may hold the terms), not after rescaling the student's
+    row to the mutated one — leaves a right equation (in the span of the reference rows). For
+    m r² θ̈ + m r ṙ θ̇ = 0, "2 m r ṙ θ̇ is half what it should be" is true; "m r² θ̈ is twice
+    too large" is true only of the student's equation doubled. `basis`: the reference rows'
+    `span_basis`."""
+    x, xs = student.coef[:, 0, :].astype(float), student.size[:, 0].astype(float)
+    with np.errstate(all="ignore"):
+        delta = mutated_row - reference.coef[:, i, :].astype(float)
+        scale = xs + np.linalg.norm(delta, axis=1) + reference.size[:, i].astype(float)
+        for sign in (1.0, -1.0):
+            r, s = outside_span(x - sign * delta, scale, basis)
+            if vanish_rows(r[None], s[None])[0]:
+                return True
+    return False
 
 
 def is_for_row(x: np.ndarray, R: np.ndarray, i: int, group: np.ndarray | None) -> bool:

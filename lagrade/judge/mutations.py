@@ -4,7 +4,7 @@ students write for it, each with the sentence that names the mistake in the stud
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Iterator, Sequence
+from collections.abc import Callable, Iterable, Iterator, Sequence
 from dataclasses import dataclass
 
 import sympy as sp
@@ -28,6 +28,9 @@ class Mutant:
     message: str
     base: sp.Expr
     pieces: tuple[tuple[sp.Rational, sp.Expr], ...] = ()
+    #: How many terms of the reference the mistake changes, where the kind says (one term of a
+    #: single-term mistake, whatever its pieces); else counted from the change (`terms_changed`).
+    changes: int | None = None
 
     @property
     def expr(self) -> sp.Expr:
@@ -39,6 +42,30 @@ class Mutant:
             cached = sp.Add(self.base, *(c * e for c, e in self.pieces))
             object.__setattr__(self, "_expr", cached)
         return cached
+
+
+def terms_changed(
+    m: Mutant, reference: sp.Expr, counts: Callable[[sp.Expr], bool] | None = None
+) -> int:
+    """How many terms of `reference` the mistake m changes — those `counts` says matter (in L a
+    constant term changes no motion) — : of two true explanations of a wrong answer, the one
+    that changes fewer terms of what the student wrote is the one to name."""
+    if m.changes is not None:
+        return m.changes
+    change = sp.expand(sp.Add(*(c * e for c, e in m.pieces)) if m.pieces else m.expr - reference)
+    if change.has(sp.sin) and change.has(sp.cos):
+        change = sp.expand(_without_sin_squared(change))  # a body's T has sin² + cos² in it
+    terms = sp.Add.make_args(change)
+    return max(1, sum(1 for term in terms if counts is None or counts(term)))
+
+
+def _without_sin_squared(expr: sp.Expr) -> sp.Expr:
+    """expr with sin(u)^n written (1 − cos(u)²) sin(u)^(n−2): sin² + cos² becomes 1 once
+    expanded, at a fraction of trigsimp's cost."""
+    return expr.replace(
+        lambda e: e.is_Pow and isinstance(e.base, sp.sin) and e.exp.is_Integer and e.exp >= 2,
+        lambda e: (1 - sp.cos(e.base.args[0]) ** 2) * sp.sin(e.base.args[0]) ** (e.exp - 2),
+    )
 
 
 def swap_sin_cos(expr: sp.Expr) -> sp.Expr:
@@ -91,6 +118,7 @@ def iter_term_mutants(
                 f"the term {shown} in {what} has the wrong sign",
                 base,
                 ((-two, term),),
+                1,
             )
         )
         if term.has(sp.sin) or term.has(sp.cos):
@@ -102,6 +130,7 @@ def iter_term_mutants(
                         f"sin and cos are swapped in the term {shown} of {what}",
                         base,
                         ((-one, term), (one, swapped)),
+                        1,
                     )
                 )
         for p in _factors(term, parameters):
@@ -111,12 +140,19 @@ def iter_term_mutants(
                     f"the term {shown} in {what} lacks the factor {p}",
                     base,
                     ((-one, term), (one, term / p)),
+                    1,
                 )
             )
-        out.append(Mutant("missing_term", f"{what} lacks the term {shown}", base, ((-one, term),)))
+        out.append(
+            Mutant("missing_term", f"{what} lacks the term {shown}", base, ((-one, term),), 1)
+        )
         out.append(
             Mutant(
-                "factor_two", f"the term {shown} in {what} is twice too large", base, ((one, term),)
+                "factor_two",
+                f"the term {shown} in {what} is twice too large",
+                base,
+                ((one, term),),
+                1,
             )
         )
         out.append(
@@ -125,6 +161,7 @@ def iter_term_mutants(
                 f"the term {shown} in {what} is half what it should be",
                 base,
                 ((-half, term),),
+                1,
             )
         )
         yield from out

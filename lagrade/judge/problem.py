@@ -25,7 +25,7 @@ import sympy as sp
 
 from lagrade.bank.registry import get_scene
 from lagrade.bank.scenefile import scene_from_text, sha256
-from lagrade.errors import LagradeError, ParseError, RequestError
+from lagrade.errors import LagradeError, ParseError, ReferenceUndefined, RequestError
 from lagrade.judge.catalogue import Catalogue
 from lagrade.judge.compiled import Compiled, finite_mask
 from lagrade.judge.rows import Rows, equation_rows
@@ -193,9 +193,28 @@ class Problem:
         handout value (an L without m is wrong even when m = 1 kg)."""
         cache = self.__dict__.setdefault("_points", {})
         if part not in cache:
-            free = frozenset(self.domains)
-            cache[part] = self.space.draw(seed_for(self.key, part), free, self._validity(part))
+            cache[part] = self._draw(part)
         return cache[part]
+
+    def _draw(self, part: str) -> Points:
+        """An expression is compared on principal branches in complex arithmetic: a complex
+        value of the reference is a value (docs/formats.md). Its points are drawn where the
+        reference is real when it is somewhere (the catalogue's slips and the values quoted in
+        feedback are real; the default method compares the complex branches on its own), and
+        where it has any value — complex on the whole domain (log(-x)), or with the imaginary
+        unit declared — otherwise. Mechanics (L, its equations, momenta) is real."""
+        seed, free = seed_for(self.key, part), frozenset(self.domains)
+        if not (self.kind == "expression" or part == "expression"):
+            return self.space.draw(seed, free, self._validity(part))
+        if self.imaginary_unit is None:
+            try:
+                return self.space.draw(seed, free, finite_mask([self.reference_expression]))
+            except ReferenceUndefined:
+                pass  # complex wherever it has a value
+        valid = finite_mask([self.reference_expression], complex_values=True)
+        points = self.space.draw(seed, free, valid)
+        points.complex_values = True
+        return points
 
     def _validity(self, part: str):
         if self.kind == "expression" or part == "expression":

@@ -121,16 +121,34 @@ def in_span(student: Rows, reference: Rows, k: int, backend=FLOAT) -> tuple[np.n
     return r, s
 
 
-def _in_span_float(x: np.ndarray, size: np.ndarray, R: np.ndarray, R_size: np.ndarray):
-    """in_span for all points at once: x (points, n+1), R (points, m, n+1)."""
+def span_basis(reference: Rows) -> tuple[np.ndarray, np.ndarray]:
+    """An orthonormal basis Q (points, n + 1, m) of the reference rows at each point, and the
+    relative size of their terms (points,): what `outside_span` needs of them, made once."""
+    return _basis(reference.coef.astype(float), reference.size.astype(float))
+
+
+def outside_span(x: np.ndarray, size: np.ndarray, basis: tuple[np.ndarray, np.ndarray]):
+    """The part of rows x (points, n + 1) outside the span of the reference rows (given by
+    their `span_basis`), and its size, per point, in float64 (`in_span` for arrays)."""
+    Q, rel_ref = basis
+    with np.errstate(all="ignore"):
+        res = x - np.einsum("pij,pj->pi", Q, np.einsum("pji,pj->pi", Q, x))
+        return np.linalg.norm(res, axis=1), size + np.linalg.norm(x, axis=1) * rel_ref
+
+
+def _basis(R: np.ndarray, R_size: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     with np.errstate(all="ignore"):
         Q, _ = np.linalg.qr(np.transpose(R, (0, 2, 1)))  # (points, n+1, m): basis of the rows
-        res = x - np.einsum("pij,pj->pi", Q, np.einsum("pji,pj->pi", Q, x))
         ref_norm = np.linalg.norm(R, axis=2)
         rel_ref = np.max(
             np.where(ref_norm > 0, R_size / np.where(ref_norm > 0, ref_norm, 1), 0), axis=1
         )
-        return np.linalg.norm(res, axis=1), size + np.linalg.norm(x, axis=1) * rel_ref
+    return Q, rel_ref
+
+
+def _in_span_float(x: np.ndarray, size: np.ndarray, R: np.ndarray, R_size: np.ndarray):
+    """in_span for all points at once: x (points, n+1), R (points, m, n+1)."""
+    return outside_span(x, size, _basis(R, R_size))
 
 
 def _norm(v):

@@ -14,7 +14,7 @@ import numpy as np
 import sympy as sp
 
 from lagrade.errors import ReferenceUndefined
-from lagrade.judge.evaluate import FLOAT, MP
+from lagrade.judge.evaluate import COMPLEX, FLOAT, MP, MP_COMPLEX
 from lagrade.mechanics.domains import Domain
 from lagrade.mechanics.lagrange import Jet, t
 
@@ -64,6 +64,8 @@ class Space:
         Parameters in `free` (default: all) are drawn from their domains; the others keep the
         variant's values when it has them. Points where `valid` (the reference is finite) says
         no are redrawn; a group whose parameters leave the reference undefined is redrawn whole.
+        Groups still missing then are searched for where the reference is defined on a small
+        part of the box only (`_search`).
         """
         rng = np.random.default_rng(seed)
         free_set = set(self.parameters) if free is None else set(free)
@@ -88,6 +90,8 @@ class Space:
                 if ok.all():
                     chosen.append(block)
                     break
+        if valid is not None and len(chosen) < groups:
+            chosen += self._search(rng, free_set, valid, groups - len(chosen), per_group)
         if len(chosen) < max(1, groups // 2):
             raise ReferenceUndefined(
                 "the reference answer is undefined at every point drawn from the declared domains"
@@ -95,6 +99,66 @@ class Space:
         env = {s: np.concatenate([b[s] for b in chosen]) for s in chosen[0]}
         group = np.repeat(np.arange(len(chosen)), per_group)
         return Points(env, group)
+
+    def _search(self, rng, free: set, valid: Callable, missing: int, per_group: int) -> list:
+        """Up to `missing` groups where the reference is defined, by rejection sampling over
+        sub-boxes: where it is defined on a small part of the box only (the pendulum's
+        sqrt(l² − x²) with |x| < l = 0.1, a product of square roots of signed parameters: a
+        sixteenth of the box), a pilot of points spread over the whole box (each with its own
+        parameters, near 0 included) finds that part; each group takes the parameters of one
+        pilot point that lands in it, and its other points are drawn in ever smaller boxes
+        around that point, keeping those where the reference is defined."""
+        for widen in WIDEN:
+            box = self._box(free, widen)
+            for n in PILOT:
+                pilot = self._uniform(rng, box, n)
+                inside = np.flatnonzero(valid(pilot))
+                if inside.size:
+                    rng.shuffle(inside)
+                    return [
+                        self._around(rng, pilot, int(i), box, valid, per_group)
+                        for i in inside[:missing]
+                    ]
+        return []
+
+    def _box(self, free: set, widen: float) -> dict:
+        """The range of every variable drawn per point: free parameters, q, q̇, q̈ and t; a
+        parameter that is not free keeps its value (a range of one point)."""
+        box = {}
+        for s, dom in self.parameters.items():
+            fixed = s not in free and s in self.values
+            box[s] = (float(self.values[s]),) * 2 if fixed else dom.sample_range(widen)
+        for j in self.jets:
+            box[j.q] = self.coordinate_domains.get(j.name) or coordinate_range(j.name)
+            box[j.dot] = box[j.ddot] = (-2.0, 2.0)
+        box[t] = (0.1, 3.0)
+        return box
+
+    @staticmethod
+    def _uniform(rng, box: Mapping, n: int) -> dict:
+        return {s: rng.uniform(lo, hi, n) for s, (lo, hi) in box.items()}
+
+    def _around(self, rng, pilot: dict, i: int, box: Mapping, valid: Callable, k: int) -> dict:
+        """A group with pilot point i's parameters: that point, and k − 1 points where the
+        reference is defined drawn in boxes around it, 1/8, 1/32, then 1/128 of each range wide
+        (the point itself again when none is found: a repeated point, never a wrong one)."""
+        block = {s: np.full(k, v[i]) for s, v in pilot.items()}
+        have = 1
+        motion = [s for s in box if s not in self.parameters]
+        for share in (1 / 8, 1 / 32, 1 / 128):
+            if have == k or not motion:
+                break
+            near = {s: np.full(SUB_BOX_DRAWS, v[i]) for s, v in pilot.items()}
+            for s in motion:
+                lo, hi = box[s]
+                half = share * (hi - lo) / 2
+                centre = pilot[s][i]
+                near[s] = rng.uniform(max(lo, centre - half), min(hi, centre + half), SUB_BOX_DRAWS)
+            good = np.flatnonzero(valid(near))[: k - have]
+            for s in motion:
+                block[s][have : have + good.size] = near[s][good]
+            have += good.size
+        return block
 
     def _group(
         self, rng, free: set, k: int, params_from: dict | None = None, widen: float = 1.0
@@ -119,6 +183,10 @@ class Space:
 #: How far the unbounded sides of the domains are stretched on successive attempts to find
 #: points where the reference is defined (two attempts each): the physical scale first.
 WIDEN = (1.0, 10.0, 100.0)
+#: Points of the pilots that look for the part of the box where a reference is defined, and
+#: candidates drawn per sub-box around a point found there.
+PILOT = (512, 8192)
+SUB_BOX_DRAWS = 64
 
 
 def _away_from_zero(rng, lo: float, hi: float, k: int) -> np.ndarray:
@@ -132,18 +200,27 @@ def _away_from_zero(rng, lo: float, hi: float, k: int) -> np.ndarray:
 
 @dataclass
 class Points:
-    """Sample points as arrays, one entry per point, and the parameter group of each point."""
+    """Sample points as arrays, one entry per point, and the parameter group of each point.
+    `complex_values`: the reference is complex at some of them (a logarithm or root of a
+    negative number, the declared imaginary unit), so values there are compared in complex
+    arithmetic on principal branches (`backends`)."""
 
     env: dict[sp.Symbol, np.ndarray]
     group: np.ndarray
     _mp_env: dict | None = None
+    complex_values: bool = False
 
     @property
     def n(self) -> int:
         return len(self.group)
 
+    @property
+    def backends(self) -> tuple:
+        """(float, high precision) backends the values at these points are computed in."""
+        return (COMPLEX, MP_COMPLEX) if self.complex_values else (FLOAT, MP)
+
     def arrays(self, backend=FLOAT) -> dict:
-        if backend is FLOAT:
+        if backend is FLOAT or backend is COMPLEX:
             return self.env
         if self._mp_env is None:
             self._mp_env = {s: MP.array(v) for s, v in self.env.items()}

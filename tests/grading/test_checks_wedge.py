@@ -282,3 +282,11 @@ def test_seeded_variant_uses_its_names_and_wants_symbols():
     assert v.status == "incorrect"
     assert any("handout's value for g;" in f for f in v.feedback), v.feedback
     assert judge({"scene": "wedge", "seed": 3}, "lagrangian", "x_M_dot^2").status == "invalid"
+
+
+@pytest.mark.parametrize("factor, shown", [("10^40", "1e+40"), ("10^-40", "1e-40")])
+def test_a_huge_or_tiny_factor_of_L_is_named_as_a_number(wedge_L_text, factor, shown):
+    # 1e40 printed through a fraction gave its 41 digits of rounding; 1e-40 printed as 0
+    v = judge(WEDGE, "lagrangian", f"{factor} ({wedge_L_text})")
+    assert v.status == "correct"
+    assert any(f"Your L is {shown} × (T − V)" in f for f in v.feedback), v.feedback

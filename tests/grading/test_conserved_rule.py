@@ -103,3 +103,44 @@ def test_the_command_line_asks_for_completeness_with_all(capsys):
     assert main(base) == 0
     assert main([*base, "--all"]) == 1
     assert "you gave 1" in capsys.readouterr().out
+
+
+@pytest.mark.parametrize(
+    "problem, answer",
+    [
+        # ℓ and ℓ/m (the angular momentum per unit mass, r² θ̇): one quantity, whatever m is
+        (KEPLER, [L_Z, "r^2 theta_dot"]),
+        (KEPLER, [L_Z, "G M r^2 theta_dot"]),
+        # the wedge's momentum and the velocity of the centre of mass, p_x/(M + m)
+        (WEDGE, [P_X, "((M + m) x_M_dot + m q_dot cos(alpha))/(M + m)"]),
+        (WEDGE, [P_X, "((M + m) x_M_dot + m q_dot cos(alpha))/m + g"]),
+        # the energy per unit mass beside the energy
+        (
+            KEPLER,
+            [
+                "1/2 m (r_dot^2 + r^2 theta_dot^2) - G M m / r",
+                "1/2 (r_dot^2 + r^2 theta_dot^2) - G M / r",
+            ],
+        ),
+    ],
+)
+def test_quantities_differing_by_a_parameter_factor_are_one_quantity(problem, answer):
+    """Independence on phase space: the parameters are fixed numbers, so Q and Q/m have
+    proportional gradients at every point of a parameter group; taken as variables they were
+    counted as two (fails on c5b4539: correct, score 1)."""
+    v = judge(problem, "conserved", answer)
+    assert v.status == "incorrect" and v.score == pytest.approx(0.5)
+    assert v.mistakes == ("dependent",)
+    assert "fixed combination" in v.feedback[0]
+
+
+def test_with_all_a_parameter_multiple_does_not_complete_the_set():
+    v = judge(KEPLER, "conserved", [L_Z, "r^2 theta_dot"], given=ALL)
+    assert v.status == "incorrect" and v.score == pytest.approx(0.25)
+    assert any("you gave 1" in f for f in v.feedback)
+
+
+def test_independent_quantities_with_parameters_stay_independent():
+    # ℓ and E/m: different functions on phase space, whatever the parameters
+    energy_per_mass = "1/2 (r_dot^2 + r^2 theta_dot^2) - G M / r"
+    assert judge(KEPLER, "conserved", [L_Z, energy_per_mass], given=ALL).status == "correct"

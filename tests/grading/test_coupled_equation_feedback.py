@@ -25,7 +25,9 @@ def test_the_wrong_equation_of_a_wedge_gets_its_numbers():
     answer = ["(M + m) X_ddot + m q_ddot cos(alpha) = 0", "q_ddot + 3 X_ddot = g q"]
     verdict = check({"scene": "wedge", "seed": 3}, "eom", answer, time_limit=None)
     assert verdict.status == "incorrect" and verdict.score == 0.5
-    (sentence,) = [f for f in verdict.feedback if f.startswith("Equation 2")]
+    (sentence, units) = [f for f in verdict.feedback if f.startswith("Equation 2")]
+    # g q is no acceleration: the dimension hint says so (issue 25), after the numbers
+    assert "g*q has units of m²/s²; the other terms m/s², an acceleration." in units
     sentence = unicodedata.normalize("NFD", sentence)  # dots as combining marks
     state = dict(re.findall("([Xq]\u0307?) = " + NUMBER, sentence))
     gives = re.search(

@@ -11,9 +11,10 @@ from lagrade.judge.compiled import Compiled
 from lagrade.judge.derivatives import euler_lagrange_values
 from lagrade.judge.evaluate import UnsupportedExpression
 from lagrade.judge.matching import is_for_row
-from lagrade.judge.mutations import Mutant, swap_sin_cos
+from lagrade.judge.mutations import Mutant, swap_sin_cos, terms_changed
 from lagrade.judge.problem import build_problem
 from lagrade.judge.rows import _in_span_float, equation_rows
+from lagrade.mechanics.lagrange import t
 from lagrade.notation.printer import plain
 
 from .conftest import HOOP, WEDGE, judge
@@ -212,30 +213,56 @@ def _slow_offset(mutants, a, sa, points):
 
 
 def _slow_lagrangian(problem, answer, points):
+    """One mutant at a time: E(answer) = c E(mutant), c ≠ 0 per group, and the mistake's fix
+    applied to the answer as written gives a right L; of those, the fewest terms changed
+    (constants aside), the first of equals."""
     Ea, Sa = euler_lagrange_values(answer, problem.jets, points.env)
+    Er, Sr = euler_lagrange_values(problem.L, problem.jets, points.env)
+    moving = {s for j in problem.jets for s in (j.q, j.dot)} | {t}
+
+    def per_group_fit(E, S, target, target_size):
+        r, size, factors = np.empty_like(E), np.empty_like(E), []
+        for g in np.unique(points.group):
+            rows = points.group == g
+            den = float(np.sum(target[rows] ** 2))
+            if den == 0:
+                return None
+            c = float(np.sum(E[rows] * target[rows])) / den
+            factors.append(c)
+            r[rows] = E[rows] - c * target[rows]
+            size[rows] = S[rows] + abs(c) * target_size[rows]
+        return factors if _vanishes(r, size) else None
 
     def test(m):
         Eb, Sb = euler_lagrange_values(Compiled.of(m.expr), problem.jets, points.env)
-        r, size = np.empty_like(Ea), np.empty_like(Ea)
-        for g in np.unique(points.group):
-            rows = points.group == g
-            den = float(np.sum(Eb[rows] ** 2))
-            if den == 0:
-                return False
-            c = float(np.sum(Ea[rows] * Eb[rows])) / den
-            if abs(c) < 1e-9:
-                return False
-            r[rows] = Ea[rows] - c * Eb[rows]
-            size[rows] = Sa[rows] + abs(c) * Sb[rows]
-        return _vanishes(r, size)
+        spans = per_group_fit(Ea, Sa, Eb, Sb)
+        if spans is None or any(abs(c) < 1e-9 for c in spans):
+            return False
+        fixed = per_group_fit(Ea - (Eb - Er), Sa + Sb + Sr, Er, np.zeros_like(Sr))
+        return fixed is not None and all(c > 0 for c in fixed)
 
-    return _one_at_a_time(problem.catalogue.lagrangian_mutants, test)
+    true = [m for m in problem.catalogue.lagrangian_mutants if _passes(test, m)]
+    counts = lambda term: bool(term.free_symbols & moving)  # noqa: E731
+    L = problem.catalogue.split.T - problem.catalogue.split.V
+    return min(true, key=lambda m: terms_changed(m, L, counts), default=None)
+
+
+def _passes(test, candidate) -> bool:
+    try:
+        with np.errstate(all="ignore"):
+            return bool(test(candidate))
+    except (UnsupportedExpression, ValueError, ZeroDivisionError, np.linalg.LinAlgError):
+        return False
 
 
 def _slow_row(problem, student, points):
+    """One row mutant at a time: the mutated system spans the student's equation, which is its
+    mutated row, and undoing the mistake in the equation as written (either sign) leaves a
+    right equation; of those, the fewest terms changed, the first of equals."""
     jets = problem.jets
     s = equation_rows([student], jets, points.env)
     ref = equation_rows(problem.euler_lagrange, jets, points.env)
+    E = problem.system.euler_lagrange
 
     def test(pair):
         i, m = pair
@@ -244,17 +271,27 @@ def _slow_row(problem, student, points):
         R[:, i, :], Rs[:, i] = rows.coef[:, 0, :], rows.size[:, 0]
         in_span = _vanishes(*_in_span_float(s.coef[:, 0, :], s.size[:, 0], R, Rs))
         # and the student's equation is the mutated row itself (issue 12: the row named)
-        return in_span and is_for_row(s.coef[:, 0, :].astype(float), R, i, points.group)
+        if not (in_span and is_for_row(s.coef[:, 0, :].astype(float), R, i, points.group)):
+            return False
+        delta = rows.coef[:, 0, :].astype(float) - ref.coef[:, i, :].astype(float)
+        scale = s.size[:, 0] + np.linalg.norm(delta, axis=1) + ref.size[:, i]
+        x = s.coef[:, 0, :].astype(float)
+        return any(
+            _vanishes(*_in_span_float(x - sign * delta, scale, ref.coef, ref.size))
+            for sign in (1.0, -1.0)
+        )
 
-    found = _one_at_a_time(problem.catalogue.row_mutants, test)
+    true = [pair for pair in problem.catalogue.row_mutants if _passes(test, pair)]
+    found = min(true, key=lambda pair: terms_changed(pair[1], E[pair[0]]), default=None)
     return None if found is None else found[1]
 
 
 @pytest.mark.parametrize("spec", [WEDGE, HOOP, {"scene": "wedge", "seed": 3}])
 def test_vectorised_matching_names_the_same_mutant_as_one_at_a_time(spec):
     """Each match tests all mutants at once; it must return what testing them one by one in
-    the catalogue's order returns (the first, most specific, wins), for answers that are
-    mutants, multiples or shifts of mutants, and right answers (no match)."""
+    the catalogue's order returns (of the true explanations, the fewest terms changed; the
+    first, most specific, of equals), for answers that are mutants, multiples or shifts of
+    mutants, and right answers (no match)."""
     problem = build_problem(spec)
     cat = problem.catalogue
     named = 0

@@ -116,14 +116,33 @@ def _lagrangian_label(problem, answer):
 
 
 def _conserved_label(problem, answer):
+    """Every quantity conserved (sympy's D_t Q on the LagrangesMethod accelerations), and none a
+    parameter multiple of one before it plus a constant: grad Q = c grad K on phase space (q, q̇)
+    with c free of the coordinates and velocities (issue 25: the parameters are numbers)."""
     rows, _, _ = _mechanics(problem)
     acc = sp.solve(rows, [j.ddot for j in problem.jets], dict=True)[0]
+    phase = [j.q for j in problem.jets] + [j.dot for j in problem.jets]
+    grads = []
     for text in answer:
         Q = read_labelled(problem, text).expr
         dQ = sum(sp.diff(Q, j.q) * j.dot + sp.diff(Q, j.dot) * acc[j.ddot] for j in problem.jets)
         if sp.simplify(dQ) != 0:
             return "incorrect"
+        grad = [sp.diff(Q, v) for v in phase]
+        if any(_parameter_multiple(grad, earlier, phase) for earlier in grads):
+            return "incorrect"
+        grads.append(grad)
     return "correct"
+
+
+def _parameter_multiple(grad, earlier, phase) -> bool:
+    k = next((i for i, g in enumerate(earlier) if g != 0), None)
+    if k is None:
+        return False
+    c = sp.simplify(grad[k] / earlier[k])
+    if c.free_symbols & set(phase):
+        return False
+    return all(sp.simplify(g - c * e) == 0 for g, e in zip(grad, earlier, strict=True))
 
 
 LABELLERS = {"eom": _eom_label, "lagrangian": _lagrangian_label, "conserved": _conserved_label}
@@ -141,5 +160,6 @@ def test_label_verified_with_sympy_mechanics(case):
     label = LABELLERS[case["part"]](problem, case["answer"])
     expected = case["status"]
     if case.get("given", {}).get("all"):
-        expected = "correct"  # every quantity given is true; only completeness is short
+        # what was given is true unless the case says otherwise; completeness is the score's
+        expected = case.get("given_is", "correct")
     assert label == expected, (case["id"], label)

@@ -3,6 +3,8 @@ its own budget, reported as `prepare_ms` and separate from the answer's `ms`."""
 
 import time
 
+import sympy as sp
+
 from lagrade.judge.check import cached_problem, check_request
 from lagrade.judge.key import key_answer
 from lagrade.judge.problem import build_problem
@@ -22,15 +24,28 @@ def test_a_right_answer_builds_no_mistake_catalogue():
     assert "lagrangian" not in problem.catalogue.__dict__  # the lazy list was never made
 
 
-def test_a_wrong_answer_builds_the_catalogue_only_up_to_its_match():
+def test_a_wrong_answer_builds_the_catalogue_only_up_to_an_explanation_of_one_term():
+    """Of the true explanations the one that changes the fewest terms is named (issue 25), so
+    the search ends at one that changes a single term: none can beat it."""
     spec = {"scene": "double_pendulum", "seed": 9013}
+    problem = _problem(spec)
+    T, V = problem.catalogue.split.T, problem.catalogue.split.V
+    half = next(t for t in sp.Add.make_args(sp.expand(T)) if t.as_coeff_Mul()[0].q == 2)
+    answer = plain(T + half - V)
+    verdict = check_request({"problem": spec, "part": "lagrangian", "answer": answer}, 2.0)
+    assert verdict.status == "incorrect"
+    assert verdict.mistakes == ("dropped_half",), verdict
+    assert verdict.prepare_ms > 0  # the catalogue's first chunk was built for this answer
+    assert not problem.catalogue.lagrangian.complete
+
+
+def test_an_explanation_of_several_terms_is_named_when_none_changes_fewer():
+    spec = {"scene": "double_pendulum", "seed": 9019}
     problem = _problem(spec)
     T, V = problem.catalogue.split.T, problem.catalogue.split.V
     verdict = check_request({"problem": spec, "part": "lagrangian", "answer": plain(T + V)}, 2.0)
     assert verdict.status == "incorrect"
     assert verdict.mistakes == ("sign_of_V",)
-    assert verdict.prepare_ms > 0  # the catalogue's first chunk was built for this answer
-    assert not problem.catalogue.lagrangian.complete
 
 
 def test_a_question_whose_budget_ran_out_times_out_at_once_for_later_answers():

@@ -143,17 +143,17 @@ points = 1
 scene = "wedge"
 parts = ["dof", "lagrangian", { quantity = "block_acceleration" }]
 """
-#: Its exact stage runs one gcd of two 3.2-Mbit integers, about 1 s in: a single C call of
-#: 15-20 s on this machine, which no alarm interrupts (tests/batch/test_killed_part.py).
-SLOW_IN_C = "g*(1+(M+m)^2000)^30/(2+(M^2+2*M*m+m^2)^1000)^30"
 
 
-def test_grade_stops_a_part_held_in_c_code_and_grades_the_others(tmp_path):
+def test_grade_stops_a_part_held_in_c_code_and_grades_the_others(tmp_path, monkeypatch):
     """PrairieLearn calls grade() in its own process: the check runs in a worker killed at the
-    part's limit + grace, the held part is `timeout` and every other part is graded."""
-    from lagrade.grading import prairielearn
+    part's limit + grace, the held part (the planted checker spinning in C, `tests/planted.py`)
+    is `timeout` and every other part is graded."""
+    from lagrade.grading import batch, prairielearn
     from lagrade.judge.worker import GRACE
+    from tests.planted import HANG, spinning
 
+    monkeypatch.setattr(batch, "run_checker", spinning(batch.run_checker))
     (tmp_path / "a.toml").write_text(SLOW_ASSIGNMENT)
     out = tmp_path / "questions"
     assert (
@@ -163,7 +163,7 @@ def test_grade_stops_a_part_held_in_c_code_and_grades_the_others(tmp_path):
     server = load_server(next(out.iterdir()))
     data = new_data(5)
     server.generate(data)
-    data["submitted_answers"] = {"dof": "2", "lagrangian": "m*g*h", "block_acceleration": SLOW_IN_C}
+    data["submitted_answers"] = {"dof": "2", "lagrangian": "m*g*h", "block_acceleration": HANG}
     data["partial_scores"] = {}
     start = time.monotonic()
     server.grade(data)

@@ -31,6 +31,7 @@ points = { lagrangian = 2 }
 {extra}
 """
 
+REPOSITORY = Path(__file__).resolve().parents[2]  # where `tests.planted` is importable from
 ROSTER = "id,name\ns001,Ada Lovelace\ns002,Emmy Noether\ns003,Lise Meitner\n"
 
 
@@ -69,14 +70,17 @@ def generate_class(root: Path, extra: str = "") -> Path:
     return root / "ps" / "manifest.json"
 
 
-def start_server(root: Path, manifest: Path, *extra: str) -> Served:
+def start_server(root: Path, manifest: Path, *extra: str, planted: bool = False) -> Served:
+    """`lagrade serve` in a process of its own; `planted`: with the checker of
+    `tests/planted.py`, which spins in C on an answer holding its marker."""
     sheets, links = root / "sheets", root / "links.csv"
     output = root / "server.out"
     process = subprocess.Popen(
         [
             sys.executable,
             "-c",
-            "from lagrade.cli.main import entry; entry()",
+            ("import tests.planted as p; p.install(); " if planted else "")
+            + "from lagrade.cli.main import entry; entry()",
             "serve",
             str(manifest),
             "--submissions",
@@ -91,7 +95,7 @@ def start_server(root: Path, manifest: Path, *extra: str) -> Served:
         ],
         stdout=open(output, "w"),
         stderr=subprocess.STDOUT,
-        env={**os.environ, "PYTHONUNBUFFERED": "1"},
+        env={**os.environ, "PYTHONUNBUFFERED": "1", "PYTHONPATH": str(REPOSITORY)},
     )
     deadline = time.monotonic() + 60
     base = ""

@@ -1,6 +1,7 @@
 """The answer page under attack: answers whose check holds a worker in C code (where no alarm
-reaches) are killed at the limit + grace, one student has one item in the workers at a time,
-and a bystander's preview is answered at once while two students attack."""
+reaches: the planted checker of `tests/planted.py`) are killed at the limit + grace, one
+student has one item in the workers at a time, and a bystander's preview is answered at once
+while two students attack."""
 
 from __future__ import annotations
 
@@ -14,6 +15,7 @@ from lagrade.cli.main import main
 from lagrade.grading.answer_page.app import SAVE_PART_TIME_LIMIT
 from lagrade.grading.answer_page.preview import PREVIEW_TIME_LIMIT
 from lagrade.judge.worker import GRACE
+from tests.planted import HANG
 from tests.serve.conftest import ROSTER, post, start_server, stop_server
 
 ASSIGNMENT = """\
@@ -24,17 +26,12 @@ points = 1
 scene = "wedge"
 parts = ["dof", "lagrangian", { quantity = "block_acceleration" }]
 """
-#: Its exact stage runs one gcd of two 3.2-Mbit integers, about 1 s in: a single C call of
-#: 15-20 s on this machine, which no alarm interrupts (tests/batch/test_killed_part.py).
-SLOW_IN_C = "g*(1+(M+m)^2000)^30/(2+(M^2+2*M*m+m^2)^1000)^30"
 #: Slack over the limit + grace for the round trip and a loaded machine.
 SLACK = 2.5
-#: For a graded save (10 s per part): a longer hold, 29 s in-process (its gcd begins ~1.7 s in).
-SLOWER_IN_C = "g*(1+(M+m)^2000)^40/(2+(M^2+2*M*m+m^2)^1000)^40"
 
 
 def _slow(student: str) -> dict:
-    return {"problem": 1, "key": "block_acceleration", "text": SLOW_IN_C}
+    return {"problem": 1, "key": "block_acceleration", "text": HANG}
 
 
 @pytest.fixture(scope="module")
@@ -44,7 +41,7 @@ def attacked(tmp_path_factory):
     (root / "roster.csv").write_text(ROSTER)
     args = ["generate", str(root / "assignment.toml"), "--roster", str(root / "roster.csv")]
     assert main([*args, "--seed", "5", "--out", str(root / "ps"), "--formats", "md"]) == 0
-    server = start_server(root, root / "ps" / "manifest.json")  # --jobs 1
+    server = start_server(root, root / "ps" / "manifest.json", planted=True)  # --jobs 1
     yield server
     stop_server(server)
 
@@ -158,9 +155,9 @@ def test_a_graded_save_killed_in_one_part_keeps_the_others(tmp_path):
     (root / "roster.csv").write_text(ROSTER)
     args = ["generate", str(root / "assignment.toml"), "--roster", str(root / "roster.csv")]
     assert main([*args, "--seed", "5", "--out", str(root / "ps"), "--formats", "md"]) == 0
-    server = start_server(root, root / "ps" / "manifest.json")
+    server = start_server(root, root / "ps" / "manifest.json", planted=True)
     try:
-        answers = {"dof": "2", "lagrangian": "m*g*h", "block_acceleration": SLOWER_IN_C}
+        answers = {"dof": "2", "lagrangian": "m*g*h", "block_acceleration": HANG}
         elapsed, status, reply = _timed_post(
             server.url("s001") + "/save", {"answers": {"1": answers}}
         )

@@ -30,6 +30,5 @@ def test_label_verifies_independently(pp):
 @pytest.mark.parametrize("pp", PAIRS, ids=[p.id for p in PAIRS])
 def test_lagrade_reaches_the_label(pp):
     pair = pp.pair
-    problem = {"expression": pair.reference, "parameters": dict(pair.parameters)}
-    verdict = check(problem, "expression", pair.answer, time_limit=None)
+    verdict = check(pair.problem, "expression", pair.answer, time_limit=None)
     assert verdict.status == ("correct" if pair.label else "incorrect"), verdict.feedback

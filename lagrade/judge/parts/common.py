@@ -7,6 +7,7 @@ import re
 from collections.abc import Mapping
 from fractions import Fraction
 
+import mpmath
 import numpy as np
 import sympy as sp
 
@@ -14,7 +15,8 @@ from lagrade.errors import UnsupportedExpression
 from lagrade.judge.compiled import Compiled
 from lagrade.judge.decision import Outcome
 from lagrade.judge.derivatives import euler_lagrange_values
-from lagrade.judge.evaluate import FLOAT
+from lagrade.judge.dimensions import hint_for, tells
+from lagrade.judge.evaluate import FLOAT, MP, MP_DIGITS
 from lagrade.judge.mutations import Mutant
 from lagrade.judge.parts.reading import Read
 from lagrade.judge.problem import Problem
@@ -148,6 +150,21 @@ def _shown_pair(mine: float, theirs: float) -> tuple[str, str] | None:
     return shown if shown[0] != shown[1] else None
 
 
+def _value_at(expr: Compiled, env: Mapping) -> complex | float:
+    """expr's value at a one-point env; in high precision when float64 has none there (an
+    intermediate past float range: M^20/m^19 of SI masses), as a float when it fits one."""
+    value = np.ravel(expr.values(env)[0])[0]
+    if np.isfinite(value):
+        return value
+    with mpmath.workdps(MP_DIGITS):
+        mp_env = {s: MP.array(v) for s, v in env.items()}
+        try:
+            exact = np.ravel(expr.values(mp_env, MP)[0])[0]
+            return float(exact) if mpmath.isfinite(exact) else np.nan
+        except (ZeroDivisionError, ValueError, OverflowError, TypeError):
+            return np.nan
+
+
 def values_text(
     problem: Problem, points: Points, outcome: Outcome, answer: Compiled, reference: Compiled,
     what: str, unit: str = "",
@@ -161,8 +178,7 @@ def values_text(
         return ""
     try:
         with np.errstate(all="ignore"):
-            mine = np.ravel(answer.values(env)[0])[0]
-            theirs = np.ravel(reference.values(env)[0])[0]
+            mine, theirs = (_value_at(e, env) for e in (answer, reference))
     except UnsupportedExpression:  # a symbol without a value here: say nothing, never guess
         return ""
     if not (np.isfinite(mine) and np.isfinite(theirs)):  # say which side is undefined there
@@ -242,8 +258,13 @@ def method_name(*outcomes: Outcome) -> str:
 
 
 def ratio_text(c: float) -> str:
-    f = Fraction(c).limit_denominator(1000)
-    return str(f) if abs(float(f) - c) <= 1e-9 * max(1, abs(c)) else f"{c:.6g}"
+    """A factor as a student reads it: a simple fraction (2, 1/2, 3/2) when c is one, else six
+    significant digits (1e+40, never the float's 40 digits of rounding, nor 0 for 1e-40)."""
+    if 1e-6 <= abs(c) <= 1e6:
+        f = Fraction(c).limit_denominator(1000)
+        if abs(float(f) - c) <= 1e-9 * abs(c):
+            return str(f)
+    return f"{c:.6g}"
 
 
 def reference_el(problem: Problem, points: Points):
@@ -281,8 +302,11 @@ def incorrect(
     then what is wrong, with a point where it shows."""
     feedback = [as_sentence(mutant.message)] if mutant is not None else []
     feedback.append(sentence + where_text(witness, problem, values) + ".")
-    hint = handout_numbers(problem, got, reference) if problem is not None else ""
-    feedback += [hint] if hint else []
+    if problem is not None:
+        expected = {"T": "kinetic", "V": "energy"}.get(part, "")
+        dimensions = hint_for(problem, got.expr, expected) if tells(mutant) else ""
+        hints = [handout_numbers(problem, got, reference), dimensions]
+        feedback += [hint for hint in hints if hint]
     mistakes = (mutant.kind,) if mutant is not None else ()
     return Verdict(
         part,

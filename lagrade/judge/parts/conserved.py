@@ -51,7 +51,8 @@ def _accelerations(problem: Problem, points: Points):
 def _conservation(
     problem: Problem, Q: Compiled, points: Points
 ) -> tuple[Outcome, bool, np.ndarray]:
-    """(is D_t Q = 0 on-shell, is Q constant, gradient of Q at the points)."""
+    """(is D_t Q = 0 on-shell, is Q constant, gradient of Q on phase space at the points: with
+    respect to the coordinates and velocities, parameters and t held fixed)."""
     jets = problem.jets
     acc = _accelerations(problem, points)
 
@@ -68,7 +69,7 @@ def _conservation(
         value, size = Q.values(points.env)
         size = np.broadcast_to(size, (points.n,))
     constant = bool(np.all(np.abs(grad).max(axis=1) <= 1e-10 * np.maximum(size, 1e-300)))
-    return out, constant, grad
+    return out, constant, grad[:, 1:]  # column 0 is ∂/∂t
 
 
 def check_conserved(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
@@ -132,7 +133,7 @@ def check_conserved(problem: Problem, answer: Any, given: Mapping | None) -> Ver
                     f"{label} is not conserved: its time derivative along the motion "
                     f"is not zero{where_text(witness_point(points, out, Q), problem)}."
                 )
-    counted, rank = _independent(problem, right_grads, right_labels, feedback, mistakes)
+    counted, rank = _independent(right_grads, right_labels, points, feedback, mistakes)
     listed = len(lines.entries)  # an unreadable line counts as a wrong one
     if listed == 0:  # "none": right only when the system has no conserved quantity
         score = 1.0 if key_rank == 0 else 0.0
@@ -189,20 +190,24 @@ def _conserved_by_own(problem: Problem, own: sp.Expr, Q: Compiled, points: Point
 
 
 def _independent(
-    problem: Problem,
     grads: Sequence[np.ndarray],
     labels: Sequence[str],
+    points: Points,
     feedback: list[str],
     mistakes: list[str],
 ) -> tuple[int, int]:
     """(How many true quantities count, how many independent ones they make: the rank of their
-    gradients at a typical point). One trivially dependent on those before it — a duplicate,
-    2Q, Q + const, a fixed combination a Q1 + b Q2 (its gradient the same combination of theirs at
-    every point) — is named and not counted. A nonlinear function of another (E = p²/2I of a
-    free wheel) is a named physical quantity of its own: the bank's keys list such pairs."""
+    gradients on phase space at a typical point). Quantities are functions on phase space: the
+    parameters are fixed numbers, not variables. So one that is, with the parameters fixed, a
+    fixed combination of those before it — a duplicate, 2Q, Q/m, Q + const, a Q1 + b Q2, with
+    a, b any function of the parameters (its gradient the same combination of theirs at every
+    point of each parameter group) — is named and not counted: m v and v are one quantity,
+    whatever m is. A nonlinear function of another (E = p²/2I of a free wheel) is a named
+    physical quantity of its own that adds nothing to the rank: the bank's keys list such
+    pairs."""
     kept: list[np.ndarray] = []
     for grad, label in zip(grads, labels, strict=True):
-        if _stacked_rank([*kept, grad]) > len(kept):
+        if not _fixed_combination(kept, grad, points.group):
             kept.append(grad)
             continue
         feedback.append(
@@ -213,8 +218,18 @@ def _independent(
     return len(kept), _gradient_rank(kept)
 
 
+def _fixed_combination(kept: Sequence[np.ndarray], grad: np.ndarray, group: np.ndarray) -> bool:
+    """Whether grad is, in every parameter group, one combination of the kept gradients at all
+    the group's points (coefficients that depend on the parameters alone)."""
+    if not kept:
+        return False
+    return all(
+        _stacked_rank([g[group == k] for g in (*kept, grad)]) <= len(kept) for k in np.unique(group)
+    )
+
+
 def _stacked_rank(grads: Sequence[np.ndarray]) -> int:
-    """Rank of the gradients taken over all the points at once: dependence with the same
+    """Rank of the gradients taken over all the given points at once: dependence with the same
     constant coefficients everywhere."""
     cols = [np.nan_to_num(np.asarray(g, float)).reshape(-1) for g in grads]
     coef = np.stack(cols, axis=1)

@@ -13,6 +13,7 @@ import sympy as sp
 
 from lagrade.judge.compiled import Compiled
 from lagrade.judge.decision import Outcome
+from lagrade.judge.dimensions import hint_for
 from lagrade.judge.equivalence import (
     affine_match,
     differ_by_constant,
@@ -173,8 +174,11 @@ def _same_dynamics_notes(problem: Problem, answer: Compiled, match, points: Poin
 def check_lagrangian(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
     got = read_single(problem, answer, "lagrangian", "L")
     status, score, feedback, out, witness, mistakes = judge_lagrangian(problem, got.expr)
-    hint = handout_numbers(problem, got, problem.L) if status != "correct" else ""
-    feedback += [hint] if hint else []
+    if status != "correct":
+        named = not mistakes or "missing_factor" in mistakes  # see dimensions.tells
+        dimensions = hint_for(problem, got.expr, "energy") if named else ""
+        hints = [handout_numbers(problem, got, problem.L), dimensions]
+        feedback += [hint for hint in hints if hint]
     return Verdict(
         "lagrangian",
         status,

@@ -11,6 +11,7 @@ import sympy as sp
 
 from lagrade.judge.compiled import Compiled
 from lagrade.judge.decision import decide
+from lagrade.judge.dimensions import hint_for, tells
 from lagrade.judge.evaluate import FLOAT, UnsupportedExpression
 from lagrade.judge.parts.common import (
     acceleration_text,
@@ -21,7 +22,14 @@ from lagrade.judge.parts.common import (
 from lagrade.judge.parts.items import list_items
 from lagrade.judge.parts.reading import Read, own_lagrangian, read, read_lines
 from lagrade.judge.problem import Problem
-from lagrade.judge.rows import equation_rows, in_span, lagrangian_rows, row_rank
+from lagrade.judge.rows import (
+    equation_rows,
+    in_span,
+    lagrangian_rows,
+    outside_span,
+    row_rank,
+    span_basis,
+)
 from lagrade.judge.verdict import Verdict, invalid
 
 
@@ -90,6 +98,9 @@ def check_eom(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
                 )
                 + "."
             )
+        dimensions = hint_for(problem, exprs[k], "equation") if tells(mutant) else ""
+        if dimensions:
+            feedback.append(f"{label}: {dimensions[0].lower()}{dimensions[1:]}")
     rank = row_rank(rows.coef.astype(float), right)
     follows = False
     own = own_lagrangian(problem, given)
@@ -136,9 +147,11 @@ def _nonlinear_residual(compiled, k, jets, points, backend):
 
 
 def _span_residual(problem, compiled, ref_rows, k, points, backend):
-    if backend is FLOAT:
+    if backend is FLOAT:  # the reference rows' basis is made once per set of points
         student = equation_rows([compiled[k]], problem.jets, points.env)
-        return in_span(student, ref_rows, 0)
+        basis = problem.cached("row-basis", points, lambda: span_basis(ref_rows))
+        x, size = student.coef[:, 0, :].astype(float), student.size[:, 0].astype(float)
+        return outside_span(x, size, basis)
     env = points.arrays(backend)
     student = equation_rows([compiled[k]], problem.jets, env, backend)
     ref = equation_rows(problem.euler_lagrange, problem.jets, env, backend)

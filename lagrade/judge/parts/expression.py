@@ -278,7 +278,7 @@ def _check_one(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
     # The catalogue's slips are real-valued tests: a complex question gets the plain sentence.
     mutant = (
         None
-        if problem.imaginary_unit
+        if problem.imaginary_unit or points.complex_values
         else problem.catalogue.match_plain(problem.catalogue.expression_mutants, ans, points)
     )
     return incorrect(

@@ -10,6 +10,7 @@ import sympy as sp
 from lagrade.errors import ParseError
 from lagrade.judge.compiled import Compiled
 from lagrade.judge.derivatives import gradient
+from lagrade.judge.dimensions import hint_for, tells
 from lagrade.judge.equivalence import expressions_equal, lagrangians_match, values_equal
 from lagrade.judge.evaluate import UnsupportedExpression
 from lagrade.judge.parts.common import (
@@ -120,6 +121,9 @@ def check_momenta(problem: Problem, answer: Any, given: Mapping | None) -> Verdi
         else:
             where = where_text(witness_point(points, out, ans), problem)
             feedback.append(f"p_{j.name} is not ∂L/∂{j.name}_dot{where}.")
+        dimensions = hint_for(problem, expr, f"momentum:{k}") if tells(mutant) else ""
+        if dimensions:
+            feedback.append(f"p_{j.name}: {dimensions[0].lower()}{dimensions[1:]}")
     score = right / len(jets)
     status = "correct" if right == len(jets) else "incorrect"
     follows = status != "correct" and any_wrong and follows_all and own is not None

@@ -1,0 +1,28 @@
+"""A checker planted for the tests of the kill rule: an answer holding `HANG` makes it spin in
+one C call, where no Python signal handler (so no alarm) runs until it returns. Real answers
+that held a worker in C once existed (an exact stage multiplying multi-megabit integers), but the
+judge now bounds its own work before it starts, so the kill at limit + grace is tested with
+this plant, whatever the judge's bounds become.
+
+`install()` patches the checker `lagrade grade`, the answer page and PrairieLearn call
+(`lagrade.grading.batch.run_checker`); forked workers inherit it. A server started in a process
+of its own installs it with `python -c "import tests.planted as p; p.install(); ..."`."""
+
+from __future__ import annotations
+
+HANG = "zzhang"
+
+
+def spinning(real):
+    def spin_on_hang(problem, part, answer, given=None):
+        if HANG in str(answer):
+            sum(range(10**13))  # one C call: no Python signal handler runs until it returns
+        return real(problem, part, answer, given)
+
+    return spin_on_hang
+
+
+def install() -> None:
+    import lagrade.grading.batch as batch
+
+    batch.run_checker = spinning(batch.run_checker)
