@@ -33,7 +33,7 @@ from lagrade.judge.parts.common import (
     where_text,
     witness_point,
 )
-from lagrade.judge.parts.reading import has_acceleration, read_single
+from lagrade.judge.parts.reading import has_acceleration, read_single, without_additive_constant
 from lagrade.judge.problem import Problem
 from lagrade.judge.sampling import Points
 from lagrade.judge.verdict import Verdict
@@ -172,7 +172,7 @@ def _same_dynamics_notes(problem: Problem, answer: Compiled, match, points: Poin
 
 
 def check_lagrangian(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
-    got = read_single(problem, answer, "lagrangian", "L")
+    got = without_additive_constant(problem, read_single(problem, answer, "lagrangian", "L"))
     status, score, feedback, out, witness, mistakes = judge_lagrangian(problem, got.expr)
     if status != "correct":
         named = not mistakes or "missing_factor" in mistakes  # see dimensions.tells
@@ -213,7 +213,7 @@ def check_kinetic(problem: Problem, answer: Any, given: Mapping | None) -> Verdi
 
 
 def check_potential(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
-    got = read_single(problem, answer, "V", "V")
+    got = without_additive_constant(problem, read_single(problem, answer, "V", "V"))
     answer_c = Compiled.of(got.expr)
     reference = problem.potential
     points = problem.points("V")

@@ -165,13 +165,22 @@ def read_parsed(problem: Problem, parsed) -> Read:
 
 
 _LABEL = re.compile(r"^\s*([A-Za-z][A-Za-z0-9_]*)\s*=")
+#: A label with its arguments, as textbooks write it: `L(theta, theta_dot) = …`.
+_LABEL_WITH_ARGUMENTS = re.compile(r"^\s*([A-Za-z][A-Za-z0-9_]*)\s*\([^()=]*\)\s*=")
+#: Names a student writes for an arbitrary additive constant (`L = T - V + const`).
+ADDITIVE_CONSTANTS = ("const", "constant")
 
 
 def read_labelled(problem: Problem, item: Any, extra_labels: Sequence[str] = ()) -> Read:
     """An expression that may be written `name = expression` (p_x = …, h = …, L = …): the name
     is dropped. `expression = const` is accepted too."""
-    labels = [n for n in [*extra_labels, "const", "constant"] if n not in problem.by_name]
+    labels = [n for n in [*extra_labels, *ADDITIVE_CONSTANTS] if n not in problem.by_name]
     if isinstance(item, str):
+        called = _LABEL_WITH_ARGUMENTS.match(item)
+        if called and called.group(1) in extra_labels:
+            # `L(theta, theta_dot) = …` is `L = …`, its arguments blanked so carets stay put
+            name = called.group(1)
+            item = name + " " * (called.end() - len(name) - 1) + "=" + item[called.end() :]
         m = _LABEL.match(item)
         if m and m.group(1) not in problem.by_name and m.group(1) not in labels:
             labels.append(m.group(1))
@@ -180,9 +189,22 @@ def read_labelled(problem: Problem, item: Any, extra_labels: Sequence[str] = ())
         return got
     if isinstance(got.lhs, sp.Symbol):  # a name for the quantity (h = …, even when h is a
         return Read(got.rhs, None, got.echo)  # parameter: "parameter = expression" says nothing)
-    if isinstance(got.rhs, sp.Symbol) and str(got.rhs) in ("const", "constant"):
+    if isinstance(got.rhs, sp.Symbol) and str(got.rhs) in ADDITIVE_CONSTANTS:
         return Read(got.lhs, None, got.echo)
     raise not_labelled(item)
+
+
+def without_additive_constant(problem: Problem, got: Read) -> Read:
+    """`got` with an arbitrary additive constant (`+ const`) set to zero, for the parts defined
+    up to one (a Lagrangian, a potential): it changes no motion. A `const` that is not simply
+    added (`const*x`) is left, and the evaluator says it has no value."""
+    expr = got.expr
+    for symbol in expr.free_symbols:
+        if str(symbol) in ADDITIVE_CONSTANTS and str(symbol) not in problem.by_name:
+            slope = expr.diff(symbol)
+            if slope != 0 and not slope.free_symbols:
+                expr = expr.subs(symbol, 0)
+    return got if expr is got.expr else Read(expr, got.rhs, got.echo)
 
 
 def not_labelled(item: Any) -> ParseError:
