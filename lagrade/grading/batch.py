@@ -33,12 +33,16 @@ from lagrade.grading.submission import UnreadableAnswer, find_submission, read_s
 from lagrade.judge.check import cached_problem, prepare, timeout_verdict
 from lagrade.judge.key import key_answer
 from lagrade.judge.parts import run_checker
+from lagrade.judge.parts.own_coordinates import FOLLOWING
 from lagrade.judge.problem import Problem
 from lagrade.judge.verdict import Verdict
 from lagrade.judge.worker import GRACE, Limits, Outcome, PartTimeout, Pool, deadline, time_limit
 
 #: Parts that can follow from the student's own Lagrangian.
 FOLLOW_L = frozenset({"eom", "momenta", "cyclic", "conserved"})
+#: Parts that bring `given` to their checker: their own L, their transformation equations (the
+#: coordinates they chose, which the later parts are judged in).
+GIVEN_TO = FOLLOW_L | FOLLOWING
 #: The handout's prompt for `conserved` asks for "the conserved quantities" (all of them), so a
 #: graded sheet is judged for completeness too (`"all": true`); a `check` request is not unless
 #: it says so.
@@ -220,7 +224,26 @@ def _judge(entry, part, answer, given, rubric: Rubric) -> Verdict:
             value = []
     if name == "conserved" and ASKS_ALL_CONSERVED:
         given = {**given, "all": True}  # the handout asks for "the conserved quantities"
-    return run_checker(problem, name, value, given if name in FOLLOW_L else None)
+    return run_checker(problem, name, value, given if name in GIVEN_TO else None)
+
+
+def sheet_given(parts: Sequence[tuple[str, str]], answers: Mapping[str, Any]) -> dict[str, Any]:
+    """What one problem's answers bring to its other parts (`given`): the student's own L
+    (follow-through) and their transformation equations (the coordinates the later parts are
+    judged in). The one place a sheet's `given` is built, for `grade`, the answer page and
+    PrairieLearn alike; `parts` are the problem's (key, part name) pairs."""
+    given: dict[str, Any] = {}
+    for key, name in parts:
+        answer = answers.get(key)
+        if isinstance(answer, list) and not all(isinstance(a, str) for a in answer):
+            continue
+        if not isinstance(answer, str | list) or _blank(answer):
+            continue
+        if name == "lagrangian" and isinstance(answer, str):
+            given["lagrangian"] = answer
+        elif name == "transformation":
+            given["transformation"] = _as_lines(answer)
+    return given
 
 
 def grade_student(manifest: Mapping, rubric: Rubric, task: Mapping[str, Any]) -> dict[str, Any]:
@@ -237,13 +260,7 @@ def grade_student(manifest: Mapping, rubric: Rubric, task: Mapping[str, Any]) ->
     timeouts = []
     for problem, entry in zip(problems, student["problems"], strict=True):
         answers = sheet.answers.get(problem["index"], {})
-        given: dict[str, Any] = {}
-        if (
-            "lagrangian" in answers
-            and isinstance(answers["lagrangian"], str)
-            and answers["lagrangian"].strip()
-        ):
-            given["lagrangian"] = answers["lagrangian"]
+        given = sheet_given([(p["key"], p["part"]) for p in problem["parts"]], answers)
         parts = [
             grade_part(
                 entry, part, answers.get(part["key"]), given, rubric, task["part_time_limit"]

@@ -39,7 +39,7 @@ from lagrade.assign.variants import VariantChoice, build_pool
 from lagrade.assign.views import MULTILINE, problem_view
 from lagrade.bank.registry import scene_reference
 from lagrade.errors import AssignmentError
-from lagrade.grading.batch import grade_part
+from lagrade.grading.batch import grade_part, sheet_given
 from lagrade.grading.prompts import escape_html, prompt_html
 from lagrade.grading.rubric import Rubric, rubric_from_table
 
@@ -237,8 +237,7 @@ def _judge_all(
     submitted = data.get("submitted_answers", {}) or {}
     entry = {**scene_reference(problem.scene), "seed": data["params"]["seed"]}
     answers = {part.key: _answer(part.part, submitted.get(part.key)) for part in problem.parts}
-    lagrangian = next((answers[p.key] for p in problem.parts if p.part == "lagrangian"), None)
-    given = {"lagrangian": lagrangian} if isinstance(lagrangian, str) and lagrangian else {}
+    given = sheet_given([(p.key, p.part) for p in problem.parts], answers)
     return {
         part.key: grade_part(
             entry,

@@ -8,11 +8,12 @@ way from the statement's …").
 
 The reference there is the scene's T and V evaluated on the student's own positions
 (`lagrade.mechanics.reparametrize`): no inverse map. A potential the scene writes in its own
-coordinates (a spring k (r − l_0)²/2 in r) is carried over by the relation between the two sets
-of coordinates when it is known in closed form (`lagrade.judge.coordinate_relation`: the
-statement's φ is −φ in yours), else by the coordinate's own closed form in the positions
-(r = √(x² + y²)), checked at the sample points; when neither exists the student is not
-followed, the later parts are judged in the statement's coordinates, and the feedback says so.
+coordinates (a spring k (r − l_0)²/2 in r) is carried over by that coordinate's closed form in
+the positions (r = √(x² + y²), x_2 = x_block2 − a), checked at the sample points, else by the
+relation between the two sets of coordinates when it is known in closed form
+(`lagrade.judge.coordinate_relation`: the statement's φ is −φ in yours); when neither exists
+the student is not followed, the later parts are judged in the statement's coordinates, and the
+feedback says so.
 
 An invalid transformation, or none, is the statement's coordinates, as before. What is built
 for a student's map is kept per question by the map's canonical form (a bounded number of
@@ -166,21 +167,22 @@ def _pullback(
     problem: Problem, closed_form: Mapping[sp.Symbol, sp.Expr] | None, positions: Mapping
 ) -> tuple[dict | None, tuple]:
     """The statement's coordinates that the potential names itself, each in the student's
-    coordinates: by the closed-form relation, else by the coordinate's closed form in the
-    positions (verified). (None, the coordinates) when some cannot be carried over."""
+    coordinates: by the coordinate's closed form in the positions (verified; what the potential
+    means physically: a spring's r is the distance √(x² + y²) on any branch of the student's
+    map), else by the closed-form relation between the two sets of coordinates. (None, the
+    coordinates) when some cannot be carried over."""
     variant = problem.variant
     carry = coordinates_to_carry(variant)
     if not carry:
         return {}, ()
+    inverses = _verified_inverses(problem)
+    if all(j.q in inverses for j in carry):
+        symbols = cartesian_symbols(variant)
+        put = {symbols[name]: positions[name] for name in symbols}
+        return {j.q: _tidied(inverses[j.q].xreplace(put), problem) for j in carry}, ()
     if closed_form is not None:
         return {j.q: closed_form[j.q] for j in carry}, ()
-    inverses = _verified_inverses(problem)
-    missing = tuple(j for j in carry if j.q not in inverses)
-    if missing:
-        return None, missing
-    symbols = cartesian_symbols(variant)
-    put = {symbols[name]: positions[name] for name in symbols}
-    return {j.q: _tidied(inverses[j.q].xreplace(put), problem) for j in carry}, ()
+    return None, tuple(j for j in carry if j.q not in inverses)
 
 
 def _verified_inverses(problem: Problem) -> dict[sp.Symbol, sp.Expr]:
