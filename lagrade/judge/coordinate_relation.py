@@ -86,7 +86,10 @@ def relate(problem: Problem, positions: Mapping[str, sp.Expr]) -> Relation:
 
 def _different(problem: Problem) -> Relation:
     return Relation(
-        False, False, None, "your coordinates are a different but valid choice from the statement's"
+        False,
+        False,
+        None,
+        "they are a different choice of coordinates, related to the statement's nonlinearly",
     )
 
 
@@ -175,6 +178,7 @@ def _affine(theirs, mine, coords, env, group, target):
         q_mine + math.pi,
         np.full_like(q_mine, 0.5),
     ]
+    found = []
     for start in starts:
         q, done = _solve(theirs, coords, env, target, start)
         if not done.all():
@@ -188,8 +192,18 @@ def _affine(theirs, mine, coords, env, group, target):
             if periodic[k]:
                 offsets[:, k] = _wrapped(offsets[:, k])
         if all(_constant_per_group(offsets[:, k], group, periodic[k]) for k in range(n)):
-            return A, offsets, periodic
-    return None
+            found.append((_changes(A, offsets), len(found), (A, offsets, periodic)))
+            if found[-1][0] <= 1:
+                break  # one coordinate changed once: nothing simpler differs    # Where two branches of the statement's map reach the student's positions (r and θ, or −r
+    # and θ + π), the relation that changes least is the one a person means.
+    return min(found)[2] if found else None
+
+
+def _changes(A: np.ndarray, offsets: np.ndarray) -> int:
+    """How much a relation changes: coordinates not carried over as they are, and offsets."""
+    n = A.shape[1]
+    rows = int(np.sum(np.any(np.abs(A[0] - np.eye(n)) > 1e-9, axis=1)))
+    return rows + int(np.sum(np.any(np.abs(offsets) > 1e-9, axis=0)))
 
 
 # --- the relation in closed form -----------------------------------------------------------------
@@ -324,15 +338,27 @@ def _describe(
             continue  # this coordinate is the statement's
         words = _words(j.name, jets, row, unit, k, c, zero, j.name in angular)
         if closed is not None:
-            words += f" (the statement's {symbol_text(j.name)} is {shown(closed[j.q])} in yours)"
+            formula = shown(closed[j.q], frozenset(problem.coordinates))
+            words += f" (the statement's {symbol_text(j.name)} is {formula} in yours)"
         said.append(words)
     return "; ".join(said) if said else "your coordinates are the statement's, written differently"
 
 
-def shown(expr: sp.Expr) -> str:
-    """An expression as the feedback quotes it: Greek letters and π as such (π/2 - φ)."""
+def shown(expr: sp.Expr, coordinates: frozenset[str] = frozenset()) -> str:
+    """An expression as the feedback quotes it: Greek letters and π as such, a coordinate
+    with a plus sign first and one with a minus sign after the constants (x_2 - a, π/2 - φ)."""
     names = {s: sp.Symbol(symbol_text(s.name)) for s in expr.free_symbols}
-    return plain(expr.xreplace({**names, sp.pi: sp.Symbol("π")}))
+    renamed = expr.xreplace({**names, sp.pi: sp.Symbol("π")})
+    moved = {names[s] for s in names if s.name in coordinates}
+    terms = sp.Add.make_args(renamed)
+    moving = [x for x in terms if x.free_symbols & moved]
+    fixed = [x for x in terms if not x.free_symbols & moved]
+    leading = bool(moving) and not moving[0].could_extract_minus_sign()
+    ordered = moving + fixed if leading else fixed + moving
+    text = plain(ordered[0])
+    for x in ordered[1:]:
+        text += f" - {plain(-x)}" if x.could_extract_minus_sign() else f" + {plain(x)}"
+    return text
 
 
 def _turn(c: np.ndarray) -> str:

@@ -288,14 +288,14 @@ def transformation_remark(problem: Problem, answer: Any, verdict: Verdict) -> Ve
         return verdict
     if choice.kind == "own":
         remark = (
-            f"Your coordinates differ from the statement's: {choice.description}. That is a "
-            "valid choice: the later parts are judged in your coordinates."
+            f"Your coordinates are not the statement's: {choice.description}. That is a valid "
+            "choice: the later parts are judged in your coordinates."
         )
     else:
         remark = (
-            f"Your coordinates differ from the statement's: {choice.description}. That is a "
-            f"valid choice, but {choice.reason}, so the later parts are judged in the "
-            "statement's coordinates."
+            f"Your coordinates are not the statement's: {choice.description}. That is a valid "
+            f"choice, but {choice.reason}, so the later parts are judged in the statement's "
+            "coordinates."
         )
     return replace(
         verdict,
