@@ -194,7 +194,8 @@ def _affine(theirs, mine, coords, env, group, target):
         if all(_constant_per_group(offsets[:, k], group, periodic[k]) for k in range(n)):
             found.append((_changes(A, offsets), len(found), (A, offsets, periodic)))
             if found[-1][0] <= 1:
-                break  # one coordinate changed once: nothing simpler differs    # Where two branches of the statement's map reach the student's positions (r and θ, or −r
+                break  # one coordinate changed once: nothing simpler differs
+    # Where two branches of the statement's map reach the student's positions (r and θ, or −r
     # and θ + π), the relation that changes least is the one a person means.
     return min(found)[2] if found else None
 
