@@ -18,6 +18,7 @@ the y axis and the two-body problem in the first body's position are the textboo
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Callable
 from dataclasses import dataclass
 
@@ -43,7 +44,7 @@ def functions(names: list[str]) -> dict[str, sp.Expr]:
 Body = tuple
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class Case:
     scene: str
     convention: str
@@ -61,9 +62,14 @@ def _gravity(bodies: dict[str, Body], q: dict) -> sp.Expr:
     return sum(b[0] * P["g"] * b[1][-1] for b in bodies.values())
 
 
+def _distance(one, other) -> sp.Expr:
+    """|one − other|, its square tidied first (r² cos²θ + r² sin²θ = r², so √ gives r)."""
+    squared = sum((u - v) ** 2 for u, v in zip(one, other, strict=True))
+    return sp.sqrt(sp.trigsimp(sp.factor(sp.expand(squared))))
+
+
 def _spring(k, length, one, other) -> sp.Expr:
-    d = sp.sqrt(sum((u - v) ** 2 for u, v in zip(one, other, strict=True)))
-    return k * (d - length) ** 2 / 2
+    return k * (_distance(one, other) - length) ** 2 / 2
 
 
 m, M, g, l, h, alpha = (P[n] for n in "m M g l h alpha".split())
@@ -146,8 +152,7 @@ def _kepler(q, from_y):
 
 
 def _kepler_potential(bodies, q):
-    x, y = bodies["planet"][1]
-    return -P["G"] * M * m / sp.sqrt(x**2 + y**2)
+    return -P["G"] * M * m / _distance(bodies["planet"][1], (0, 0))
 
 
 def _charged(q, mirrored):
@@ -268,14 +273,61 @@ CASES = [
 # --- the answers that are right, derived here --------------------------------------------------
 
 
-def _jet_text(expr: sp.Expr, q: dict[str, sp.Expr]) -> str:
-    """An expression in q(t), q̇, q̈ as a student types it: theta_dot, theta_ddot."""
+def in_jets(expr: sp.Expr, q: dict[str, sp.Expr]) -> sp.Expr:
+    """An expression in q(t), q̇, q̈ with plain symbols for them: theta, theta_dot, theta_ddot."""
     swap = {}
     for name, f in q.items():
         swap[sp.Derivative(f, (t, 2))] = sp.Symbol(f"{name}_ddot")
         swap[sp.Derivative(f, t)] = sp.Symbol(f"{name}_dot")
-    e = expr.subs(swap).subs({f: sp.Symbol(name) for name, f in q.items()})
-    return sp.sstr(e)
+    return expr.subs(swap).subs({f: sp.Symbol(name) for name, f in q.items()})
+
+
+def _jet_text(expr: sp.Expr, q: dict[str, sp.Expr]) -> str:
+    """An expression in q(t), q̇, q̈ as a student types it: theta_dot, theta_ddot."""
+    return sp.sstr(in_jets(expr, q))
+
+
+@dataclass(frozen=True)
+class Derivation:
+    """The five steps in one set of coordinates, each coordinate a function of time."""
+
+    q: dict
+    transformation: list[str]
+    T: sp.Expr
+    V: sp.Expr
+    L: sp.Expr
+    momenta: dict
+    equations: dict
+    cyclic: list[str]
+    h: sp.Expr
+
+
+@functools.cache
+def derivation(case: Case, which: str = "student") -> Derivation:
+    """T, V, L, momenta, Euler–Lagrange expressions, cyclic coordinates and h in the student's
+    (`which="student"`) or the statement's coordinates."""
+    q = functions(case.coordinates)
+    bodies = (case.student if which == "student" else case.statement)(q)
+    T = sp.S.Zero
+    lines = []
+    for name, body in bodies.items():
+        mass, position = body[0], body[1]
+        T += mass * sum(sp.diff(x, t) ** 2 for x in position) / 2
+        for axis, x in zip("xyz", position, strict=False):
+            lines.append(f"{axis}_{name} = {_jet_text(x, q)}")
+        if len(body) > 2:
+            inertia, angle = body[2]
+            T += inertia * sp.diff(angle, t) ** 2 / 2
+            lines.append(f"phi_{name} = {_jet_text(angle, q)}")
+    V = sp.expand(case.potential(bodies, q))
+    T = sp.trigsimp(sp.expand(T))
+    L = sp.expand(T - V)
+    velocities = {n: sp.diff(f, t) for n, f in q.items()}
+    p = {n: sp.expand(sp.diff(L, v)) for n, v in velocities.items()}
+    el = {n: sp.expand(sp.diff(p[n], t) - sp.diff(L, q[n])) for n in q}
+    cyclic = [n for n in q if sp.trigsimp(sp.expand(sp.diff(L, q[n]))) == 0]
+    h = sp.expand(sum(velocities[n] * p[n] for n in q) - L)
+    return Derivation(q, lines, T, V, L, p, el, cyclic, h)
 
 
 @dataclass(frozen=True)
@@ -292,29 +344,13 @@ class Answers:
     wrong: dict
 
 
+@functools.cache
 def answers(case: Case, which: str = "student") -> Answers:
-    q = functions(case.coordinates)
-    bodies = (case.student if which == "student" else case.statement)(q)
-    T = sp.S.Zero
-    lines = []
-    for name, body in bodies.items():
-        mass, position = body[0], body[1]
-        T += mass * sum(sp.diff(x, t) ** 2 for x in position) / 2
-        for axis, x in zip("xyz", position, strict=False):
-            lines.append(f"{axis}_{name} = {_jet_text(x, q)}")
-        if len(body) > 2:
-            inertia, angle = body[2]
-            T += inertia * sp.diff(angle, t) ** 2 / 2
-            lines.append(f"phi_{name} = {_jet_text(angle, q)}")
-    V = sp.simplify(case.potential(bodies, q))
-    L = sp.expand(sp.trigsimp(T - V))
-    velocities = {n: sp.diff(f, t) for n, f in q.items()}
-    p = {n: sp.expand(sp.diff(L, v)) for n, v in velocities.items()}
-    el = {n: sp.expand(sp.diff(p[n], t) - sp.diff(L, q[n])) for n in q}
-    cyclic = [n for n in q if sp.simplify(sp.diff(L, q[n])) == 0]
-    conserved = [p[n] for n in cyclic]
-    h = sp.expand(sum(velocities[n] * p[n] for n in q) - L)
-    conserved.append(h)  # none of these scenes depends on t explicitly: h is conserved
+    """The right answers of every part, as a student types them (and the same with errors)."""
+    d = derivation(case, which)
+    q, T, V, L, p, el, h = d.q, d.T, d.V, d.L, d.momenta, d.equations, d.h
+    # none of these scenes depends on t explicitly: h is conserved besides the cyclic momenta
+    conserved = [p[n] for n in d.cyclic] + [h]
     text = lambda e: _jet_text(e, q)  # noqa: E731
     first = case.coordinates[0]
     broken, flip = _sign_error(el, q)
@@ -327,13 +363,13 @@ def answers(case: Case, which: str = "student") -> Answers:
         "conserved": [text(sp.expand(h + 2 * V))],
     }
     return Answers(
-        lines,
+        d.transformation,
         text(T),
         text(V),
         text(L),
         [f"{text(el[n])} = 0" for n in q],
         [f"p_{n} = {text(p[n])}" for n in q],
-        cyclic,
+        d.cyclic,
         [text(c) for c in conserved],
         wrong,
     )

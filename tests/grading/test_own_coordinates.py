@@ -8,6 +8,7 @@ in the student's coordinates is decided here the same way, numerically with symp
 
 from __future__ import annotations
 
+import functools
 import random
 
 import numpy as np
@@ -16,7 +17,7 @@ import sympy as sp
 
 from lagrade.judge.check import check
 
-from .own_coordinates_cases import CASES, Case, P, answers, functions, t
+from .own_coordinates_cases import CASES, Case, P, answers, derivation, in_jets, t
 
 LATER = ["lagrangian", "T", "V", "eom", "momenta", "cyclic", "conserved"]
 NOTE = "Judged in your coordinates"
@@ -74,60 +75,55 @@ def test_a_wrong_set_of_cyclic_coordinates_is_still_wrong(case):
 # --- the statement's answers against the student's own map --------------------------------------
 
 
-def _values(case: Case, which: str, point: dict) -> dict:
-    """T, V, accelerations, momenta and D_t h (on the student's motion) at a numeric point,
-    from the labels of `which` coordinates — sympy and numpy, no lagrade."""
-    q = functions(case.coordinates)
-    velocity = {n: sp.diff(f, t) for n, f in q.items()}
-    acceleration = {n: sp.diff(f, t, 2) for n, f in q.items()}
-    bodies = (case.student if which == "student" else case.statement)(q)
-    T = sum(
-        b[0] * sum(sp.diff(x, t) ** 2 for x in b[1]) / 2
-        + (b[2][0] * sp.diff(b[2][1], t) ** 2 / 2 if len(b) > 2 else 0)
-        for b in bodies.values()
-    )
-    V = case.potential(bodies, q)
-    L = T - V
-    p = {n: sp.diff(L, velocity[n]) for n in q}
-    el = [sp.diff(p[n], t) - sp.diff(L, q[n]) for n in q]
-    h = sum(velocity[n] * p[n] for n in q) - L
-    cyclic = {n for n in q if sp.simplify(sp.diff(L, q[n])) == 0}
-
-    def at(e, accelerations=None):
-        e = e.subs({acceleration[n]: sp.Symbol(f"{n}_a") for n in q})
-        e = e.subs({velocity[n]: point[f"{n}_dot"] for n in q})
-        e = e.subs({q[n]: point[n] for n in q}).subs(point["parameters"])
-        if accelerations is not None:
-            e = e.subs({sp.Symbol(f"{n}_a"): accelerations[n] for n in q})
-        return e
-
-    # E = A q̈ − b: solve the Euler–Lagrange equations for the accelerations
-    rows = [at(e) for e in el]
-    names = [sp.Symbol(f"{n}_a") for n in q]
-    A = np.array([[float(sp.diff(r, s)) for s in names] for r in rows])
-    b = -np.array([float(r.subs({s: 0 for s in names})) for r in rows])
-    acc = dict(zip(q, np.linalg.solve(A, b), strict=True))
+@functools.cache
+def _symbolic(case: Case, which: str) -> dict:
+    """T, V, the Euler–Lagrange expressions, momenta, cyclic coordinates and the time
+    derivatives of the conserved quantities (cyclic momenta, h) from the labels of `which`
+    coordinates, in plain symbols (theta, theta_dot, theta_ddot) — sympy, no lagrade."""
+    d = derivation(case, which)
+    conserved = [sp.diff(Q, t) for Q in [*(d.momenta[n] for n in d.cyclic), d.h]]
     return {
-        "T": float(at(T)),
-        "V": float(at(V)),
-        "accelerations": np.array(list(acc.values())),
-        "momenta": np.array([float(at(p[n])) for n in q]),
-        "conserved": [sp.diff(Q, t) for Q in [*(p[n] for n in sorted(cyclic)), h]],
-        "at": at,
-        "acc": acc,
-        "cyclic": cyclic,
+        "T": in_jets(d.T, d.q),
+        "V": in_jets(d.V, d.q),
+        "el": [in_jets(e, d.q) for e in d.equations.values()],
+        "momenta": [in_jets(p, d.q) for p in d.momenta.values()],
+        "conserved": [in_jets(dQ, d.q) for dQ in conserved],
+        "cyclic": set(d.cyclic),
+    }
+
+
+def _values(case: Case, which: str, point: dict) -> dict:
+    """The quantities of `_symbolic` at a numeric point, and the accelerations solved from the
+    Euler–Lagrange equations there (E = A q̈ − b)."""
+    s = _symbolic(case, which)
+    names = [sp.Symbol(f"{n}_ddot") for n in case.coordinates]
+    rows = [e.xreplace(point) for e in s["el"]]
+    A = np.array([[float(sp.diff(r, a)) for a in names] for r in rows])
+    b = -np.array([float(r.xreplace({a: 0 for a in names})) for r in rows])
+    accelerations = dict(zip(names, np.linalg.solve(A, b), strict=True))
+    return {
+        "T": float(s["T"].xreplace(point)),
+        "V": float(s["V"].xreplace(point)),
+        "accelerations": np.array(list(accelerations.values())),
+        "momenta": np.array([float(p.xreplace(point)) for p in s["momenta"]]),
+        "conserved": s["conserved"],
+        "acc": accelerations,
+        "cyclic": s["cyclic"],
     }
 
 
 def _point(case: Case, rng: random.Random) -> dict:
-    point = {"parameters": {s: rng.uniform(0.6, 1.4) for s in P.values()}}
-    point["parameters"] |= {
-        sp.Symbol(n, positive=True): rng.uniform(0.6, 1.4) for n in ("l_1", "l_2")
-    }
-    point["parameters"][P["alpha"]] = rng.uniform(0.3, 1.2)
+    """Parameters, coordinates and velocities at random (exact rationals)."""
+
+    def draw(lo, hi):
+        return sp.Rational(rng.randint(int(lo * 100), int(hi * 100)), 100)
+
+    point = {s: draw(0.6, 1.4) for s in P.values()}
+    point |= {sp.Symbol(n, positive=True): draw(0.6, 1.4) for n in ("l_1", "l_2")}
+    point[P["alpha"]] = draw(0.3, 1.2)
     for n in case.coordinates:
-        point[n] = rng.uniform(0.4, 1.3)
-        point[f"{n}_dot"] = rng.uniform(-1, 1)
+        point[sp.Symbol(n)] = draw(0.4, 1.3)
+        point[sp.Symbol(f"{n}_dot")] = draw(-1, 1)
     return point
 
 
@@ -149,7 +145,8 @@ def statement_answers_that_fail(case: Case) -> set[str]:
             fails |= {"lagrangian", "eom"}
         if not np.allclose(mine["momenta"], theirs["momenta"], atol=1e-9):
             fails.add("momenta")
-        if any(abs(float(mine["at"](dQ, mine["acc"]))) > 1e-9 for dQ in theirs["conserved"]):
+        on_mine = {**point, **mine["acc"]}
+        if any(abs(float(dQ.xreplace(on_mine))) > 1e-9 for dQ in theirs["conserved"]):
             fails.add("conserved")
         if mine["cyclic"] != theirs["cyclic"]:
             fails.add("cyclic")

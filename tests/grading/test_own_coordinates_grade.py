@@ -13,7 +13,8 @@ from pathlib import Path
 import pytest
 
 from lagrade.cli.main import main
-from lagrade.grading.batch import ASKS_ALL_CONSERVED, grade, question
+from lagrade.grading.answer_page.sheets import sheet_text
+from lagrade.grading.batch import ASKS_ALL_CONSERVED, _rubric, grade, grade_student, question
 from lagrade.grading.manifest import entry_spec
 from lagrade.grading.rubric import Rubric
 from lagrade.judge.check import check, run_batch
@@ -241,3 +242,25 @@ def test_a_batch_request_carries_the_transformation_in_given():
     assert first["verdict"] == "correct"
     assert first["feedback"][0].startswith("Judged in your coordinates")
     assert second["verdict"] == "invalid" and "transformation" in second["feedback"][0]
+
+
+def test_the_answer_page_grades_a_saved_sheet_as_grade_does(graded, tmp_path):
+    """The page writes the fields into a sheet with its own writer and grades a save with
+    `grade_student` (`[answer_page] feedback = true`): the same verdicts as `grade`."""
+    root, manifest, results = graded
+    student = next(s for s in manifest["students"] if s["id"] == "s1")
+    fields = {
+        int(name.removeprefix("problem")): {
+            key: "\n".join(value) if isinstance(value, list) else value
+            for key, value in table.items()
+        }
+        for name, table in _sheet("own").items()
+    }
+    path = tmp_path / "s1.toml"
+    path.write_text(sheet_text(manifest, student, fields))
+    task = {"student": student, "path": str(path), "part_time_limit": 5.0}
+    saved = grade_student(manifest, _rubric(root / "out" / "manifest.json", manifest), task)
+    for mine, theirs in zip(saved["problems"], results["s1"]["problems"], strict=True):
+        assert [(p["verdict"], p["points"], p["feedback"]) for p in mine["parts"]] == [
+            (p["verdict"], p["points"], p["feedback"]) for p in theirs["parts"]
+        ]
