@@ -18,7 +18,7 @@ holds linearly, or a distance between two bodies or from the origin); the judge 
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Collection, Mapping
 from functools import cached_property
 
 import sympy as sp
@@ -71,31 +71,34 @@ def coordinates_to_carry(variant: SceneVariant) -> tuple[mech.Jet, ...]:
     return tuple(j for j in variant.jets if any(e.has(j.q) or e.has(j.dot) for e in exprs))
 
 
-def coordinates_through_positions(variant: SceneVariant) -> dict[sp.Symbol, sp.Expr]:
-    """Closed forms of the scene's coordinates in the Cartesian symbols (and the parameters and
-    t), for those its transformation can be inverted for simply: a position component that is
-    linear in the coordinate, with the rest known (x_block = x_M + q cos α gives
-    q = (x_block − x_wedge)/cos α once x_M = x_wedge), or a distance (the spring's length r from
-    √(x² + y²), two bodies' separation). Candidates only: a caller checks each at sample points
-    (a square root holds for r > 0 alone)."""
+def coordinates_through_positions(
+    variant: SceneVariant, wanted: Collection[sp.Symbol] | None = None
+) -> dict[sp.Symbol, sp.Expr]:
+    """Closed forms of the scene's coordinates (those `wanted`, default all) in the Cartesian
+    symbols (and the parameters and t), where its transformation can be inverted simply: a
+    position component that is linear in the coordinate, with the rest known
+    (x_block = x_M + q cos α gives q = (x_block − x_wedge)/cos α once x_M = x_wedge), or a
+    distance (the spring's length r from √(x² + y²), two bodies' separation). Candidates only:
+    a caller checks each at sample points (a square root holds for r > 0 alone)."""
     transformation = variant.transformation
     symbols = cartesian_symbols(variant)
     coordinates = [j.q for j in variant.jets]
+    wanted = set(coordinates if wanted is None else wanted)
     found: dict[sp.Symbol, sp.Expr] = {}
     for _round in range(len(coordinates)):  # each round may use what the last one found
         progress = False
         for q in coordinates:
-            if q in found:
-                continue
-            candidate = _linear_inverse(q, transformation, symbols, found, coordinates)
-            if candidate is None:
-                candidate = _distance_inverse(q, variant, symbols)
-            if candidate is not None:
-                found[q] = candidate
-                progress = True
+            if q not in found:
+                candidate = _linear_inverse(q, transformation, symbols, found, coordinates)
+                if candidate is not None:
+                    found[q] = candidate
+                    progress = True
         if not progress:
             break
-    return found
+    missing = [q for q in coordinates if q in wanted and q not in found]
+    if missing:
+        found |= _distance_inverses(missing, variant, symbols)
+    return {q: e for q, e in found.items() if q in wanted}
 
 
 def _linear_inverse(
@@ -119,28 +122,36 @@ def _linear_inverse(
     return None
 
 
-def _distance_inverse(
-    q: sp.Symbol, variant: SceneVariant, symbols: Mapping[str, sp.Symbol]
-) -> sp.Expr | None:
-    """q from a squared distance k q² (a body from the origin, or two bodies apart)."""
+def _distance_inverses(
+    missing: list[sp.Symbol], variant: SceneVariant, symbols: Mapping[str, sp.Symbol]
+) -> dict[sp.Symbol, sp.Expr]:
+    """Each of `missing` from a squared distance k q² (a body from the origin, or two bodies
+    apart), k free of the coordinates and t."""
     coordinates = [j.q for j in variant.jets]
     bodies = variant.bodies
     pairs: list[tuple[Body, Body | None]] = [(b, None) for b in bodies]
     pairs += [(a, b) for i, a in enumerate(bodies) for b in bodies[i + 1 :]]
+    found: dict[sp.Symbol, sp.Expr] = {}
     for first, second in pairs:
-        if len(first.position) != (len(second.position) if second else len(first.position)):
+        n = len(first.position)
+        if second is not None and len(second.position) != n:
             continue
         squared, through = sp.S.Zero, sp.S.Zero
-        for k, axis in enumerate(AXES[: len(first.position)]):
+        for k, axis in enumerate(AXES[:n]):
             there = second.position[k] if second is not None else sp.S.Zero
             squared += (first.position[k] - there) ** 2
             mine = symbols[f"{axis}_{first.name}"]
             other = symbols[f"{axis}_{second.name}"] if second is not None else sp.S.Zero
             through += (mine - other) ** 2
-        k2 = sp.cancel(_tidy(squared) / q**2)
-        if k2 != 0 and not k2.has(*coordinates, mech.t):
-            return sp.sqrt(through) / sp.sqrt(k2)
-    return None
+        held = [q for q in missing if q not in found and squared.has(q)]
+        if not held:
+            continue
+        tidied = _tidy(squared)
+        for q in held:
+            k2 = sp.cancel(tidied / q**2)
+            if k2 != 0 and not k2.has(*coordinates, mech.t):
+                found[q] = sp.sqrt(through) / sp.sqrt(k2)
+    return found
 
 
 class Reparametrized(SceneVariant):

@@ -84,7 +84,8 @@ def test_every_potential_of_the_bank_in_its_coordinates_is_carried_through_the_p
                 continue
             carried[(sid, tuple(options.values()))] = names
             if not options:
-                found = _verified_inverses(cached_problem({"scene": sid}))
+                problem = cached_problem({"scene": sid})
+                found = _verified_inverses(problem, coordinates_to_carry(problem.variant))
                 assert {str(q) for q in found} >= set(names), sid
     # the bank's potentials in coordinates, so that a new one is looked at here
     assert {sid for sid, _ in carried} == {

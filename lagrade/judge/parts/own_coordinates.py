@@ -26,7 +26,7 @@ from __future__ import annotations
 import hashlib
 import json
 from collections import OrderedDict
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, replace
 from typing import Any
 
@@ -43,6 +43,7 @@ from lagrade.judge.sampling import coordinate_range
 from lagrade.judge.situation import symbol_text
 from lagrade.judge.verdict import Verdict
 from lagrade.judge.worker import Budget, PreparationTimeout, set_aside
+from lagrade.mechanics.lagrange import Jet
 from lagrade.mechanics.reparametrize import (
     Reparametrized,
     cartesian_symbols,
@@ -175,7 +176,7 @@ def _pullback(
     carry = coordinates_to_carry(variant)
     if not carry:
         return {}, ()
-    inverses = _verified_inverses(problem)
+    inverses = _verified_inverses(problem, carry)
     if all(j.q in inverses for j in carry):
         symbols = cartesian_symbols(variant)
         put = {symbols[name]: positions[name] for name in symbols}
@@ -185,10 +186,11 @@ def _pullback(
     return None, tuple(j for j in carry if j.q not in inverses)
 
 
-def _verified_inverses(problem: Problem) -> dict[sp.Symbol, sp.Expr]:
-    """The scene's coordinates in its bodies' Cartesian coordinates (closed forms offered by
-    `coordinates_through_positions`), each checked at the sample points: put the statement's
-    positions in, and the coordinate comes out."""
+def _verified_inverses(problem: Problem, carry: Sequence[Jet]) -> dict[sp.Symbol, sp.Expr]:
+    """The scene's coordinates in `carry` in its bodies' Cartesian coordinates (closed forms
+    offered by `coordinates_through_positions`), each checked at the sample points: put the
+    statement's positions in, and the coordinate comes out. Scene-side work, kept per
+    question."""
     cached = problem.__dict__.get("_inverses")
     if cached is not None:
         return cached
@@ -197,7 +199,7 @@ def _verified_inverses(problem: Problem) -> dict[sp.Symbol, sp.Expr]:
     symbols = cartesian_symbols(variant)
     put = {symbols[name]: e for name, e in variant.transformation.items()}
     found = {}
-    for q, candidate in coordinates_through_positions(variant).items():
+    for q, candidate in coordinates_through_positions(variant, [j.q for j in carry]).items():
         try:
             with np.errstate(all="ignore"):
                 got = Compiled.of(candidate.xreplace(put)).values(points.env)[0]
