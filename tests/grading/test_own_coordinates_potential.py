@@ -203,3 +203,23 @@ def test_the_carried_coordinate_in_a_velocity_dependent_potential():
     assert judge(problem, "lagrangian", L, given).status == "correct"
     momenta = ["p_x = m x_dot", "p_y = m y_dot - e B x", "p_z = m z_dot"]
     assert judge(problem, "momenta", momenta, given).status == "correct"
+
+
+def test_a_map_whose_reference_takes_too_long_keeps_the_statements_coordinates(monkeypatch):
+    """Deriving in the student's coordinates has its own budget (10 s per map in a process);
+    a map that exhausts it is judged in the statement's coordinates, saying why, never a
+    timeout of the part."""
+    from lagrade.judge.parts import own_coordinates, run_checker
+    from lagrade.judge.problem import build_problem
+    from lagrade.judge.worker import time_limit
+
+    monkeypatch.setattr(own_coordinates, "OWN_PREPARE_LIMIT", 1e-6)
+    fresh = build_problem({"scene": "spring_pendulum"})  # nothing of it cached yet
+    given = {"transformation": ["x_bob = r cos(theta)", "y_bob = -r sin(theta)"]}
+    statement = "m (r_dot^2 + r^2 theta_dot^2)/2 + m g r cos(theta) - k (r - l_0)^2/2"
+    with time_limit(30.0):  # a part clock, as in a worker: the budget is then enforced
+        verdict = run_checker(fresh, "lagrangian", statement, given)
+        remark = run_checker(fresh, "transformation", given["transformation"]).feedback[-1]
+    assert verdict.status == "correct" and verdict.feedback == ()
+    assert "took longer than" in remark and "judged in the statement's coordinates" in remark
+    assert ": ." not in remark  # the relation was not found in time: said in general words

@@ -116,7 +116,7 @@ def _choose(problem: Problem, positions: Mapping[str, sp.Expr], canonical: str) 
     """Relate the student's map to the statement's and, when it differs, build the reference
     in it (on a budget of its own)."""
     budget = Budget(OWN_PREPARE_LIMIT)
-    description = ""
+    description = "they are another choice than the statement's"  # until the relation is known
     try:
         with set_aside(budget):
             relation = relate(problem, positions)
@@ -257,10 +257,10 @@ def judged_in_chosen_coordinates(
     try:
         with set_aside(own.budget):
             _prepare(own, part)
+        verdict = checker(own, answer, given)  # a wrong answer's diagnosis is on own.budget
     except PreparationTimeout:
         own.budget.charge(max(own.budget.left, 0.0))  # exhausted: every later part knows
         return judged_in_chosen_coordinates(problem, part, answer, given, checker)
-    verdict = checker(own, answer, given)
     feedback = [f"Judged in your coordinates: {choice.description}."]
     if verdict.status == "incorrect" and checker(problem, answer, given).status == "correct":
         feedback.append(
