@@ -158,6 +158,15 @@ def add_check_arguments(parser: argparse.ArgumentParser) -> None:
         help="the student's own L, for follow-through on later parts",
     )
     parser.add_argument(
+        "--given-transformation",
+        action="append",
+        default=None,
+        metavar="EQUATION",
+        help="the student's own transformation equations (repeat, one per equation, e.g. "
+        '"x_bob = l sin(theta)"): when they are valid and not the statement\'s, L, T, V, eom, '
+        "momenta, cyclic and conserved are judged in the student's coordinates",
+    )
+    parser.add_argument(
         "--all",
         action="store_true",
         help="with --part conserved: the answer should give every independent conserved "
@@ -250,6 +259,8 @@ def run_check_command(args: argparse.Namespace) -> tuple[int, str]:
     if args.part in ("eom", "momenta", "conserved", "transformation") and isinstance(answer, str):
         answer = [answer]
     given: dict[str, Any] = {"lagrangian": args.given_lagrangian} if args.given_lagrangian else {}
+    if args.given_transformation:
+        given["transformation"] = list(args.given_transformation)
     if args.all:
         given["all"] = True
     build_problem(spec, FLAGS)  # a malformed problem is a usage error here, not a verdict

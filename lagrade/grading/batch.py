@@ -34,12 +34,16 @@ from lagrade.grading.submission import UnreadableAnswer, find_submission, read_s
 from lagrade.judge.check import cached_problem, prepare, timeout_verdict
 from lagrade.judge.key import key_answer
 from lagrade.judge.parts import run_checker
+from lagrade.judge.parts.own_coordinates import FOLLOWING
 from lagrade.judge.problem import Problem
 from lagrade.judge.verdict import Verdict
 from lagrade.judge.worker import GRACE, Limits, Outcome, PartTimeout, Pool, deadline, time_limit
 
 #: Parts that can follow from the student's own Lagrangian.
 FOLLOW_L = frozenset({"eom", "momenta", "cyclic", "conserved"})
+#: Parts that bring `given` to their checker: their own L, their transformation equations (the
+#: coordinates they chose, which the later parts are judged in).
+GIVEN_TO = FOLLOW_L | FOLLOWING
 #: The handout's prompt for `conserved` asks for "the conserved quantities" (all of them), so a
 #: graded sheet is judged for completeness too (`"all": true`); a `check` request is not unless
 #: it says so.
@@ -223,10 +227,28 @@ def _given(entry, name: str, given: dict[str, Any], rubric: Rubric) -> dict[str,
     if name == "expression":
         own = entry_variant(entry)  # this student's numbers
         return {"values": own.values, "tolerance": rubric.numeric_tolerance}
-    if name not in FOLLOW_L:
+    if name not in GIVEN_TO:
         return None
     if name == "conserved" and ASKS_ALL_CONSERVED:
         return {**given, "all": True}  # the handout asks for "the conserved quantities"
+    return given
+
+
+def sheet_given(parts: Sequence[tuple[str, str]], answers: Mapping[str, Any]) -> dict[str, Any]:
+    """What one problem's answers bring to its other parts (`given`): the student's own L
+    (follow-through) and their transformation equations (the coordinates the later parts are
+    judged in), both raw as typed: the checkers read them. The one place a sheet's `given` is
+    built, for `grade`, the answer page and PrairieLearn alike; `parts` are the problem's
+    (key, part name) pairs."""
+    given: dict[str, Any] = {}
+    for key, name in parts:
+        answer = answers.get(key)
+        if isinstance(answer, list) and not all(isinstance(a, str) for a in answer):
+            continue
+        if not isinstance(answer, str | list) or _blank(answer):
+            continue
+        if name in ("lagrangian", "transformation"):
+            given[name] = answer
     return given
 
 
@@ -246,10 +268,7 @@ def grade_student(manifest: Mapping, rubric: Rubric, task: Mapping[str, Any]) ->
     timeouts = []
     for problem, entry in zip(problems, student["problems"], strict=True):
         answers = sheet.answers.get(problem["index"], {})
-        given: dict[str, Any] = {}
-        own_l = answers.get("lagrangian")
-        if isinstance(own_l, str | list) and not _blank(own_l):
-            given["lagrangian"] = own_l  # raw, as every answer: the checker reads it
+        given = sheet_given([(p["key"], p["part"]) for p in problem["parts"]], answers)
         parts = []
         for part in problem["parts"]:
             part_id = f"{problem['index']}/{part['key']}"

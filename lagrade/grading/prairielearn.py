@@ -43,7 +43,7 @@ from lagrade.assign.variants import VariantChoice, build_pool
 from lagrade.assign.views import MULTILINE, problem_view
 from lagrade.bank.registry import scene_reference
 from lagrade.errors import AssignmentError
-from lagrade.grading.batch import grade_part, stopped_part
+from lagrade.grading.batch import grade_part, sheet_given, stopped_part
 from lagrade.grading.prompts import escape_html, prompt_html
 from lagrade.grading.rubric import Rubric, rubric_from_table
 from lagrade.judge.worker import PREPARE_LIMIT, Limits, Pool
@@ -260,8 +260,7 @@ def _judge_task(task: Mapping[str, Any]) -> dict[str, dict]:
     limit = task["part_time_limit"]
     entry = {**scene_reference(problem.scene), "seed": task["seed"]}
     answers = {part.key: _answer(submitted.get(part.key)) for part in problem.parts}
-    lagrangian = next((answers[p.key] for p in problem.parts if p.part == "lagrangian"), None)
-    given = {"lagrangian": lagrangian} if isinstance(lagrangian, str) and lagrangian else {}
+    given = sheet_given([(p.key, p.part) for p in problem.parts], answers)
     results = {}
     for part in problem.parts:
         spec = {

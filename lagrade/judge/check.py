@@ -163,6 +163,15 @@ def _validate(request: Any) -> tuple[Any, str, Any, Mapping | None]:
         raise RequestError('"given" must be an object such as {"lagrangian": "..."}')
     if given is not None and "all" in given and not isinstance(given["all"], bool):
         raise RequestError('"given": "all" must be true or false')
+    transformation = given.get("transformation") if given is not None else None
+    if transformation is not None and not (
+        isinstance(transformation, str)
+        or (isinstance(transformation, list) and all(isinstance(x, str) for x in transformation))
+    ):
+        raise RequestError(
+            '"given": "transformation" must be the transformation equations, a string or a '
+            'list of strings such as ["x_bob = l sin(theta)", "y_bob = -l cos(theta)"]'
+        )
     return request["problem"], part, request["answer"], given
 
 
