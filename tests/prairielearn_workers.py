@@ -27,6 +27,8 @@ class CourseIssue(Exception):
 
 #: PrairieLearn's default `questionTimeoutMilliseconds`: a call past it kills the worker.
 CALL_LIMIT = 10.0
+#: Its `workerPingTimeoutMilliseconds`: how long a new zygote may take to answer its first ping.
+PING_LIMIT = 60.0
 
 
 class Mustache:
@@ -103,6 +105,9 @@ class Zygote:
     calls: list[tuple[str, str, float]] = field(default_factory=list)
 
     def __post_init__(self) -> None:
+        self._start()
+
+    def _start(self) -> None:
         out_r, out_w = os.pipe()
         exit_r, exit_w = os.pipe()
         zygote = self.pl / "apps/prairielearn/python/zygote.py"
@@ -122,7 +127,16 @@ class Zygote:
         self.exits = os.fdopen(exit_r, "r", encoding="utf-8")
         for stream in (self.process.stdout, self.process.stderr):
             os.set_blocking(stream.fileno(), False)
+        self.fresh = True
         assert self.call(None, None, "ping", []).value == "pong"
+
+    def _replace(self) -> str:
+        """A call ran out of time or its worker died: PrairieLearn kills the zygote and starts
+        another; what it printed is returned."""
+        output = self._output()
+        self.close()
+        self._start()
+        return output
 
     def call(self, directory: str | None, file: str | None, fcn: str, args: list) -> Call:
         paths = [str(self.pl / "apps/prairielearn/python"), str(self.course / "serverFilesCourse")]
@@ -132,15 +146,18 @@ class Zygote:
         start = time.monotonic()
         self.process.stdin.write(json.dumps(line).encode() + b"\n")
         self.process.stdin.flush()
-        ready, _, _ = select.select([self.answers], [], [], CALL_LIMIT)
-        if not ready:
-            raise CourseIssue(f"{file} {fcn}(): timeout exceeded ({CALL_LIMIT:g} s)")
-        text = self.answers.readline()
+        limit = PING_LIMIT if fcn == "ping" else CALL_LIMIT
+        self.fresh = False
+        ready, _, _ = select.select([self.answers], [], [], limit)
+        text = self.answers.readline() if ready else ""
         seconds = time.monotonic() - start
-        output = self._output()
-        if not text:
-            raise CourseIssue(f"{file} {fcn}(): the worker died\n{output}")
         self.calls.append((str(file), fcn, seconds))
+        if not ready:
+            self._replace()
+            raise CourseIssue(f"{file} {fcn}(): timeout exceeded ({limit:g} s)")
+        if not text:
+            raise CourseIssue(f"{file} {fcn}(): the worker died\n{self._replace()[-2000:]}")
+        output = self._output()
         answer = json.loads(text)
         if not answer.get("present", False):
             return Call(None, seconds, output)
@@ -148,6 +165,8 @@ class Zygote:
 
     def restart(self) -> None:
         """The end of a request: the worker exits, the zygote forks a fresh one."""
+        if self.fresh:  # a new zygote after a failed call
+            return
         assert self.call(None, None, "restart", []).value == "success"
         assert json.loads(self.exits.readline()) == {"exited": True}
 
@@ -161,6 +180,8 @@ class Zygote:
     def close(self) -> None:
         self.process.terminate()
         self.process.wait(timeout=10)
+        for stream in (self.answers, self.exits, self.process.stdin):
+            stream.close()
 
 
 def core_elements(pl: Path) -> dict[str, dict[str, str]]:
