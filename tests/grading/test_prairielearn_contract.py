@@ -212,3 +212,29 @@ print(sorted(data["correct_answers"]))
     where, keys = run.stdout.splitlines()
     assert Path(where).resolve().is_relative_to(vendored.resolve())
     assert "lagrangian" in keys
+
+
+def test_html_in_a_scene_file_or_a_title_stays_text(tmp_path):
+    """Scene files may come from anyone: HTML in a title, statement, parameter or quantity
+    description reaches the statement and prompts as text (they go out unescaped, `{{{ }}}`)."""
+    source = (Path(__file__).parents[1] / "scenes/files/parabola.toml").read_text()
+    source = source.replace("A bead of mass", f"{HOSTILE} A bead of mass")
+    source = source.replace('"mass of the bead"', f"'mass {HOSTILE} of the bead'")
+    source = source.replace('"angular frequency of small', f"'{HOSTILE} angular frequency of small")
+    source = source.replace('bottom of the wire"', "bottom of the wire'")
+    (tmp_path / "scenes").mkdir()
+    (tmp_path / "scenes/parabola.toml").write_text(source)
+    (tmp_path / "a.toml").write_text(
+        f"title = '{HOSTILE}'\n[[problems]]\nscene = 'scenes/parabola.toml'\ntitle = '{HOSTILE}'\n"
+        "parts = ['lagrangian', { quantity = 'oscillation_frequency' }]\n"
+    )
+    export_prairielearn(tmp_path / "a.toml", 1, tmp_path / "course", tmp_path / "scenes")
+    node = Node.local(tmp_path / "course")
+    (folder,) = (tmp_path / "course/questions").iterdir()
+    question = node.question(folder.name)
+    question.generate(variant_seed=5)
+    params = question.variant["params"]
+    assert params["statement_html"].count("&lt;img src=x") == 2  # statement, parameter table
+    assert "&lt;img src=x" in params["prompts"]["oscillation_frequency"]
+    page = question.render("question")
+    assert injected(page) == [] and shown(HOSTILE, page)
