@@ -166,15 +166,14 @@ def symbol_dimensions(variant: SceneVariant) -> dict[sp.Symbol, Dim]:
         if dim is not None:
             known[symbols[parameter.name]] = dim
     wanted: list[tuple[sp.Expr, Dim]] = []
-    if variant.scene.given_by_lagrangian:  # no bodies, no V: the coordinates stand in L
-        wanted.append((variant.lagrangian, ENERGY))
-    else:
-        for body in variant.bodies:
-            wanted += [(x, LENGTH) for x in body.position]
-            wanted.append((body.mass, MASS))
-            if isinstance(body, RigidBody):
-                wanted += [(body.angle, NONE), (body.inertia, _dim(m=2, kg=1))]
-        wanted.append((variant.potential_energy, ENERGY))
+    for body in variant.bodies:
+        wanted += [(x, LENGTH) for x in body.position]
+        wanted.append((body.mass, MASS))
+        if isinstance(body, RigidBody):
+            wanted += [(body.angle, NONE), (body.inertia, _dim(m=2, kg=1))]
+    # a scene given by its Lagrangian has no bodies and no V: its L is the energy it tells
+    energy = variant.lagrangian if variant.scene.given_by_lagrangian else variant.potential_energy
+    wanted.append((energy, ENERGY))
     coordinates = [j.q for j in variant.jets]
     for _ in range(len(coordinates) + 1):  # each pass settles at least one coordinate, or none
         before = len(known)

@@ -170,7 +170,8 @@ def test_prairielearn_gives_what_grade_gives(graded, tmp_path):
          str(tmp_path / "questions")]
     ) == 0  # fmt: skip
     folders = sorted(
-        (tmp_path / "questions").iterdir(), key=lambda f: int(f.name.split("-p")[-1].split("-")[0])
+        (tmp_path / "questions" / "questions").iterdir(),
+        key=lambda f: int(f.name.split("-p")[-1].split("-")[0]),
     )
     for student, which in ROSTER.items():
         entries = next(s for s in manifest["students"] if s["id"] == student)["problems"]
@@ -187,7 +188,9 @@ def test_prairielearn_gives_what_grade_gives(graded, tmp_path):
             for part in graded_problem["parts"]:
                 pl = data["partial_scores"][part["key"]]
                 assert pl["score"] * pl["weight"] == pytest.approx(part["points"])
-                assert pl["feedback"] == (" ".join(part["feedback"]) or part["verdict"])
+                shown = data["feedback"]["lagrade"][part["key"]]
+                assert [note["text"] for note in shown["notes"]] == part["feedback"]
+                assert f"{part['points']:g} of {part['max_points']:g} point" in shown["outcome"]
 
 
 def test_the_rubric_may_charge_another_convention_on_the_transformation_only(tmp_path):

@@ -72,6 +72,16 @@ class Lines:
         ]
 
 
+#: How `Lines.feedback` begins its sentence on a line that does not parse.
+_UNREADABLE_LINE = re.compile(r"Line \d+ could not be read: ")
+
+
+def is_unreadable_line(sentence: str) -> bool:
+    """Whether a verdict's feedback sentence is `Lines.feedback`'s on an unreadable line: for a
+    caller that must refuse such an answer rather than grade it (PrairieLearn's format errors)."""
+    return _UNREADABLE_LINE.match(sentence) is not None
+
+
 def read_lines(items: Sequence[Any], reader: Callable[[Any], Read | list[Read]]) -> Lines:
     """The one place a list of answer lines is parsed: each item (`items.list_items`) by
     `reader`, a line that does not parse set aside as Unreadable so that the others are still
