@@ -37,7 +37,7 @@ from lagrade.judge.parts.energy import check_kinetic, check_lagrangian, check_po
 from lagrade.judge.parts.eom import check_eom
 from lagrade.judge.parts.expression import check_expression
 from lagrade.judge.parts.momenta import check_momenta
-from lagrade.judge.parts.reading import reading_notes
+from lagrade.judge.parts.reading import hear, reading_notes
 from lagrade.judge.parts.transformation import check_transformation
 from lagrade.judge.problem import Problem
 from lagrade.judge.verdict import Verdict, invalid
@@ -82,6 +82,7 @@ def run_checker(problem: Problem, part: str, answer: Any, given: Mapping | None 
     try:
         with reading_notes() as notes:
             verdict = checker(problem, answer, given)
+        hear(notes)
         return with_notes(verdict, notes)
     except ParseError as error:
         return invalid(part, str(error), getattr(error, "source", ""))
