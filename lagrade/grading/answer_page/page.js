@@ -82,15 +82,28 @@
     }
   }
 
+  // "problem 1, eom, 2": whose preview or feedback a box is in, and which of its boxes
+  function partName(box) {
+    const owner = box.closest(".preview, .feedback");
+    if (!owner) return "";
+    const field = document.getElementById(owner.id.replace(/-(preview|feedback)$/, ""));
+    const boxes = Array.from(owner.querySelectorAll(box.tagName));
+    const which = boxes.length > 1 ? ", " + (boxes.indexOf(box) + 1) : "";
+    return field ? "problem " + field.dataset.problem + ", " + field.dataset.key + which : "";
+  }
+
   function reachAll(root) {
     root.querySelectorAll(".scroller").forEach(function (box) {
       reachable(box, box.dataset.label || "Table");
     });
     root.querySelectorAll(".preview .math").forEach(function (box) {
-      reachable(box, "Read as");
+      reachable(box, "Read as, " + partName(box));
     });
-    root.querySelectorAll("pre.error, .feedback pre").forEach(function (box) {
-      reachable(box, "Message");
+    root.querySelectorAll(".preview pre").forEach(function (box) {
+      reachable(box, "Reading error, " + partName(box));
+    });
+    root.querySelectorAll(".feedback pre").forEach(function (box) {
+      reachable(box, "Feedback, " + partName(box));
     });
   }
 
@@ -210,9 +223,14 @@
       if (!part) return;
       box.classList.add(part.verdict);
       box.appendChild(element("div", "", part.points + " / " + part.max_points + " points"));
-      // a parser's message keeps its columns (the caret); a sentence wraps like prose
-      const tag = part.verdict === "invalid" ? "pre" : "p";
-      part.feedback.forEach(function (text) { box.appendChild(element(tag, "", text)); });
+      // a sentence wraps like prose; a parser's message keeps its columns (the answer line
+      // and the caret under it): the first line a sentence, the rest kept as written
+      part.feedback.forEach(function (text) {
+        const at = text.indexOf("\n");
+        box.appendChild(element("p", "", at < 0 ? text : text.slice(0, at)));
+        const source = at < 0 ? "" : text.slice(at + 1);
+        if (source.trim()) box.appendChild(element("pre", "", source));
+      });
       reachAll(box);
     });
     const attempts = document.getElementById("attempts");
