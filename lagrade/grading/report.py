@@ -240,7 +240,7 @@ def summary_markdown(manifest: Mapping[str, Any], summary: Mapping[str, Any]) ->
     if summary.get("mismatched_ids"):
         lines += ["", "Sheets whose `student_id` is not their file's (graded as the file's):", ""]
         lines += [
-            f"- {md_code(sid)}: the sheet says `student_id = {md_code(other)}`"
+            f"- {md_code(sid)}: the sheet says student_id = {md_code(other)}"
             for sid, other in summary["mismatched_ids"].items()
         ]
     lines += ["", "![score distribution](scores.svg)", ""]

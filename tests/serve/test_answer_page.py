@@ -135,8 +135,11 @@ def test_bad_requests_are_refused_and_write_nothing(served):
 
 def test_saves_of_many_students_at_once_never_mix(tmp_path, served):
     """Each of 3 students saves 20 times from 3 threads at once: every sheet on disk is one
-    of that student's own saves, whole."""
+    of that student's own saves, whole, and the log holds all 60 of each, the last one the
+    sheet on disk."""
     errors = []
+    log = SaveLog(log_path(served.sheets), create=False) if served.sheets.exists() else None
+    before = {s: len(log.saves(s)) if log else 0 for s in served.links}
 
     def hammer(student_id: str, thread: int) -> None:
         for k in range(20):
@@ -159,6 +162,10 @@ def test_saves_of_many_students_at_once_never_mix(tmp_path, served):
         assert f'student_id = "{student_id}"' in text
         others = set(served.links) - {student_id}
         assert not any(f"# {o} " in text for o in others)
+        rows = SaveLog(log_path(served.sheets), create=False).saves(student_id)
+        assert len(rows) - before[student_id] == 60
+        assert rows[-1].sheet == (served.sheets / f"{student_id}.toml").read_bytes()
+        assert all(f"# {student_id} " in r.answers["1"]["lagrangian"] for r in rows[-60:])
 
 
 def test_port_in_use_is_one_clear_error(served, tmp_path):

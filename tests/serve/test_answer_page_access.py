@@ -179,7 +179,7 @@ def test_the_save_bar_never_hides_the_focus(browser, page):
     for _ in range(200):
         ActionChains(browser).send_keys(Keys.TAB).perform()
         where = browser.execute_script(
-            """const el = document.activeElement, bar = document.getElementById('savebar');
+            """const el = document.activeElement, bar = document.querySelector('.savebar');
                if (el === document.body) return null;
                const r = el.getBoundingClientRect();
                return [el.id || el.tagName, r.top, r.bottom, bar.getBoundingClientRect().top,
@@ -202,7 +202,7 @@ def test_the_save_bar_never_hides_the_focus(browser, page):
     time.sleep(0.3)
     bottom, bar_top = browser.execute_script(
         "return [arguments[0].getBoundingClientRect().bottom,"
-        " document.getElementById('savebar').getBoundingClientRect().top]",
+        " document.querySelector('.savebar').getBoundingClientRect().top]",
         box,
     )
     assert bottom <= bar_top + 1
