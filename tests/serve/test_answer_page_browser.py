@@ -135,7 +135,5 @@ def test_the_preview_shows_the_parsers_notes_right_or_wrong(browser, served):
     # the LaTeX Lagrangian is right: the note is about the reading, not the verdict
     from lagrade.judge import check
 
-    verdict = check(
-        {"scene": "simple_pendulum"}, "lagrangian", cases["p1-lagrangian"][0]
-    )
+    verdict = check({"scene": "simple_pendulum"}, "lagrangian", cases["p1-lagrangian"][0])
     assert verdict.status == "correct" and not any("mgl" in f for f in verdict.feedback)
