@@ -91,7 +91,8 @@ def test_three_saves_are_three_rows_and_as_of_grades_the_right_one(browser, serv
         _type(browser, "p1-lagrangian", f"1/2 m l^2 theta_dot^2 + m g l cos(theta) + {dof}")
         assert _save(browser).startswith("Saved at")
         time.sleep(0.05)
-    rows = SaveLog(log_path(served.sheets), create=False).saves("s001")[-3:]
+    every = SaveLog(log_path(served.sheets), create=False).saves("s001")
+    rows = every[-3:]
     assert [r.answers["1"]["dof"] for r in rows] == ["3", "1", "2"]
     assert all(r.origin == "page" and not r.late for r in rows)
     assert rows[-1].sheet == (served.sheets / "s001.toml").read_bytes()
@@ -107,7 +108,7 @@ def test_three_saves_are_three_rows_and_as_of_grades_the_right_one(browser, serv
     dof = next(p for p in result["problems"][0]["parts"] if p["key"] == "dof")
     assert dof["verdict"] == "correct"  # the second save, dof = 1; the first and third are wrong
     main(["grade", str(served.manifest), str(served.sheets), "--out", str(out),
-          "--as-of", (rows[0].saved_at - dt.timedelta(seconds=1)).isoformat()])  # fmt: skip
+          "--as-of", (every[0].saved_at - dt.timedelta(seconds=1)).isoformat()])  # fmt: skip
     before = json.loads((out / "students" / "s001.json").read_text())
     assert before["status"] == "missing" and "nothing was saved by" in before["reason"]
 

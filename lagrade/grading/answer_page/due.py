@@ -43,12 +43,12 @@ class DueRule:
         state = self.state(now)
         due = shown(self.due)
         if state == OPEN:
-            after = {
-                (False, False): "after it, saving is closed.",
-                (True, False): "after it, saves are still accepted and recorded as late.",
-                (True, True): "after it, saves are recorded as late until "
-                f"{shown(self.late_until) if self.late_until else ''}, then closed.",
-            }[(self.late, self.late_until is not None)]
+            if not self.late:
+                after = "after it, saving is closed."
+            elif self.late_until is None:
+                after = "after it, saves are still accepted and recorded as late."
+            else:
+                after = f"after it, saves are recorded as late until {shown(self.late_until)}."
             return f"Due {due}; {after}"
         if state == LATE:
             until = f" until {shown(self.late_until)}" if self.late_until else ""
