@@ -10,11 +10,14 @@ version are unchanged.
 
 from __future__ import annotations
 
+import contextlib
+import datetime as dt
 import functools
 import gc
 import hashlib
 import json
-from collections.abc import Callable, Mapping, Sequence
+import tempfile
+from collections.abc import Callable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -23,11 +26,13 @@ import lagrade.grading.atomic as atomic
 import lagrade.grading.gradebooks as gradebooks
 import lagrade.grading.report as report
 import lagrade.grading.resume as resume
+import lagrade.grading.savelog as savelog
 import lagrade.grading.submission as submission
 from lagrade.assign.manifest import project_version
 from lagrade.assign.views import PROMPTS
 from lagrade.bank.scenefile import sha256
 from lagrade.errors import AssignmentError, LagradeError
+from lagrade.grading.instants import shown
 from lagrade.grading.manifest import entry_spec, entry_variant, load_manifest
 from lagrade.grading.rubric import Rubric, load_rubric
 from lagrade.grading.submission import UnreadableAnswer, find_submission, read_sheet
@@ -262,6 +267,8 @@ def grade_student(manifest: Mapping, rubric: Rubric, task: Mapping[str, Any]) ->
     keys = {p["index"]: [part["key"] for part in p["parts"]] for p in problems}
     sheet = read_sheet(Path(task["path"]), student["id"], len(problems), keys)
     base = {"warnings": list(sheet.warnings) + ([task["note"]] if task.get("note") else [])}
+    if sheet.other_id is not None:
+        base["sheet_student_id"] = sheet.other_id
     if not sheet.readable:
         return {**base, "status": "invalid", "reason": sheet.reason, "problems": []}
     graded = []
@@ -337,6 +344,7 @@ def _finish(
         "status": outcome["status"],
         "reason": outcome.get("reason", ""),
         "warnings": outcome.get("warnings", []),
+        **_other_id(outcome),
         "score": score,
         "max_score": max_score,
         "problems": problems,
@@ -356,11 +364,13 @@ def grade(
     progress: Callable[[int, int, str], None] | None = None,
     exports: Sequence[str] = (),
     export_options: gradebooks.ExportOptions | None = None,
+    as_of: dt.datetime | None = None,
 ) -> BatchSummary:
     """Grade every roster student's sheet in `submissions`; write results into `out_dir`
     (default: `grades/` beside the manifest); `exports` adds LMS gradebooks ("canvas",
-    "moodle", written with `export_options`: `lagrade.grading.gradebooks`). See the module
-    docstring for the guarantees."""
+    "moodle", written with `export_options`: `lagrade.grading.gradebooks`); `as_of` grades
+    each student's last save at or before that instant, from the answer page's log of saves
+    (`lagrade.grading.savelog`). See the module docstring for the guarantees."""
     manifest_path = Path(manifest_path)
     submissions = Path(submissions)
     _check_arguments(manifest_path, submissions)
@@ -370,20 +380,36 @@ def grade(
         copy = manifest_path.parent / manifest["assignment"].get("file", "assignment.toml")
         export_options = gradebooks.resolve_options(copy, export_options)
     out = Path(out_dir) if out_dir is not None else manifest_path.parent / "grades"
-    with atomic.hold_folder(out):
+    with atomic.hold_folder(out), _sheets_at(submissions, manifest, as_of) as (folder, none):
         atomic.remove_stale_temporaries(out)
         return _grade_into(
             out,
             manifest,
             rubric,
-            submissions,
+            folder,
             jobs,
             part_time_limit,
             limits,
             progress,
             exports,
             export_options,
+            none,
         )
+
+
+@contextlib.contextmanager
+def _sheets_at(
+    submissions: Path, manifest: Mapping[str, Any], as_of: dt.datetime | None
+) -> Iterator[tuple[Path, str]]:
+    """The folder to grade and why a student has no sheet there: `submissions` as it is, or
+    (with `as_of`) a temporary folder of the sheets as they stood then, rebuilt from the log."""
+    if as_of is None:
+        yield submissions, ""
+        return
+    ids = [s["id"] for s in manifest["students"]]
+    with tempfile.TemporaryDirectory(prefix="lagrade-as-of-") as folder:
+        savelog.sheets_as_of(submissions, ids, as_of, Path(folder))
+        yield Path(folder), f"nothing was saved by {shown(as_of)}"
 
 
 def _check_arguments(manifest_path: Path, submissions: Path) -> None:
@@ -418,8 +444,10 @@ def _grade_into(
     progress: Callable[[int, int, str], None] | None,
     exports: Sequence[str] = (),
     export_options: gradebooks.ExportOptions | None = None,
+    no_sheet: str = "",
 ) -> BatchSummary:
-    """The body of `grade`, run while this process holds the output folder."""
+    """The body of `grade`, run while this process holds the output folder; `no_sheet` is why
+    a student without a sheet has none, when the folder says nothing about it."""
     version = project_version()
     students = manifest["students"]
     # Reading a sheet has this long; each part then moves the deadline to its own time limit.
@@ -431,7 +459,7 @@ def _grade_into(
     stray = submission.stray_files(submissions, (s["id"] for s in students))
     for student in students:
         path, note = find_submission(submissions, student["id"])
-        missing = _missing_reason(student["id"], stray) if path is None else ""
+        missing = (no_sheet or _missing_reason(student["id"], stray)) if path is None else ""
         fingerprint = _fingerprint(path, student, rubric, version, missing)
         previous = report.read_student_result(out, student["id"])
         if previous is not None and previous.get("fingerprint") == fingerprint:
@@ -522,6 +550,12 @@ def _outcome_result(outcome: Outcome, out: Path, student_id: str) -> dict[str, A
     }
 
 
+def _other_id(result: Mapping[str, Any]) -> dict[str, str]:
+    """`sheet_student_id` when the sheet named another student than its file's, else nothing."""
+    other = result.get("sheet_student_id")
+    return {"sheet_student_id": other} if other else {}
+
+
 def _part_count(manifest: Mapping) -> int:
     return sum(len(p["parts"]) for p in manifest["problems"])
 
@@ -541,6 +575,7 @@ def _held(result: Mapping[str, Any]) -> dict[str, Any]:
         "status": result["status"],
         "reason": result.get("reason", ""),
         "warnings": list(result.get("warnings", [])),
+        **_other_id(result),
         "score": result["score"],
         "max_score": result["max_score"],
         "problems": [

@@ -38,6 +38,9 @@ class Sheet:
     answers: dict[int, dict[str, Any]]
     reason: str = ""
     warnings: tuple[str, ...] = ()
+    #: The `student_id` the sheet gives itself when it is not the file's student ("s002" in
+    #: s001.toml), else None: graded as the file's student, and listed for the instructor.
+    other_id: str | None = None
 
     @property
     def readable(self) -> bool:
@@ -246,7 +249,9 @@ def _structure(
 ) -> Sheet:
     warnings = []
     declared = raw.get("student_id")
+    other_id = None
     if declared is not None and str(declared).lower() != student_id.lower():
+        other_id = untrusted.bounded(str(declared), 60)
         warnings.append(
             f"the sheet says student_id = {declared!r} but the file belongs to "
             f"{student_id!r}; graded as {student_id!r}"
@@ -267,7 +272,7 @@ def _structure(
     )
     if extra:
         warnings.append(f"ignored tables that the assignment does not have: {', '.join(extra)}")
-    return Sheet(path, digest, answers, "", tuple(warnings))
+    return Sheet(path, digest, answers, "", tuple(warnings), other_id)
 
 
 def _unknown_keys(index: int, answers: Mapping[str, Any], valid: Sequence[str]) -> list[str]:

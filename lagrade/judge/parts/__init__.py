@@ -44,7 +44,7 @@ from lagrade.judge.parts.own_coordinates import (
     judged_in_chosen_coordinates,
     transformation_remark,
 )
-from lagrade.judge.parts.reading import reading_notes
+from lagrade.judge.parts.reading import hear, reading_notes
 from lagrade.judge.parts.transformation import check_transformation
 from lagrade.judge.problem import Problem
 from lagrade.judge.verdict import Verdict, invalid
@@ -94,6 +94,7 @@ def run_checker(problem: Problem, part: str, answer: Any, given: Mapping | None 
                 verdict = checker(problem, answer, given)
             if part == "transformation":
                 verdict = transformation_remark(problem, answer, verdict)
+        hear(notes)
         return with_notes(verdict, notes)
     except ParseError as error:
         return invalid(part, str(error), getattr(error, "source", ""))
