@@ -401,14 +401,18 @@ def run_batch(
     jobs: int = 1,
     pool: Pool | None = None,
     first_line: int = 1,
+    numbers: Iterable[int] | None = None,
 ) -> Iterator[dict[str, Any]]:
     """One result per input record, in order (blank records are skipped). Records may be bytes
     (split on b"\n" only, see `lagrade.untrusted`): one that is not UTF-8, not JSON, or past
-    the bounds gets `invalid` with the reason, and the batch goes on."""
+    the bounds gets `invalid` with the reason, and the batch goes on. `numbers`: each record's
+    line number in its file, for records that are not consecutive lines (a cluster's chunk of
+    one question's requests); default: consecutive from `first_line`."""
     answers: dict[int, dict[str, Any]] = {}  # lines settled without a worker, by position
     work = []
     ids: list[tuple[Any, Any]] = []
-    for number, line in enumerate(lines, first_line):
+    numbered = enumerate(lines, first_line) if numbers is None else zip(numbers, lines, strict=True)
+    for number, line in numbered:
         if not line.strip():
             continue
         position = len(ids)
