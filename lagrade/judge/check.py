@@ -109,6 +109,15 @@ def prepare(problem: Problem, part: str, diagnosis: bool = False) -> None:
             problem.catalogue.warm(part, problem.points(part))
 
 
+def forget_problems() -> None:
+    """Drop every question this process has derived and every verdict it remembers: a process
+    that outlives one grading run (a Dask worker) then builds each question of the next run
+    from that run's own first student, as a fresh process does."""
+    _problems.clear()
+    _prepared.clear()
+    _verdicts.clear()
+
+
 # --- answers seen before -------------------------------------------------------------------------
 
 #: What was decided for an answer, by (question, part, answer, given): a class types the same

@@ -25,8 +25,6 @@ def require(scheduler: str, jobs: int = 1) -> None:
     """Refuse, before any work, a `--dask` value no run could use: Dask's distributed scheduler
     not installed, an address of no protocol, or `jobs` given for a cluster someone else runs
     (its workers' threads say how many sheets it judges at once)."""
-    if importlib.util.find_spec("distributed") is None:
-        raise ClusterError(f"--dask needs Dask's distributed scheduler, not installed: {INSTALL}")
     if scheduler != "local" and not ADDRESS.fullmatch(scheduler):
         raise ClusterError(
             f"--dask takes 'local' or a scheduler's address such as tcp://10.0.0.5:8786, "
@@ -37,6 +35,8 @@ def require(scheduler: str, jobs: int = 1) -> None:
             "--jobs is for this machine or --dask local; a cluster's workers judge as many at "
             "once as they have threads (dask worker --nthreads N)"
         )
+    if importlib.util.find_spec("distributed") is None:
+        raise ClusterError(f"--dask needs Dask's distributed scheduler, not installed: {INSTALL}")
 
 
 def _distributed() -> Any:
@@ -64,7 +64,7 @@ def connect(scheduler: str, workers: int = 1) -> Iterator[Any]:
                 n_workers=workers,
                 threads_per_worker=1,
                 processes=True,
-                dashboard_address=None,
+                dashboard_address=":0",
                 silence_logs=logging.ERROR,
             )
             address = cluster.scheduler_address

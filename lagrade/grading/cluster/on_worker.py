@@ -22,7 +22,7 @@ from typing import TYPE_CHECKING, Any
 
 from lagrade.assign.manifest import project_version
 from lagrade.errors import ClusterError
-from lagrade.judge.check import check_pool, run_batch
+from lagrade.judge.check import check_pool, forget_problems, run_batch
 from lagrade.judge.worker import Limits, Outcome, Pool
 
 if TYPE_CHECKING:
@@ -91,11 +91,13 @@ def grade_chunk(shared: dict[str, Any], tasks: list[tuple[str, dict]], version: 
 
 
 def _grading_state(shared: dict[str, Any]) -> _Grading:
-    """This process's state for the run `shared` belongs to (a new run replaces the last)."""
+    """This process's state for the run `shared` belongs to: a new run replaces the last, and
+    starts from no derived question."""
     global _grading
     if _grading is None or _grading.run != shared["run"]:
         if _grading is not None and _grading.pool is not None:
             _grading.pool.close()
+        forget_problems()  # another class's run may have built these questions from its students
         _grading = _Grading(**shared)
     return _grading
 
