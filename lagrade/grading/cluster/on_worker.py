@@ -82,6 +82,10 @@ def grade_chunk(shared: dict[str, Any], tasks: list[tuple[str, dict]], version: 
             state.warmed.update(new)
             if state.pool is not None:  # its processes were forked before these questions
                 state.pool.close()
+            # As `grade` does before it forks (lagrade.grading.batch): the collector kept off
+            # what the pool's processes inherit. Unfrozen first, so that what an earlier freeze
+            # kept and has since become garbage in this long-lived process is collected.
+            gc.unfreeze()
             gc.collect()
             gc.freeze()
             _may_fork()
