@@ -65,7 +65,7 @@ def connect(scheduler: str, workers: int = 1) -> Iterator[Any]:
                 threads_per_worker=1,
                 processes=True,
                 dashboard_address=":0",
-                silence_logs=logging.ERROR,
+                silence_logs=logging.CRITICAL,  # its own errors come back with the chunks
             )
             address = cluster.scheduler_address
         else:
