@@ -75,6 +75,7 @@ def run(args: argparse.Namespace) -> int:
             exports=kinds,
             export_options=options,
             as_of=as_of,
+            dask=args.dask,
         )
     print(summary_table(summary) + f" ({summary.reused} unchanged, reused)")
     print(f"gradebook: {summary.out_dir / 'gradebook.csv'}")
@@ -103,6 +104,13 @@ def add_parser(commands: argparse._SubParsersAction) -> None:
     grade.add_argument("submissions", type=Path, metavar="SUBMISSIONS")
     grade.add_argument("--out", type=Path, default=None, help="output folder (default DIR/grades)")
     grade.add_argument("--jobs", type=count, default=1, help="submissions graded in parallel")
+    grade.add_argument(
+        "--dask",
+        metavar="SCHEDULER",
+        default=None,
+        help="grade on a Dask cluster: 'local' starts one here (--jobs workers), tcp://host:port "
+        "joins a running one; needs pip install 'lagrade[dask]'",
+    )
     grade.add_argument(
         "--part-time-limit",
         type=seconds,

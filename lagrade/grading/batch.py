@@ -17,6 +17,7 @@ import gc
 import hashlib
 import json
 import tempfile
+import threading
 from collections.abc import Callable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -123,19 +124,30 @@ def warm_up(manifest: dict) -> None:
     caches a real answer touches (compiled mutants, sample points, reference values), which a
     child would otherwise rebuild and throw away for every submission (measured: about 3× the
     grading time of a warm process)."""
-    seen = set()
+    warm_questions(asked_questions(manifest))
+
+
+def asked_questions(manifest: Mapping[str, Any]) -> dict[tuple[str, str], tuple[dict, Mapping]]:
+    """Each distinct question of the class, (its key, the part), with the spec and part of the
+    first student on the roster who is asked it. The Problem every later student shares is
+    built from that student's variant (its sample points, so the points feedback quotes), so
+    whichever process builds it, this machine's or a Dask worker, builds the same."""
+    asked: dict[tuple[str, str], tuple[dict, Mapping]] = {}
     for student in manifest["students"]:
         for entry, problem in zip(student["problems"], manifest["problems"], strict=True):
             for part in problem["parts"]:
                 spec = _spec(entry, part)
-                key = (_question_key(spec), part["part"])
-                if key in seen:
-                    continue
-                seen.add(key)
-                asked = question(spec)
-                prepare(asked, part["part"], diagnosis=True)
-                if part["part"] != "expression" and asked.variant is not None:
-                    _warm_with_key(asked, part)
+                asked.setdefault((_question_key(spec), part["part"]), (spec, part))
+    return asked
+
+
+def warm_questions(asked: Mapping[tuple[str, str], tuple[dict, Mapping]]) -> None:
+    """Derive each question of `asked` (as `asked_questions` gives them) in this process."""
+    for spec, part in asked.values():
+        problem = question(spec)
+        prepare(problem, part["part"], diagnosis=True)
+        if part["part"] != "expression" and problem.variant is not None:
+            _warm_with_key(problem, part)
 
 
 def _warm_with_key(question: Problem, part: Mapping[str, Any]) -> None:
@@ -144,8 +156,11 @@ def _warm_with_key(question: Problem, part: Mapping[str, Any]) -> None:
     name = part["part"]
     variant = question.variant
     given = {"lagrangian": key_answer(variant, "lagrangian")} if name in FOLLOW_L else None
+    # The alarm rings only in a main thread; a Dask worker warms up in one of its threads, and
+    # checks the key (verified when it was generated) without it.
+    main = threading.current_thread() is threading.main_thread()
     try:
-        with time_limit(10.0):
+        with time_limit(10.0 if main else None):
             run_checker(question, name, key_answer(variant, name, part.get("quantity")), given)
     except (PartTimeout, LagradeError, ArithmeticError, ValueError):
         pass
@@ -265,7 +280,9 @@ def grade_student(manifest: Mapping, rubric: Rubric, task: Mapping[str, Any]) ->
     student = task["student"]
     problems = manifest["problems"]
     keys = {p["index"]: [part["key"] for part in p["parts"]] for p in problems}
-    sheet = read_sheet(Path(task["path"]), student["id"], len(problems), keys)
+    # On a Dask cluster the parent has read the file and sends its bytes (`content`).
+    content = task.get("content")
+    sheet = read_sheet(Path(task["path"]), student["id"], len(problems), keys, content)
     base = {"warnings": list(sheet.warnings) + ([task["note"]] if task.get("note") else [])}
     if sheet.other_id is not None:
         base["sheet_student_id"] = sheet.other_id
@@ -365,15 +382,22 @@ def grade(
     exports: Sequence[str] = (),
     export_options: gradebooks.ExportOptions | None = None,
     as_of: dt.datetime | None = None,
+    dask: str | None = None,
 ) -> BatchSummary:
     """Grade every roster student's sheet in `submissions`; write results into `out_dir`
     (default: `grades/` beside the manifest); `exports` adds LMS gradebooks ("canvas",
     "moodle", written with `export_options`: `lagrade.grading.gradebooks`); `as_of` grades
     each student's last save at or before that instant, from the answer page's log of saves
-    (`lagrade.grading.savelog`). See the module docstring for the guarantees."""
+    (`lagrade.grading.savelog`); `dask` judges the sheets on a Dask cluster ("local", or a
+    scheduler's address: `lagrade.grading.cluster`), with `jobs` the number of workers of a
+    local one. See the module docstring for the guarantees."""
     manifest_path = Path(manifest_path)
     submissions = Path(submissions)
     _check_arguments(manifest_path, submissions)
+    if dask is not None:  # a cluster that cannot be used stops the run before it starts
+        from lagrade.grading.cluster import require
+
+        require(dask, jobs)
     manifest = load_manifest(manifest_path)
     rubric = _rubric(manifest_path, manifest)
     if exports:  # a bad [lms] table or id stops the run before anything is graded
@@ -394,6 +418,7 @@ def grade(
             exports,
             export_options,
             none,
+            dask,
         )
 
 
@@ -445,6 +470,7 @@ def _grade_into(
     exports: Sequence[str] = (),
     export_options: gradebooks.ExportOptions | None = None,
     no_sheet: str = "",
+    dask: str | None = None,
 ) -> BatchSummary:
     """The body of `grade`, run while this process holds the output folder; `no_sheet` is why
     a student without a sheet has none, when the folder says nothing about it."""
@@ -485,43 +511,60 @@ def _grade_into(
             )
         )
 
-    if tasks:
-        warm_up(manifest)
-        # Children are forked: keep the collector off the parent's (now immortal) objects, or
-        # every child would touch, and so copy, the whole heap (measured: half its time).
-        gc.collect()
-        gc.freeze()
     by_id = {s["id"]: s for s in students}
     fingerprints = {key: task["fingerprint"] for key, task in tasks}
     done = len(results)
-    work = functools.partial(grade_student, manifest, rubric)
-    with Pool(work, jobs=jobs, limits=limits) as pool:
-        # A worker killed in a part leaves a task that resumes after it: judged in a later
-        # round, by a fresh worker (each round settles at least one part of each such sheet).
-        while tasks:
-            by_key = dict(tasks)
-            tasks = []
-            for outcome in pool.run(list(by_key.items())):
-                again = resume.resumed(by_key[outcome.key], outcome)
-                if again is not None:
-                    tasks.append((outcome.key, again))
-                    continue
-                student = by_id[outcome.key]
-                value = _outcome_result(outcome, out, student["id"])
-                results[student["id"]] = _store(
-                    out,
-                    manifest,
-                    _finish(student, manifest, value, fingerprints[outcome.key], version),
-                )
-                done += 1
-                if progress:
-                    progress(done, len(students), student["id"])
+    if dask is None:
+        outcomes = _judged_here(manifest, rubric, tasks, jobs, limits)
+    else:
+        from lagrade.grading.cluster import grade_on_cluster
+
+        outcomes = grade_on_cluster(dask, manifest, rubric, tasks, jobs, limits, version)
+    for outcome in outcomes:
+        student = by_id[outcome.key]
+        value = _outcome_result(outcome, out, student["id"])
+        results[student["id"]] = _store(
+            out, manifest, _finish(student, manifest, value, fingerprints[outcome.key], version)
+        )
+        done += 1
+        if progress:
+            progress(done, len(students), student["id"])
 
     ordered = [results[s["id"]] for s in students]
     report.write_class_reports(out, manifest, ordered, stray)
     books = gradebooks.write_exports(out, manifest, ordered, exports, export_options)
     counts = {s: sum(1 for r in ordered if r["status"] == s) for s in STATUSES}
     return BatchSummary(out, counts, reused, ordered, stray, tuple(books))
+
+
+def _judged_here(
+    manifest: dict[str, Any], rubric: Rubric, tasks: list, jobs: int, limits: Limits
+) -> Iterator[Outcome]:
+    """Each task's Outcome from this machine's pool, forked after the questions are derived."""
+    if not tasks:
+        return
+    warm_up(manifest)
+    # Children are forked: keep the collector off the parent's (now immortal) objects, or
+    # every child would touch, and so copy, the whole heap (measured: half its time).
+    gc.collect()
+    gc.freeze()
+    with Pool(functools.partial(grade_student, manifest, rubric), jobs=jobs, limits=limits) as pool:
+        yield from judge_sheets(pool, tasks)
+
+
+def judge_sheets(pool: Pool, tasks: list[tuple[str, dict[str, Any]]]) -> Iterator[Outcome]:
+    """The Outcome of each (student id, task), as each is settled. A worker killed in a part
+    leaves a task that resumes after it: judged in a later round, by a fresh worker (each round
+    settles at least one part of each such sheet)."""
+    while tasks:
+        by_key = dict(tasks)
+        tasks = []
+        for outcome in pool.run(list(by_key.items())):
+            again = resume.resumed(by_key[outcome.key], outcome)
+            if again is not None:
+                tasks.append((outcome.key, again))
+                continue
+            yield outcome
 
 
 def _missing_reason(student_id: str, stray: Mapping[str, str]) -> str:

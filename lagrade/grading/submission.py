@@ -113,11 +113,14 @@ def read_sheet(
     student_id: str,
     problem_count: int,
     keys: Mapping[int, Sequence[str]] | None = None,
+    content: tuple[bytes, str] | None = None,
 ) -> Sheet:
     """Read and validate an answer sheet, never raising over its content. `keys[k]` are the
     part keys of problem k; a key the problem does not have is reported as a warning, with
-    the closest valid key (a misspelled `lagrangain` must not silently read as "not answered")."""
-    data, reason = read_regular_file(path)
+    the closest valid key (a misspelled `lagrangain` must not silently read as "not answered").
+    `content`: what `read_regular_file(path)` gave another process (a Dask worker does not
+    share the grading machine's files, so the parent reads them and sends the bytes)."""
+    data, reason = read_regular_file(path) if content is None else content
     if reason:
         return _bad(path, "", reason)
     return sheet_from_bytes(path, data, student_id, problem_count, keys)
