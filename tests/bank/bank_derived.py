@@ -6,8 +6,10 @@ to what the Python scenes they replaced derived (`test_bank_unchanged.py`).
 `tests/bank/data/bank_derived.json`, was written by this script run against main at b755f21,
 the last commit with the Python scenes (`lagrade/bank/scenes/*.py`; first written at c5b4539,
 then again at b755f21 once issue 30's figure labels and Markdown prose had landed: only figure
-bytes and Markdown statements differ between the two), and must never be regenerated from the
-new code to make a test pass. Only APIs both versions have are used.
+bytes and Markdown statements differ between the two; and again at b755f21 with issue 28's two
+presentation changes applied to its code by hand, the figure's axis names in GREY_TEXT and each
+MathML formula's aria-label, so only figure bytes and statement HTML differ), and must never be
+regenerated from the new code to make a test pass. Only APIs both versions have are used.
 
 Expressions are kept twice: `str` (readable in a failing diff) and the SHA-256 of `srepr`
 (exact: tree shape, argument order and symbol assumptions), so that the record stays small.
