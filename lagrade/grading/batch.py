@@ -37,7 +37,7 @@ from lagrade.grading.instants import shown
 from lagrade.grading.manifest import entry_spec, entry_variant, load_manifest
 from lagrade.grading.rubric import Rubric, load_rubric
 from lagrade.grading.submission import UnreadableAnswer, find_submission, read_sheet
-from lagrade.judge.check import cached_problem, prepare, timeout_verdict
+from lagrade.judge.check import cached_problem, forget_problems, prepare, timeout_verdict
 from lagrade.judge.key import key_answer
 from lagrade.judge.parts import run_checker
 from lagrade.judge.parts.own_coordinates import FOLLOWING
@@ -543,6 +543,9 @@ def _judged_here(
     """Each task's Outcome from this machine's pool, forked after the questions are derived."""
     if not tasks:
         return
+    # Each question from this class's own first student, as in a fresh process: a class graded
+    # earlier in this process (by the API) may have built it from another seed.
+    forget_problems()
     warm_up(manifest)
     # Children are forked: keep the collector off the parent's (now immortal) objects, or
     # every child would touch, and so copy, the whole heap (measured: half its time).

@@ -13,7 +13,7 @@ from lagrade.assign.views import MULTILINE
 from lagrade.bank import get_scene
 from lagrade.grading.batch import grade_part
 from lagrade.grading.rubric import Rubric
-from lagrade.judge.check import check
+from lagrade.judge.check import check, forget_problems
 from lagrade.judge.key import key_answer
 from lagrade.judge.parts import PARTS
 
@@ -22,6 +22,14 @@ VARIANT = get_scene("wedge").variant(SEED)
 ENTRY = {"scene": "wedge", "seed": SEED, "coordinates": list(VARIANT.coordinates)}
 VALUE = float(sp.N(VARIANT.quantities["block_acceleration"].xreplace(VARIANT.numeric_values)))
 L_TEXT = key_answer(VARIANT, "lagrangian")
+
+
+@pytest.fixture(autouse=True)
+def _questions_built_here():
+    """`grade` shares a question among a class, built from the first student asked it; a run
+    earlier in this process (another test's class) may have built this one from another seed,
+    whose sample points the feedback would quote. Each test starts from none, as a command does."""
+    forget_problems()
 
 
 def _answers() -> list[tuple[str, object]]:

@@ -23,7 +23,7 @@ from lagrade.cli.check import check_batch_file
 from lagrade.grading.batch import grade
 from lagrade.grading.manifest import student_variant
 from lagrade.grading.rubric import Rubric
-from lagrade.judge.check import check
+from lagrade.judge.check import check, forget_problems
 from lagrade.notation.printer import answer_latex
 
 SEED = 2025
@@ -173,6 +173,9 @@ def _students():
 def graded(tmp_path_factory):
     """A class of one student per spelling × style × right/wrong, graded by `grade` from
     answer sheets written as TOML; and every one of their answers as `check` requests."""
+    # `grade` shares a question among a class, built from the first student asked it: a class
+    # graded earlier in this process (another test's) may have built it from another seed.
+    forget_problems()
     root = tmp_path_factory.mktemp("one-door")
     (root / "assignment.toml").write_text(ASSIGNMENT)
     students = _students()
