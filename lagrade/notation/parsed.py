@@ -1,26 +1,77 @@
-"""The result of parsing one answer: `Parsed`, with the expression or equation sympy holds, the
-names found, warnings, and the reading shown back to the student."""
+"""The result of parsing one answer: `Parsed`, with the tree the parser read, the names found,
+warnings, the reading shown back to the student, and the expression or equation in sympy — built
+from the tree on first use, or at once where the parser's screen wants sympy's own checks
+(`lagrade.notation.screen`)."""
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from typing import Any, NamedTuple
 
 import sympy as sp
 
 import lagrade.notation.printer as printer
+from lagrade.notation.nodes import Node
 
 
-@dataclass(frozen=True)
+class Tree(NamedTuple):
+    """The sides of an answer as read, for a caller that compiles them itself: `rhs` None with
+    `equation` True is a bare expression read as an equation (its right side is 0)."""
+
+    lhs: Node
+    rhs: Node | None
+    equation: bool
+
+
+_UNBUILT: Any = object()
+
+
 class Parsed:
     """A parsed answer: an expression (rhs None) or an equation lhs = rhs, the names found, and
-    warnings about readings the student may want to check."""
+    warnings about readings the student may want to check. `tree` is the parser's tree when
+    the sympy form is left to be built on demand (None when it was built at once)."""
 
-    source: str
-    lhs: sp.Expr
-    rhs: sp.Expr | None
-    symbols: frozenset[str]
-    warnings: tuple[str, ...] = ()
-    echo: str = ""  # the plain reading, written from the parse tree (see lagrade.notation.echo)
+    __slots__ = ("source", "symbols", "warnings", "echo", "tree", "_lhs", "_rhs", "_build")
+
+    def __init__(
+        self,
+        source: str,
+        lhs: sp.Expr | Any,
+        rhs: sp.Expr | None | Any,
+        symbols: frozenset[str],
+        warnings: tuple[str, ...] = (),
+        echo: str = "",
+        tree: Tree | None = None,
+        build: Any = None,
+    ):
+        self.source = source
+        self.symbols = symbols
+        self.warnings = warnings
+        self.echo = echo  # the plain reading, from the parse tree (see lagrade.notation.echo)
+        self.tree = tree
+        self._lhs, self._rhs, self._build = lhs, rhs, build
+
+    @classmethod
+    def unbuilt(
+        cls, source: str, tree: Tree, symbols: frozenset[str], warnings, echo: str, build
+    ) -> Parsed:
+        """A Parsed whose sympy sides `build(node)` makes when first asked for."""
+        return cls(source, _UNBUILT, _UNBUILT, symbols, tuple(warnings), echo, tree, build)
+
+    @property
+    def lhs(self) -> sp.Expr:
+        if self._lhs is _UNBUILT:
+            self._lhs = self._build(self.tree.lhs)  # type: ignore[union-attr]
+        return self._lhs
+
+    @property
+    def rhs(self) -> sp.Expr | None:
+        if self._rhs is _UNBUILT:
+            tree = self.tree
+            if tree.rhs is not None:  # type: ignore[union-attr]
+                self._rhs = self._build(tree.rhs)  # type: ignore[union-attr]
+            else:
+                self._rhs = sp.S.Zero if tree.equation else None  # type: ignore[union-attr]
+        return self._rhs
 
     @property
     def expr(self) -> sp.Expr:
@@ -29,6 +80,8 @@ class Parsed:
 
     @property
     def is_equation(self) -> bool:
+        if self.tree is not None:
+            return self.tree.rhs is not None or self.tree.equation
         return self.rhs is not None
 
     def plain(self) -> str:
@@ -45,3 +98,6 @@ class Parsed:
         if self.rhs is None:
             return printer.answer_latex(self.lhs)
         return f"{printer.answer_latex(self.lhs)} = {printer.answer_latex(self.rhs)}"
+
+    def __repr__(self) -> str:
+        return f"Parsed({self.source!r}, echo={self.echo!r})"
