@@ -40,11 +40,11 @@ from lagrade.judge.verdict import Verdict
 
 
 def judge_lagrangian(
-    problem: Problem, expr: sp.Expr | Compiled
+    problem: Problem, expr: sp.Expr | Compiled, diagnose: bool = True
 ) -> tuple[str, float, list[str], Outcome, dict[str, float] | None, tuple[str, ...]]:
     """(status, score, feedback, outcome, witness, mistakes) for a Lagrangian answer (a sympy
     expression, or compiled already); the witness is a point where the motion differs, when it
-    does."""
+    does. `diagnose=False`: a wrong answer's status alone, without feedback."""
     answer = expr if isinstance(expr, Compiled) else Compiled.of(expr)
     points = problem.points("lagrangian")
     if has_acceleration(problem, answer):  # before E(L), which needs an L(q, q̇, t)
@@ -97,6 +97,8 @@ def judge_lagrangian(
             None,
             ("V_minus_T",),
         )
+    if not diagnose:
+        return ("incorrect", 0.0, [], out, None, ())
     feedback = []
     mistakes: tuple[str, ...] = ()
     mutant = problem.catalogue.match_lagrangian(answer, points, match.answer_el)
@@ -174,9 +176,10 @@ def _same_dynamics_notes(problem: Problem, answer: Compiled, match, points: Poin
 
 def check_lagrangian(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
     got = read_single(problem, answer, "lagrangian", "L")
-    judged = judge_lagrangian(problem, got.compiled)
-    if judged[0] != "correct" and got.compiled is not got.sympy_compiled:
-        judged = judge_lagrangian(problem, got.sympy_compiled)  # feedback: the sympy form's
+    tree = got.compiled is not got.sympy_compiled
+    judged = judge_lagrangian(problem, got.compiled, diagnose=not tree)
+    if judged[0] != "correct" and tree:  # a wrong answer's feedback reads its sympy form
+        judged = judge_lagrangian(problem, got.sympy_compiled)
     status, score, feedback, out, witness, mistakes = judged
     if status != "correct":
         named = not mistakes or "missing_factor" in mistakes  # see dimensions.tells

@@ -39,15 +39,18 @@ def check_eom(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
     lines = read_lines(list_items(answer, "eom"), read_line)
     if not lines.reads:
         return invalid("eom", "Give one equation of motion per coordinate.")
-    verdict = _judge(problem, lines, [r.compiled for r in lines.reads], given)
-    if verdict.status != "correct" and any(r.compiled is not r.sympy_compiled for r in lines.reads):
-        # the feedback on a wrong answer reads the sympy forms (`Read.sympy_compiled`)
+    tree = any(r.compiled is not r.sympy_compiled for r in lines.reads)
+    verdict = _judge(problem, lines, [r.compiled for r in lines.reads], given, not tree)
+    if verdict is None:  # wrong: the feedback reads the sympy forms (`Read.sympy_compiled`)
         verdict = _judge(problem, lines, [r.sympy_compiled for r in lines.reads], given)
-    return verdict
+    return verdict  # type: ignore[return-value]
 
 
-def _judge(problem: Problem, lines, compiled: list[Compiled], given: Mapping | None) -> Verdict:
-    """The verdict on the equations read (`lines`), compiled."""
+def _judge(
+    problem: Problem, lines, compiled: list[Compiled], given: Mapping | None, diagnose=True
+) -> Verdict | None:
+    """The verdict on the equations read (`lines`), compiled; None for a wrong equation when
+    not `diagnose` (the verdict then needs its feedback, found another time)."""
     reads = lines.reads
     echoes = lines.echoes
     entry = [k for k, e in enumerate(lines.entries) if isinstance(e, Read)]  # read → position
@@ -85,6 +88,8 @@ def _judge(problem: Problem, lines, compiled: list[Compiled], given: Mapping | N
         if out.equal:
             right.append(k)
             continue
+        if not diagnose:
+            return None
         wrong.append(k)
         witness = witness or witness_point(points, out, compiled[k])
         mutant = problem.catalogue.match_row(compiled[k], points)
