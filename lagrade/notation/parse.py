@@ -75,7 +75,13 @@ def _parse_source(src: Source, vocabulary: Vocabulary, latex: bool | None, mode:
     if not needs_sympy((lhs_node, rhs_node), imaginary):  # sympy would refuse nothing: later
         tree = Tree(lhs_node, rhs_node, mode == "equation")
         return Parsed.unbuilt(
-            src.original, tree, found, parser.warnings, shown, lambda node: build(node, src)
+            src.original,
+            tree,
+            found,
+            parser.warnings,
+            shown,
+            lambda node: build(node, src),
+            src.text,
         )
     lhs = build(lhs_node, src)
     rhs = build(rhs_node, src) if rhs_node is not None else None
@@ -84,7 +90,10 @@ def _parse_source(src: Source, vocabulary: Vocabulary, latex: bool | None, mode:
     for side, node in ((lhs, lhs_node), (rhs, rhs_node)):
         if side is not None:
             check_finite(side, node, src, imaginary=imaginary)
-    return Parsed(src.original, lhs, rhs, found, tuple(parser.warnings), shown)
+    sides = Tree(lhs_node, rhs_node, mode == "equation")
+    return Parsed(
+        src.original, lhs, rhs, found, tuple(parser.warnings), shown, sides=sides, text=src.text
+    )
 
 
 def _guarded(

@@ -5,11 +5,14 @@ from the tree on first use, or at once where the parser's screen wants sympy's o
 
 from __future__ import annotations
 
+from collections.abc import Iterable
 from typing import Any, NamedTuple
 
 import sympy as sp
+from markupsafe import Markup
 
 import lagrade.notation.printer as printer
+import lagrade.notation.typeset as typeset
 from lagrade.notation.nodes import Node
 
 
@@ -30,7 +33,8 @@ class Parsed:
     warnings about readings the student may want to check. `tree` is the parser's tree when
     the sympy form is left to be built on demand (None when it was built at once)."""
 
-    __slots__ = ("source", "symbols", "warnings", "echo", "tree", "_lhs", "_rhs", "_build")
+    __slots__ = ("source", "symbols", "warnings", "echo", "tree", "sides", "text", "_lhs", "_rhs")
+    __slots__ += ("_build",)
 
     def __init__(
         self,
@@ -42,20 +46,26 @@ class Parsed:
         echo: str = "",
         tree: Tree | None = None,
         build: Any = None,
+        sides: Tree | None = None,
+        text: str = "",
     ):
         self.source = source
         self.symbols = symbols
         self.warnings = warnings
         self.echo = echo  # the plain reading, from the parse tree (see lagrade.notation.echo)
         self.tree = tree
+        self.sides = sides if sides is not None else tree  # the tree, for the typeset echo
+        self.text = text  # the text the tree was read from (LaTeX translated)
         self._lhs, self._rhs, self._build = lhs, rhs, build
 
     @classmethod
     def unbuilt(
-        cls, source: str, tree: Tree, symbols: frozenset[str], warnings, echo: str, build
+        cls, source: str, tree: Tree, symbols: frozenset[str], warnings, echo: str, build, text
     ) -> Parsed:
         """A Parsed whose sympy sides `build(node)` makes when first asked for."""
-        return cls(source, _UNBUILT, _UNBUILT, symbols, tuple(warnings), echo, tree, build)
+        return cls(
+            source, _UNBUILT, _UNBUILT, symbols, tuple(warnings), echo, tree, build, text=text
+        )
 
     @property
     def lhs(self) -> sp.Expr:
@@ -94,10 +104,29 @@ class Parsed:
         return f"{printer.plain(self.lhs)} = {printer.plain(self.rhs)}"
 
     def latex(self) -> str:
-        """LaTeX with dots over derivatives (\\dot{\\theta}, \\ddot{x}_{M}) and \\cdot products."""
-        if self.rhs is None:
-            return printer.answer_latex(self.lhs)
-        return f"{printer.answer_latex(self.lhs)} = {printer.answer_latex(self.rhs)}"
+        """LaTeX in the student's order, with dots over derivatives (\\dot{\\theta},
+        \\ddot{x}_{M}) and every product shown (\\cdot), from the tree (`typeset`)."""
+        if self.sides is None:
+            if self.rhs is None:
+                return printer.answer_latex(self.lhs)
+            return f"{printer.answer_latex(self.lhs)} = {printer.answer_latex(self.rhs)}"
+        lhs, rhs, equation = self.sides
+        shown = typeset.latex(lhs, self.text)
+        if rhs is not None:
+            return f"{shown} = {typeset.latex(rhs, self.text)}"
+        return f"{shown} = 0" if equation else shown
+
+    def mathml(self, coordinates: Iterable[str] = ()) -> Markup:
+        """Presentation MathML of the reading, in the student's order (`typeset`); velocities
+        and accelerations of `coordinates` dotted."""
+        if self.sides is None:  # made from sympy forms, with no tree: sympy's order
+            shown = self.lhs if self.rhs is None else sp.Eq(self.lhs, self.rhs, evaluate=False)
+            return printer.mathml(shown, coordinates)
+        lhs, rhs, equation = self.sides
+        if rhs is None and equation:
+            zero = Node("num", 0, 0, (0, 1), True)
+            return typeset.mathml((lhs, zero), "0", coordinates)
+        return typeset.mathml((lhs,) if rhs is None else (lhs, rhs), self.text, coordinates)
 
     def __repr__(self) -> str:
         return f"Parsed({self.source!r}, echo={self.echo!r})"
