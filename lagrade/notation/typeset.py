@@ -16,7 +16,7 @@ from typing import Any
 
 from markupsafe import Markup
 
-from lagrade.notation import printer
+import lagrade.notation.printer as printer
 from lagrade.notation.echo import DECIMAL
 
 _SUM, _PRODUCT, _SIGNED, _POWER, _ATOM = range(5)
