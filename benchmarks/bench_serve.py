@@ -8,7 +8,8 @@ Run: python benchmarks/bench_serve.py [--rounds 4] [--jobs 2]
 Each simulated student opens their page, then `--rounds` times: previews three answers of
 the kinds students type (right in plain text, LaTeX, a sign mistake, an unreadable one) and
 saves the sheet with a marker of its own. Every student stops by itself after its rounds; at
-the end every sheet on disk must be that student's own last save (no lost or mixed-up sheet).
+the end every sheet on disk must be that student's own last save (no lost or mixed-up sheet),
+and the log of saves must hold every save the server acknowledged, in order, each once.
 Reports per level: requests, wall time, median and p99 latency of previews and saves, errors.
 Latencies include queueing: with 200 students on 2 cores, a preview waits for the workers.
 Under attack, the attackers' replies are reported too: each should be `timeout` within the
@@ -34,6 +35,7 @@ from pathlib import Path
 from urllib.parse import urlsplit
 
 from lagrade.assign.generate import generate
+from lagrade.grading.savelog import SaveLog, log_path
 
 ASSIGNMENT = """\
 title = "Answer page benchmark"
@@ -124,6 +126,7 @@ class Student(threading.Thread):
         self.saves: list[float] = []
         self.errors: list[str] = []
         self.last_marker = ""
+        self.acknowledged: list[str] = []  # the markers of the saves answered 200
 
     def request(self, conn, method: str, path: str, body: dict | None = None) -> float:
         data = json.dumps(body).encode() if body is not None else None
@@ -132,6 +135,7 @@ class Student(threading.Thread):
         response = conn.getresponse()
         response.read()
         elapsed = time.perf_counter() - start
+        self.status = response.status
         if response.status != 200:
             self.errors.append(f"{method} {path.rsplit('/', 1)[-1]}: {response.status}")
         return elapsed
@@ -156,6 +160,8 @@ class Student(threading.Thread):
                     self.request(conn, "POST", self.path + "/save", {"answers": answers})
                 )
                 self.last_marker = marker
+                if self.status == 200:
+                    self.acknowledged.append(marker)
         except (OSError, http.client.HTTPException) as error:
             self.errors.append(f"{type(error).__name__}: {error}")
         finally:
@@ -197,6 +203,8 @@ def run_level(
 ) -> dict:
     chosen = links[:students]
     crowd = [Student(row["url"], rounds, seed=k) for k, row in enumerate(chosen)]
+    log = SaveLog(log_path(sheets), create=False)
+    logged_before = {row["id"]: len(log.saves(row["id"])) for row in chosen}
     stop = threading.Event()
     attacks = [Attacker(row["url"], stop) for row in links[students : students + attackers]]
     for a in attacks:
@@ -223,6 +231,13 @@ def run_level(
             mixed += 1
         if f'student_id = "{row["id"]}"' not in text:
             mixed += 1
+    unlogged = 0
+    for row, s in zip(chosen, crowd, strict=True):
+        rows = log.saves(row["id"])[logged_before[row["id"]] :]
+        markers = [r.answers["1"]["momenta"].rsplit("# ", 1)[-1] for r in rows]
+        unlogged += abs(len(markers) - len(s.acknowledged)) + sum(
+            a != b for a, b in zip(markers, s.acknowledged, strict=False)
+        )
     return {
         "students": students,
         "requests": len(previews) + len(saves) + students,
@@ -233,6 +248,7 @@ def run_level(
         "save_p99_ms": percentile(saves, 0.99) * 1e3,
         "errors": len(errors),
         "lost_or_mixed_sheets": mixed,
+        "log_mismatches": unlogged,
         "attacks": len(replies),
         "attack_statuses": sorted({status for _, status in replies}),
         "attack_max_s": max((t for t, _ in replies), default=0.0),
@@ -254,7 +270,8 @@ def main() -> None:
             Student(links[0]["url"], 1, seed=0).run()  # warm the workers (not reported)
             print(
                 f"{'students':>8} {'requests':>8} {'wall s':>7} {'preview med':>12} "
-                f"{'p99 ms':>8} {'save med':>9} {'p99 ms':>8} {'errors':>6} {'lost/mixed':>10}"
+                f"{'p99 ms':>8} {'save med':>9} {'p99 ms':>8} {'errors':>6} {'lost/mixed':>10} "
+                f"{'unlogged':>8}"
             )
             runs = [(students, args.rounds, 0) for students in LEVELS]
             runs += [(BYSTANDERS, BYSTANDER_ROUNDS, 0), (BYSTANDERS, BYSTANDER_ROUNDS, 2)]
@@ -265,7 +282,7 @@ def main() -> None:
                     f"{label:>8} {r['requests']:>8} {r['wall_s']:>7.1f} "
                     f"{r['preview_median_ms']:>12.1f} {r['preview_p99_ms']:>8.1f} "
                     f"{r['save_median_ms']:>9.1f} {r['save_p99_ms']:>8.1f} {r['errors']:>6} "
-                    f"{r['lost_or_mixed_sheets']:>10}",
+                    f"{r['lost_or_mixed_sheets']:>10} {r['log_mismatches']:>8}",
                     flush=True,
                 )
                 if attackers:

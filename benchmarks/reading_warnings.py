@@ -80,7 +80,9 @@ def key_answers():
 def pairs(name: str):
     for line in (ROOT / "benchmarks" / "corpus" / name).read_text().splitlines():
         row = json.loads(line)
-        vocabulary = Vocabulary.from_names(row["coordinates"], row["parameters"])
+        vocabulary = Vocabulary.from_names(
+            row["coordinates"], row["parameters"], imaginary_unit=row.get("imaginary_unit")
+        )
         yield vocabulary, row["answer"], bool(row["label"])
 
 

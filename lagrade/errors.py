@@ -10,6 +10,8 @@
     │                               surrogate, nesting or a number past the bounds, not JSON/TOML)
     ├── OutputError                 an output folder that cannot be written (disk full, read-only)
     │   └── OutputBusy              an output folder another run is writing to now (locked)
+    ├── ClusterError                a Dask cluster that cannot be used (not installed, unreachable,
+    │                               workers running another lagrade)
     └── GraderError                 reading and judging answers
         ├── ParseError              student text that does not parse (message, span, source, hint)
         ├── RequestError            a grading request or problem definition that is malformed
@@ -95,6 +97,12 @@ class OutputError(LagradeError):
 
 class OutputBusy(OutputError):
     """The output folder is locked by another run that is writing there now."""
+
+
+class ClusterError(LagradeError):
+    """A Dask cluster that cannot be used as asked (`--dask`): the optional extra is not
+    installed, the scheduler cannot be reached or has no workers, a worker runs another version
+    of lagrade, or the scheduler was lost mid-run. The message says what to do."""
 
 
 class GraderError(LagradeError):

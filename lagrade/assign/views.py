@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import hashlib
 import json
+import re
 from functools import lru_cache
 from typing import Any
 
@@ -187,6 +188,7 @@ def problem_view(problem: Problem, choice: VariantChoice, name: str) -> dict[str
             "svg": f"../figures/{name}.svg",
             "pdf": f"../figures/{name}.pdf",
             "inline_svg": _inline_svg(symbolic["figure"].svg),
+            "alt": figure_alternative(problem.index, problem.title, symbolic["figure"].labels),
         },
         "solution": {
             **{
@@ -292,6 +294,19 @@ def _sheet(problem: Problem, answers: dict[str, Any]) -> str:
         answer = answers[part.quantity if part.part == EXPRESSION else part.part]
         lines.append(f"{part.key} = {toml_literal(answer, part.part in MULTILINE)}")
     return "\n".join(lines)
+
+
+def figure_alternative(index: int, title: str, labels: tuple[str, ...]) -> str:
+    """The figure's text alternative: what it shows and the names written on it, in the
+    notation students type (`x_M`, `alpha`); the statement beside it says the rest."""
+    names = [
+        re.sub(r"\\([A-Za-z]+)", r"\1", t.strip("$")).replace("{", "").replace("}", "")
+        for t in labels
+    ]
+    shown = ", ".join(dict.fromkeys(n for n in names if n))
+    return f"Figure of problem {index}, {title}, drawn as the statement describes" + (
+        f"; labelled {shown}." if shown else "."
+    )
 
 
 def _inline_svg(svg: bytes) -> Markup:

@@ -11,7 +11,7 @@ import argparse
 import contextlib
 import json
 import sys
-from collections.abc import Iterator
+from collections.abc import Iterable, Iterator
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, BinaryIO
 
@@ -61,14 +61,19 @@ def check_batch_file(
     *,
     time_limit: float = DEFAULT_TIME_LIMIT,
     jobs: int = 1,
+    dask: str | None = None,
 ) -> tuple[int, str]:
     """`lagrade check --batch`: results to `out` (written whole or not at all) or, without it,
     to standard output as they come. Requests are read and judged a chunk at a time by one pool
-    of workers, so memory stays bounded whatever the batch's size. Returns (exit status, the
-    summary line to print: empty when the results went to standard output)."""
+    of workers, so memory stays bounded whatever the batch's size; with `dask`, by the workers
+    of a Dask cluster (`lagrade.grading.cluster`). Returns (exit status, the summary line to
+    print: empty when the results went to standard output)."""
     import lagrade.grading.atomic as atomic
-    from lagrade.judge.check import check_pool, run_batch
 
+    if dask is not None:  # a cluster that cannot be used stops the run before it starts
+        from lagrade.grading.cluster import require
+
+        require(dask, jobs)
     source = sys.stdin.buffer if str(requests) == "-" else _open_requests(Path(requests))
     counts: dict[str, int] = {}
     with contextlib.ExitStack() as stack:
@@ -78,9 +83,8 @@ def check_batch_file(
         else:  # standard output: each result as soon as it is known, in order
             sink = sys.stdout.buffer
             sys.stdout.flush()
-        pool = stack.enter_context(check_pool(jobs))
-        for first_line, chunk in _chunks(source):
-            for result in run_batch(chunk, time_limit=time_limit, pool=pool, first_line=first_line):
+        for results in _judged(source, time_limit, jobs, dask, stack):
+            for result in results:
                 counts[result["verdict"]] = counts.get(result["verdict"], 0) + 1
                 sink.write(json.dumps(result, ensure_ascii=False).encode("utf-8") + b"\n")
             if out is None:
@@ -90,6 +94,26 @@ def check_batch_file(
     total = sum(counts.values())
     summary = f"{total} requests: " + ", ".join(f"{v} {k}" for k, v in sorted(counts.items()))
     return 0, f"{summary}; results in {out}"
+
+
+def _judged(
+    source: BinaryIO, time_limit: float, jobs: int, dask: str | None, stack: contextlib.ExitStack
+) -> Iterator[Iterable[dict[str, Any]]]:
+    """The results of the requests in `source`, in order, a round at a time: by this machine's
+    pool, or by a Dask cluster's workers."""
+    if dask is None:
+        from lagrade.judge.check import check_pool, run_batch
+
+        pool = stack.enter_context(check_pool(jobs))
+        for first_line, chunk in _chunks(source):
+            yield run_batch(chunk, time_limit=time_limit, pool=pool, first_line=first_line)
+        return
+    from lagrade.assign.manifest import project_version
+    from lagrade.grading.cluster import check_on_cluster
+
+    records = untrusted.split_records(source)
+    version = project_version()
+    yield check_on_cluster(dask, records, time_limit=time_limit, jobs=jobs, version=version)
 
 
 def _open_requests(path: Path) -> BinaryIO:
@@ -158,6 +182,15 @@ def add_check_arguments(parser: argparse.ArgumentParser) -> None:
         help="the student's own L, for follow-through on later parts",
     )
     parser.add_argument(
+        "--given-transformation",
+        action="append",
+        default=None,
+        metavar="EQUATION",
+        help="the student's own transformation equations (repeat, one per equation, e.g. "
+        '"x_bob = l sin(theta)"): when they are valid and not the statement\'s, L, T, V, eom, '
+        "momenta, cyclic and conserved are judged in the student's coordinates",
+    )
+    parser.add_argument(
         "--all",
         action="store_true",
         help="with --part conserved: the answer should give every independent conserved "
@@ -174,6 +207,13 @@ def add_check_arguments(parser: argparse.ArgumentParser) -> None:
         type=count,
         default=1,
         help="with --batch: worker processes (results stay in request order; default 1)",
+    )
+    parser.add_argument(
+        "--dask",
+        metavar="SCHEDULER",
+        default=None,
+        help="with --batch: check on a Dask cluster: 'local' starts one here (--jobs workers), "
+        "tcp://host:port joins a running one; needs pip install 'lagrade[dask]'",
     )
     parser.add_argument("--json", action="store_true", help="print the result as JSON")
 
@@ -242,7 +282,11 @@ def run_check_command(args: argparse.Namespace) -> tuple[int, str]:
     from lagrade.judge.problem import build_problem
 
     if args.batch:
-        return check_batch_file(args.batch, args.out, time_limit=args.time_limit, jobs=args.jobs)
+        return check_batch_file(
+            args.batch, args.out, time_limit=args.time_limit, jobs=args.jobs, dask=args.dask
+        )
+    if args.dask is not None:
+        raise RequestError("--dask is for --batch REQUESTS.jsonl; one answer is checked here")
     if not args.part or args.answer is None:
         raise RequestError("give --part and --answer (or --batch REQUESTS.jsonl)")
     spec = problem_from_arguments(args)
@@ -250,6 +294,8 @@ def run_check_command(args: argparse.Namespace) -> tuple[int, str]:
     if args.part in ("eom", "momenta", "conserved", "transformation") and isinstance(answer, str):
         answer = [answer]
     given: dict[str, Any] = {"lagrangian": args.given_lagrangian} if args.given_lagrangian else {}
+    if args.given_transformation:
+        given["transformation"] = list(args.given_transformation)
     if args.all:
         given["all"] = True
     build_problem(spec, FLAGS)  # a malformed problem is a usage error here, not a verdict

@@ -15,7 +15,13 @@ def run(args: argparse.Namespace) -> int:
     if args.system == "gradescope":
         return _gradescope(args)
     from lagrade.grading.manifest import carried_scene_texts
-    from lagrade.grading.prairielearn import export_prairielearn, info_json
+    from lagrade.grading.prairielearn import (
+        QUESTIONS,
+        SERVER_FILES,
+        export_prairielearn,
+        info_json,
+        vendored_folder,
+    )
 
     source, seed, texts = Path(args.source), args.seed, None
     if source.suffix == ".json":  # a manifest: its assignment copy, seed and scene files
@@ -32,9 +38,13 @@ def run(args: argparse.Namespace) -> int:
     folders = export_prairielearn(source, seed, args.out, args.scenes, texts)
     for folder in folders:
         print(f"{folder}  ({info_json(folder)['title']})")
+    lagrade = vendored_folder(args.out)
     print(
-        f"{len(folders)} PrairieLearn questions in {args.out}; copy them into your course's "
-        "questions/ folder (lagrade must be installed in the course's Python environment)"
+        f"{len(folders)} PrairieLearn questions in {args.out / QUESTIONS}, and the lagrade they "
+        f"run in {lagrade}.\nCopy both into your course (nothing to install):\n"
+        f"  {args.out / QUESTIONS}/*  ->  COURSE/{QUESTIONS}/\n"
+        f"  {lagrade}  ->  COURSE/{SERVER_FILES}/{lagrade.name}\n"
+        f"(or give the course's folder as --out)."
     )
     return 0
 
@@ -56,13 +66,15 @@ def add_parser(commands: argparse._SubParsersAction) -> None:
         "export",
         help="export an assignment to another system (prairielearn, gradescope)",
         description="prairielearn: one question folder per problem (info.json,\n"
-        "question.html, server.py): variants drawn from the bank by PrairieLearn's seed,\n"
-        "unreadable answers returned without costing an attempt, parts graded by lagrade.\n"
+        "question.html, server.py) in OUT/questions/, and the lagrade they run in\n"
+        "OUT/serverFilesCourse/ (PrairieLearn installs nothing): variants drawn from the bank\n"
+        "by PrairieLearn's seed, unreadable answers returned without costing an attempt,\n"
+        "parts graded by lagrade. OUT may be the course's own folder.\n"
         "gradescope: an autograder zip (--out autograder.zip) that grades each student's\n"
         "uploaded answer sheet against their own variant, as `lagrade grade` does (give it\n"
         "the manifest.json).",
         epilog="examples:\n"
-        "  lagrade export prairielearn examples/assignment.toml --seed 2025 --out pl-questions\n"
+        "  lagrade export prairielearn examples/assignment.toml --seed 2025 --out pl-course\n"
         "  lagrade export gradescope ps3/manifest.json --out autograder.zip",
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
@@ -73,7 +85,8 @@ def add_parser(commands: argparse._SubParsersAction) -> None:
         "--out",
         type=Path,
         required=True,
-        help="folder for the questions (prairielearn), or the zip to write (gradescope)",
+        help="the course folder to write questions/ and serverFilesCourse/ into (prairielearn), "
+        "or the zip to write (gradescope)",
     )
     export.add_argument(
         "--scenes",

@@ -19,11 +19,18 @@ def summary_table(summary: BatchSummary) -> str:
     """A plain-text table of every student's status and score, the files of the submissions
     folder that were not graded, and the totals (printed by `grade` and by `demo`)."""
     lines = [f"{'student':8} {'name':28} {'status':8} {'score':>12}  reason"]
+    others = {}
     for r in summary.results:
         score = f"{r['score']:g} / {r['max_score']:g}"
+        reason = r["reason"]
+        if r.get("sheet_student_id"):
+            others[r["student"]["id"]] = r["sheet_student_id"]
+            reason = f"sheet says student_id {r['sheet_student_id']!r}" + (
+                f"; {reason}" if reason else ""
+            )
         lines.append(
             f"{r['student']['id']:8} {r['student']['name'][:28]:28} {r['status']:8} "
-            f"{score:>12}  {r['reason'][:60]}"
+            f"{score:>12}  {reason[:60]}"
         )
     if summary.stray:
         lines.append("\nnot graded (no roster student's sheet):")
@@ -31,8 +38,14 @@ def summary_table(summary: BatchSummary) -> str:
         lines += [f"  {name!r}: {why}" for name, why in shown]
         if len(summary.stray) > SHOWN_STRAY:
             lines.append(f"  … and {len(summary.stray) - SHOWN_STRAY} more (see summary.md)")
+    if others:
+        lines.append("\nsheets naming another student_id (graded as the file's student):")
+        lines += [
+            f"  {sid}: the sheet says student_id = {other!r}" for sid, other in others.items()
+        ]
     counts = ", ".join(f"{k} {v}" for k, v in summary.counts.items() if v)
-    lines.append(f"\n{len(summary.results)} students: {counts}")
+    mismatched = f"; {len(others)} sheet(s) naming another student_id" if others else ""
+    lines.append(f"\n{len(summary.results)} students: {counts}{mismatched}")
     return "\n".join(lines)
 
 
@@ -44,6 +57,13 @@ def run(args: argparse.Namespace) -> int:
 
     kinds = tuple(dict.fromkeys(k for k in args.export if k != "csv"))
     options = ExportOptions(args.canvas_assignment_id, args.missing_as_zero)
+    as_of = None
+    if args.as_of is not None:
+        from lagrade.grading.answer_page.due import as_of_instant
+        from lagrade.grading.instants import shown
+
+        as_of = as_of_instant(args.as_of, args.manifest)
+        print(f"grading as of {shown(as_of)}: each student's last save at or before it")
     with ProgressBar() as bar:
         summary = grade(
             args.manifest,
@@ -54,6 +74,8 @@ def run(args: argparse.Namespace) -> int:
             progress=bar,
             exports=kinds,
             export_options=options,
+            as_of=as_of,
+            dask=args.dask,
         )
     print(summary_table(summary) + f" ({summary.reused} unchanged, reused)")
     print(f"gradebook: {summary.out_dir / 'gradebook.csv'}")
@@ -83,6 +105,13 @@ def add_parser(commands: argparse._SubParsersAction) -> None:
     grade.add_argument("--out", type=Path, default=None, help="output folder (default DIR/grades)")
     grade.add_argument("--jobs", type=count, default=1, help="submissions graded in parallel")
     grade.add_argument(
+        "--dask",
+        metavar="SCHEDULER",
+        default=None,
+        help="grade on a Dask cluster: 'local' starts one here (--jobs workers), tcp://host:port "
+        "joins a running one; needs pip install 'lagrade[dask]'",
+    )
+    grade.add_argument(
         "--part-time-limit",
         type=seconds,
         default=2.0,
@@ -109,5 +138,14 @@ def add_parser(commands: argparse._SubParsersAction) -> None:
         action="store_true",
         help="give 0 in the Canvas and Moodle gradebooks to students who handed in nothing "
         "readable (default: no grade, so an import does not overwrite a grade with 0)",
+    )
+    grade.add_argument(
+        "--as-of",
+        metavar="TIME",
+        default=None,
+        help="grade each student's last save at or before TIME (2025-03-14T23:59:00, with an "
+        "offset or in the assignment's [answer_page] timezone; a date alone is the end of that "
+        "day; `due` is the assignment's due date), from the answer page's log of saves in "
+        "SUBMISSIONS",
     )
     grade.set_defaults(run=run)

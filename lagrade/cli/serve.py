@@ -44,6 +44,7 @@ def run(args: argparse.Namespace) -> int:
     server = uvicorn.Server(config)
     try:
         _announce(args, room.assignment.title, len(manifest["students"]), listener, base_url)
+        print(f"  due date: {_due_line(room.due)}")
         print(f"  secret: {secret_file} (same secret, same links)")
         print("Stop with Ctrl-C (or SIGTERM).", flush=True)
         server.run(sockets=[listener])
@@ -64,11 +65,30 @@ def _announce(
     host, port = listener.getsockname()[:2]
     print(f"Answer pages for {students} students of {title!r}")
     print(f"  listening on http://{_url_host(host)}:{port}/  (links use {base_url}/s/<token>)")
-    print(f"  sheets are saved to {args.submissions}/<id>.toml (previous versions in .previous/)")
+    from lagrade.grading.savelog import LOG_NAME
+
+    print(
+        f"  sheets are saved to {args.submissions}/<id>.toml, every save logged in "
+        f"{args.submissions}/{LOG_NAME}"
+    )
     if args.links:
         print(f"  each student's link: {args.links} (id,name,url)")
     else:
         print("  no --links file: give --links LINKS.csv to write every student's link")
+
+
+def _due_line(due) -> str:
+    """What the page does about the due date, for the instructor who starts the server."""
+    from lagrade.grading.instants import shown
+
+    if due.unread:
+        return f"not kept ({due.unread}); saves are accepted at any time"
+    if due.due is None:
+        return "none; saves are accepted at any time"
+    if not due.late:
+        return f"{shown(due.due)}; after it, saves are refused"
+    until = f" until {shown(due.late_until)}, then refused" if due.late_until else ""
+    return f"{shown(due.due)}; after it, saves are recorded as late{until}"
 
 
 def _listen(host: str, port: int) -> socket.socket:
@@ -101,9 +121,10 @@ def add_parser(commands: argparse._SubParsersAction) -> None:
         help="serve each student an answer page at a private link",
         description="Serve each roster student a private page with their own handout, one "
         "field per part with a live 'read as' preview, and a save button that writes the "
-        "answer sheet `lagrade grade` reads (the previous version kept in .previous/). A "
-        "wrong or missing token gets 404. Feedback on save and its attempts are set in the "
-        "assignment's [answer_page] table.",
+        "answer sheet `lagrade grade` reads, every save appended to a log beside the sheets "
+        "(`lagrade grade --as-of TIME` grades the last save before a time). A "
+        "wrong or missing token gets 404. The due date is the assignment's `due`; late work, "
+        "feedback on save and its attempts are set in its [answer_page] table.",
         epilog="example: lagrade serve ps3/manifest.json --submissions ps3-submissions "
         "--links ps3-links.csv --port 8000",
     )

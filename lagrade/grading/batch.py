@@ -10,11 +10,15 @@ version are unchanged.
 
 from __future__ import annotations
 
+import contextlib
+import datetime as dt
 import functools
 import gc
 import hashlib
 import json
-from collections.abc import Callable, Mapping, Sequence
+import tempfile
+import threading
+from collections.abc import Callable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -23,23 +27,29 @@ import lagrade.grading.atomic as atomic
 import lagrade.grading.gradebooks as gradebooks
 import lagrade.grading.report as report
 import lagrade.grading.resume as resume
+import lagrade.grading.savelog as savelog
 import lagrade.grading.submission as submission
 from lagrade.assign.manifest import project_version
 from lagrade.assign.views import PROMPTS
 from lagrade.bank.scenefile import sha256
 from lagrade.errors import AssignmentError, LagradeError
+from lagrade.grading.instants import shown
 from lagrade.grading.manifest import entry_spec, entry_variant, load_manifest
 from lagrade.grading.rubric import Rubric, load_rubric
 from lagrade.grading.submission import UnreadableAnswer, find_submission, read_sheet
 from lagrade.judge.check import cached_problem, prepare, timeout_verdict
 from lagrade.judge.key import key_answer
 from lagrade.judge.parts import run_checker
+from lagrade.judge.parts.own_coordinates import FOLLOWING
 from lagrade.judge.problem import Problem
 from lagrade.judge.verdict import Verdict
 from lagrade.judge.worker import GRACE, Limits, Outcome, PartTimeout, Pool, deadline, time_limit
 
 #: Parts that can follow from the student's own Lagrangian.
 FOLLOW_L = frozenset({"eom", "momenta", "cyclic", "conserved"})
+#: Parts that bring `given` to their checker: their own L, their transformation equations (the
+#: coordinates they chose, which the later parts are judged in).
+GIVEN_TO = FOLLOW_L | FOLLOWING
 #: The handout's prompt for `conserved` asks for "the conserved quantities" (all of them), so a
 #: graded sheet is judged for completeness too (`"all": true`); a `check` request is not unless
 #: it says so.
@@ -114,19 +124,30 @@ def warm_up(manifest: dict) -> None:
     caches a real answer touches (compiled mutants, sample points, reference values), which a
     child would otherwise rebuild and throw away for every submission (measured: about 3× the
     grading time of a warm process)."""
-    seen = set()
+    warm_questions(asked_questions(manifest))
+
+
+def asked_questions(manifest: Mapping[str, Any]) -> dict[tuple[str, str], tuple[dict, Mapping]]:
+    """Each distinct question of the class, (its key, the part), with the spec and part of the
+    first student on the roster who is asked it. The Problem every later student shares is
+    built from that student's variant (its sample points, so the points feedback quotes), so
+    whichever process builds it, this machine's or a Dask worker, builds the same."""
+    asked: dict[tuple[str, str], tuple[dict, Mapping]] = {}
     for student in manifest["students"]:
         for entry, problem in zip(student["problems"], manifest["problems"], strict=True):
             for part in problem["parts"]:
                 spec = _spec(entry, part)
-                key = (_question_key(spec), part["part"])
-                if key in seen:
-                    continue
-                seen.add(key)
-                asked = question(spec)
-                prepare(asked, part["part"], diagnosis=True)
-                if part["part"] != "expression" and asked.variant is not None:
-                    _warm_with_key(asked, part)
+                asked.setdefault((_question_key(spec), part["part"]), (spec, part))
+    return asked
+
+
+def warm_questions(asked: Mapping[tuple[str, str], tuple[dict, Mapping]]) -> None:
+    """Derive each question of `asked` (as `asked_questions` gives them) in this process."""
+    for spec, part in asked.values():
+        problem = question(spec)
+        prepare(problem, part["part"], diagnosis=True)
+        if part["part"] != "expression" and problem.variant is not None:
+            _warm_with_key(problem, part)
 
 
 def _warm_with_key(question: Problem, part: Mapping[str, Any]) -> None:
@@ -135,8 +156,11 @@ def _warm_with_key(question: Problem, part: Mapping[str, Any]) -> None:
     name = part["part"]
     variant = question.variant
     given = {"lagrangian": key_answer(variant, "lagrangian")} if name in FOLLOW_L else None
+    # The alarm rings only in a main thread; a Dask worker warms up in one of its threads, and
+    # checks the key (verified when it was generated) without it.
+    main = threading.current_thread() is threading.main_thread()
     try:
-        with time_limit(10.0):
+        with time_limit(10.0 if main else None):
             run_checker(question, name, key_answer(variant, name, part.get("quantity")), given)
     except (PartTimeout, LagradeError, ArithmeticError, ValueError):
         pass
@@ -223,10 +247,28 @@ def _given(entry, name: str, given: dict[str, Any], rubric: Rubric) -> dict[str,
     if name == "expression":
         own = entry_variant(entry)  # this student's numbers
         return {"values": own.values, "tolerance": rubric.numeric_tolerance}
-    if name not in FOLLOW_L:
+    if name not in GIVEN_TO:
         return None
     if name == "conserved" and ASKS_ALL_CONSERVED:
         return {**given, "all": True}  # the handout asks for "the conserved quantities"
+    return given
+
+
+def sheet_given(parts: Sequence[tuple[str, str]], answers: Mapping[str, Any]) -> dict[str, Any]:
+    """What one problem's answers bring to its other parts (`given`): the student's own L
+    (follow-through) and their transformation equations (the coordinates the later parts are
+    judged in), both raw as typed: the checkers read them. The one place a sheet's `given` is
+    built, for `grade`, the answer page and PrairieLearn alike; `parts` are the problem's
+    (key, part name) pairs."""
+    given: dict[str, Any] = {}
+    for key, name in parts:
+        answer = answers.get(key)
+        if isinstance(answer, list) and not all(isinstance(a, str) for a in answer):
+            continue
+        if not isinstance(answer, str | list) or _blank(answer):
+            continue
+        if name in ("lagrangian", "transformation"):
+            given[name] = answer
     return given
 
 
@@ -238,18 +280,19 @@ def grade_student(manifest: Mapping, rubric: Rubric, task: Mapping[str, Any]) ->
     student = task["student"]
     problems = manifest["problems"]
     keys = {p["index"]: [part["key"] for part in p["parts"]] for p in problems}
-    sheet = read_sheet(Path(task["path"]), student["id"], len(problems), keys)
+    # On a Dask cluster the parent has read the file and sends its bytes (`content`).
+    content = task.get("content")
+    sheet = read_sheet(Path(task["path"]), student["id"], len(problems), keys, content)
     base = {"warnings": list(sheet.warnings) + ([task["note"]] if task.get("note") else [])}
+    if sheet.other_id is not None:
+        base["sheet_student_id"] = sheet.other_id
     if not sheet.readable:
         return {**base, "status": "invalid", "reason": sheet.reason, "problems": []}
     graded = []
     timeouts = []
     for problem, entry in zip(problems, student["problems"], strict=True):
         answers = sheet.answers.get(problem["index"], {})
-        given: dict[str, Any] = {}
-        own_l = answers.get("lagrangian")
-        if isinstance(own_l, str | list) and not _blank(own_l):
-            given["lagrangian"] = own_l  # raw, as every answer: the checker reads it
+        given = sheet_given([(p["key"], p["part"]) for p in problem["parts"]], answers)
         parts = []
         for part in problem["parts"]:
             part_id = f"{problem['index']}/{part['key']}"
@@ -318,6 +361,7 @@ def _finish(
         "status": outcome["status"],
         "reason": outcome.get("reason", ""),
         "warnings": outcome.get("warnings", []),
+        **_other_id(outcome),
         "score": score,
         "max_score": max_score,
         "problems": problems,
@@ -337,34 +381,60 @@ def grade(
     progress: Callable[[int, int, str], None] | None = None,
     exports: Sequence[str] = (),
     export_options: gradebooks.ExportOptions | None = None,
+    as_of: dt.datetime | None = None,
+    dask: str | None = None,
 ) -> BatchSummary:
     """Grade every roster student's sheet in `submissions`; write results into `out_dir`
     (default: `grades/` beside the manifest); `exports` adds LMS gradebooks ("canvas",
-    "moodle", written with `export_options`: `lagrade.grading.gradebooks`). See the module
-    docstring for the guarantees."""
+    "moodle", written with `export_options`: `lagrade.grading.gradebooks`); `as_of` grades
+    each student's last save at or before that instant, from the answer page's log of saves
+    (`lagrade.grading.savelog`); `dask` judges the sheets on a Dask cluster ("local", or a
+    scheduler's address: `lagrade.grading.cluster`), with `jobs` the number of workers of a
+    local one. See the module docstring for the guarantees."""
     manifest_path = Path(manifest_path)
     submissions = Path(submissions)
     _check_arguments(manifest_path, submissions)
+    if dask is not None:  # a cluster that cannot be used stops the run before it starts
+        from lagrade.grading.cluster import require
+
+        require(dask, jobs)
     manifest = load_manifest(manifest_path)
     rubric = _rubric(manifest_path, manifest)
     if exports:  # a bad [lms] table or id stops the run before anything is graded
         copy = manifest_path.parent / manifest["assignment"].get("file", "assignment.toml")
         export_options = gradebooks.resolve_options(copy, export_options)
     out = Path(out_dir) if out_dir is not None else manifest_path.parent / "grades"
-    with atomic.hold_folder(out):
+    with atomic.hold_folder(out), _sheets_at(submissions, manifest, as_of) as (folder, none):
         atomic.remove_stale_temporaries(out)
         return _grade_into(
             out,
             manifest,
             rubric,
-            submissions,
+            folder,
             jobs,
             part_time_limit,
             limits,
             progress,
             exports,
             export_options,
+            none,
+            dask,
         )
+
+
+@contextlib.contextmanager
+def _sheets_at(
+    submissions: Path, manifest: Mapping[str, Any], as_of: dt.datetime | None
+) -> Iterator[tuple[Path, str]]:
+    """The folder to grade and why a student has no sheet there: `submissions` as it is, or
+    (with `as_of`) a temporary folder of the sheets as they stood then, rebuilt from the log."""
+    if as_of is None:
+        yield submissions, ""
+        return
+    ids = [s["id"] for s in manifest["students"]]
+    with tempfile.TemporaryDirectory(prefix="lagrade-as-of-") as folder:
+        savelog.sheets_as_of(submissions, ids, as_of, Path(folder))
+        yield Path(folder), f"nothing was saved by {shown(as_of)}"
 
 
 def _check_arguments(manifest_path: Path, submissions: Path) -> None:
@@ -399,8 +469,11 @@ def _grade_into(
     progress: Callable[[int, int, str], None] | None,
     exports: Sequence[str] = (),
     export_options: gradebooks.ExportOptions | None = None,
+    no_sheet: str = "",
+    dask: str | None = None,
 ) -> BatchSummary:
-    """The body of `grade`, run while this process holds the output folder."""
+    """The body of `grade`, run while this process holds the output folder; `no_sheet` is why
+    a student without a sheet has none, when the folder says nothing about it."""
     version = project_version()
     students = manifest["students"]
     # Reading a sheet has this long; each part then moves the deadline to its own time limit.
@@ -412,7 +485,7 @@ def _grade_into(
     stray = submission.stray_files(submissions, (s["id"] for s in students))
     for student in students:
         path, note = find_submission(submissions, student["id"])
-        missing = _missing_reason(student["id"], stray) if path is None else ""
+        missing = (no_sheet or _missing_reason(student["id"], stray)) if path is None else ""
         fingerprint = _fingerprint(path, student, rubric, version, missing)
         previous = report.read_student_result(out, student["id"])
         if previous is not None and previous.get("fingerprint") == fingerprint:
@@ -438,43 +511,60 @@ def _grade_into(
             )
         )
 
-    if tasks:
-        warm_up(manifest)
-        # Children are forked: keep the collector off the parent's (now immortal) objects, or
-        # every child would touch, and so copy, the whole heap (measured: half its time).
-        gc.collect()
-        gc.freeze()
     by_id = {s["id"]: s for s in students}
     fingerprints = {key: task["fingerprint"] for key, task in tasks}
     done = len(results)
-    work = functools.partial(grade_student, manifest, rubric)
-    with Pool(work, jobs=jobs, limits=limits) as pool:
-        # A worker killed in a part leaves a task that resumes after it: judged in a later
-        # round, by a fresh worker (each round settles at least one part of each such sheet).
-        while tasks:
-            by_key = dict(tasks)
-            tasks = []
-            for outcome in pool.run(list(by_key.items())):
-                again = resume.resumed(by_key[outcome.key], outcome)
-                if again is not None:
-                    tasks.append((outcome.key, again))
-                    continue
-                student = by_id[outcome.key]
-                value = _outcome_result(outcome, out, student["id"])
-                results[student["id"]] = _store(
-                    out,
-                    manifest,
-                    _finish(student, manifest, value, fingerprints[outcome.key], version),
-                )
-                done += 1
-                if progress:
-                    progress(done, len(students), student["id"])
+    if dask is None:
+        outcomes = _judged_here(manifest, rubric, tasks, jobs, limits)
+    else:
+        from lagrade.grading.cluster import grade_on_cluster
+
+        outcomes = grade_on_cluster(dask, manifest, rubric, tasks, jobs, limits, version)
+    for outcome in outcomes:
+        student = by_id[outcome.key]
+        value = _outcome_result(outcome, out, student["id"])
+        results[student["id"]] = _store(
+            out, manifest, _finish(student, manifest, value, fingerprints[outcome.key], version)
+        )
+        done += 1
+        if progress:
+            progress(done, len(students), student["id"])
 
     ordered = [results[s["id"]] for s in students]
     report.write_class_reports(out, manifest, ordered, stray)
     books = gradebooks.write_exports(out, manifest, ordered, exports, export_options)
     counts = {s: sum(1 for r in ordered if r["status"] == s) for s in STATUSES}
     return BatchSummary(out, counts, reused, ordered, stray, tuple(books))
+
+
+def _judged_here(
+    manifest: dict[str, Any], rubric: Rubric, tasks: list, jobs: int, limits: Limits
+) -> Iterator[Outcome]:
+    """Each task's Outcome from this machine's pool, forked after the questions are derived."""
+    if not tasks:
+        return
+    warm_up(manifest)
+    # Children are forked: keep the collector off the parent's (now immortal) objects, or
+    # every child would touch, and so copy, the whole heap (measured: half its time).
+    gc.collect()
+    gc.freeze()
+    with Pool(functools.partial(grade_student, manifest, rubric), jobs=jobs, limits=limits) as pool:
+        yield from judge_sheets(pool, tasks)
+
+
+def judge_sheets(pool: Pool, tasks: list[tuple[str, dict[str, Any]]]) -> Iterator[Outcome]:
+    """The Outcome of each (student id, task), as each is settled. A worker killed in a part
+    leaves a task that resumes after it: judged in a later round, by a fresh worker (each round
+    settles at least one part of each such sheet)."""
+    while tasks:
+        by_key = dict(tasks)
+        tasks = []
+        for outcome in pool.run(list(by_key.items())):
+            again = resume.resumed(by_key[outcome.key], outcome)
+            if again is not None:
+                tasks.append((outcome.key, again))
+                continue
+            yield outcome
 
 
 def _missing_reason(student_id: str, stray: Mapping[str, str]) -> str:
@@ -503,6 +593,12 @@ def _outcome_result(outcome: Outcome, out: Path, student_id: str) -> dict[str, A
     }
 
 
+def _other_id(result: Mapping[str, Any]) -> dict[str, str]:
+    """`sheet_student_id` when the sheet named another student than its file's, else nothing."""
+    other = result.get("sheet_student_id")
+    return {"sheet_student_id": other} if other else {}
+
+
 def _part_count(manifest: Mapping) -> int:
     return sum(len(p["parts"]) for p in manifest["problems"])
 
@@ -522,6 +618,7 @@ def _held(result: Mapping[str, Any]) -> dict[str, Any]:
         "status": result["status"],
         "reason": result.get("reason", ""),
         "warnings": list(result.get("warnings", [])),
+        **_other_id(result),
         "score": result["score"],
         "max_score": result["max_score"],
         "problems": [

@@ -216,7 +216,15 @@ def class_summary(
         "max_score": results[0]["max_score"] if results else 0.0,
         "problems": problems,
         "stray_files": dict(sorted((stray or {}).items())),
+        "mismatched_ids": mismatched_ids(results),
     }
+
+
+def mismatched_ids(results: Sequence[Mapping[str, Any]]) -> dict[str, str]:
+    """Each student whose sheet gives another `student_id` (graded as the file's student): the
+    file's student → the id the sheet says. A copied sheet, or one handed in under another
+    name, is the instructor's to look at."""
+    return {r["student"]["id"]: r["sheet_student_id"] for r in results if r.get("sheet_student_id")}
 
 
 def summary_markdown(manifest: Mapping[str, Any], summary: Mapping[str, Any]) -> str:
@@ -229,6 +237,12 @@ def summary_markdown(manifest: Mapping[str, Any], summary: Mapping[str, Any]) ->
     if summary.get("stray_files"):
         lines += ["", "Files in the submissions folder that were not graded:", ""]
         lines += [f"- {md_code(n)}: {md_escape(why)}" for n, why in summary["stray_files"].items()]
+    if summary.get("mismatched_ids"):
+        lines += ["", "Sheets whose `student_id` is not their file's (graded as the file's):", ""]
+        lines += [
+            f"- {md_code(sid)}: the sheet says student_id = {md_code(other)}"
+            for sid, other in summary["mismatched_ids"].items()
+        ]
     lines += ["", "![score distribution](scores.svg)", ""]
     for problem in summary["problems"]:
         lines += [

@@ -6,6 +6,8 @@
                               # student's own wrong earlier answer (EOM from their own L)
     convention = 0.5          # share for the right dynamics in the wrong convention (L = V − T)
     numeric_tolerance = 0.01  # relative tolerance of numeric follow-ups (3 significant figures)
+    own_coordinates = 0.0     # share deducted from a right `transformation` in other coordinates
+                              # than the statement's (the later parts are judged in them)
 
 Every field is optional; the defaults are those above.
 """
@@ -20,8 +22,9 @@ from typing import Any
 from lagrade.assign.assignment import assignment_table
 from lagrade.errors import RequestError
 from lagrade.judge.parts.expression import NUMERIC_TOLERANCE
+from lagrade.judge.parts.own_coordinates import OWN_COORDINATES
 
-_FIELDS = {"partial_credit", "follow_through", "convention", "numeric_tolerance"}
+_FIELDS = {"partial_credit", "follow_through", "convention", "numeric_tolerance", "own_coordinates"}
 
 
 @dataclass(frozen=True)
@@ -30,13 +33,14 @@ class Rubric:
     follow_through: float = 0.5
     convention: float = 0.5
     numeric_tolerance: float = NUMERIC_TOLERANCE
+    own_coordinates: float = 0.0
 
     def fraction(
         self, status: str, score: float, mistakes: tuple[str, ...], follows: bool
     ) -> float:
         """The share of a part's points a verdict earns."""
         if status == "correct":
-            return 1.0
+            return 1.0 - self.own_coordinates if OWN_COORDINATES in mistakes else 1.0
         if "V_minus_T" in mistakes:
             return self.convention
         if follows:
@@ -66,7 +70,7 @@ def rubric_from_table(table: Any) -> Rubric:
                 f"rubric.partial_credit: must be true or false, got {table['partial_credit']!r}"
             )
         values["partial_credit"] = table["partial_credit"]
-    for name in ("follow_through", "convention"):
+    for name in ("follow_through", "convention", "own_coordinates"):
         if name in table:
             v = table[name]
             if isinstance(v, bool) or not isinstance(v, int | float) or not 0 <= v <= 1:

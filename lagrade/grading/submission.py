@@ -38,6 +38,9 @@ class Sheet:
     answers: dict[int, dict[str, Any]]
     reason: str = ""
     warnings: tuple[str, ...] = ()
+    #: The `student_id` the sheet gives itself when it is not the file's student ("s002" in
+    #: s001.toml), else None: graded as the file's student, and listed for the instructor.
+    other_id: str | None = None
 
     @property
     def readable(self) -> bool:
@@ -110,11 +113,14 @@ def read_sheet(
     student_id: str,
     problem_count: int,
     keys: Mapping[int, Sequence[str]] | None = None,
+    content: tuple[bytes, str] | None = None,
 ) -> Sheet:
     """Read and validate an answer sheet, never raising over its content. `keys[k]` are the
     part keys of problem k; a key the problem does not have is reported as a warning, with
-    the closest valid key (a misspelled `lagrangain` must not silently read as "not answered")."""
-    data, reason = read_regular_file(path)
+    the closest valid key (a misspelled `lagrangain` must not silently read as "not answered").
+    `content`: what `read_regular_file(path)` gave another process (a Dask worker does not
+    share the grading machine's files, so the parent reads them and sends the bytes)."""
+    data, reason = read_regular_file(path) if content is None else content
     if reason:
         return _bad(path, "", reason)
     return sheet_from_bytes(path, data, student_id, problem_count, keys)
@@ -246,7 +252,9 @@ def _structure(
 ) -> Sheet:
     warnings = []
     declared = raw.get("student_id")
+    other_id = None
     if declared is not None and str(declared).lower() != student_id.lower():
+        other_id = untrusted.bounded(str(declared), 60)
         warnings.append(
             f"the sheet says student_id = {declared!r} but the file belongs to "
             f"{student_id!r}; graded as {student_id!r}"
@@ -267,7 +275,7 @@ def _structure(
     )
     if extra:
         warnings.append(f"ignored tables that the assignment does not have: {', '.join(extra)}")
-    return Sheet(path, digest, answers, "", tuple(warnings))
+    return Sheet(path, digest, answers, "", tuple(warnings), other_id)
 
 
 def _unknown_keys(index: int, answers: Mapping[str, Any], valid: Sequence[str]) -> list[str]:

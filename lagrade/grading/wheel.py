@@ -1,5 +1,6 @@
 """A wheel of the lagrade that is running, for the systems that must install it themselves
-(Gradescope's container installs it from the autograder zip).
+(Gradescope's container installs it from the autograder zip), or unpacked for a system that
+installs nothing but puts a folder on sys.path (PrairieLearn's `serverFilesCourse/`).
 
 It is built from the installed package, not from a source checkout, so an instructor who has
 only `pip install lagrade` can export: the package folder as it is on disk (modules, templates,
@@ -15,6 +16,8 @@ import base64
 import hashlib
 import importlib.metadata
 import io
+import shutil
+import tempfile
 import zipfile
 from pathlib import Path
 
@@ -53,6 +56,30 @@ def build_wheel(folder: Path) -> Path:
             archive.writestr(entry, files[path])
     wheel.write_bytes(buffer.getvalue())
     return wheel
+
+
+def vendor(folder: Path) -> str:
+    """Unpack the running lagrade's wheel into `folder/lagrade-<version>-<digest>/`, as pip
+    would install it (the package and its dist-info), and return that folder's name. The digest
+    is the wheel's, so the name says exactly which lagrade the folder holds: one already there is
+    left as it is, and exports made by different versions sit side by side."""
+    with tempfile.TemporaryDirectory() as scratch:
+        wheel = build_wheel(Path(scratch))
+        version = importlib.metadata.version(DISTRIBUTION)
+        name = f"{DISTRIBUTION}-{version}-{hashlib.sha256(wheel.read_bytes()).hexdigest()[:12]}"
+        target = Path(folder) / name
+        if (target / "lagrade" / "__init__.py").is_file():
+            return name
+        target.parent.mkdir(parents=True, exist_ok=True)
+        staging = Path(tempfile.mkdtemp(prefix=f".{name}-", dir=target.parent))
+        try:
+            with zipfile.ZipFile(wheel) as archive:  # our own archive: no hostile member names
+                archive.extractall(staging)
+            shutil.rmtree(target, ignore_errors=True)  # a partial copy left by an interrupted run
+            staging.rename(target)
+        finally:
+            shutil.rmtree(staging, ignore_errors=True)
+    return name
 
 
 def _package_files() -> list[tuple[str, bytes]]:

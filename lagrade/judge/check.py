@@ -109,6 +109,15 @@ def prepare(problem: Problem, part: str, diagnosis: bool = False) -> None:
             problem.catalogue.warm(part, problem.points(part))
 
 
+def forget_problems() -> None:
+    """Drop every question this process has derived and every verdict it remembers: a process
+    that outlives one grading run (a Dask worker) then builds each question of the next run
+    from that run's own first student, as a fresh process does."""
+    _problems.clear()
+    _prepared.clear()
+    _verdicts.clear()
+
+
 # --- answers seen before -------------------------------------------------------------------------
 
 #: What was decided for an answer, by (question, part, answer, given): a class types the same
@@ -163,6 +172,15 @@ def _validate(request: Any) -> tuple[Any, str, Any, Mapping | None]:
         raise RequestError('"given" must be an object such as {"lagrangian": "..."}')
     if given is not None and "all" in given and not isinstance(given["all"], bool):
         raise RequestError('"given": "all" must be true or false')
+    transformation = given.get("transformation") if given is not None else None
+    if transformation is not None and not (
+        isinstance(transformation, str)
+        or (isinstance(transformation, list) and all(isinstance(x, str) for x in transformation))
+    ):
+        raise RequestError(
+            '"given": "transformation" must be the transformation equations, a string or a '
+            'list of strings such as ["x_bob = l sin(theta)", "y_bob = -l cos(theta)"]'
+        )
     return request["problem"], part, request["answer"], given
 
 
@@ -401,14 +419,18 @@ def run_batch(
     jobs: int = 1,
     pool: Pool | None = None,
     first_line: int = 1,
+    numbers: Iterable[int] | None = None,
 ) -> Iterator[dict[str, Any]]:
     """One result per input record, in order (blank records are skipped). Records may be bytes
     (split on b"\n" only, see `lagrade.untrusted`): one that is not UTF-8, not JSON, or past
-    the bounds gets `invalid` with the reason, and the batch goes on."""
+    the bounds gets `invalid` with the reason, and the batch goes on. `numbers`: each record's
+    line number in its file, for records that are not consecutive lines (a cluster's chunk of
+    one question's requests); default: consecutive from `first_line`."""
     answers: dict[int, dict[str, Any]] = {}  # lines settled without a worker, by position
     work = []
     ids: list[tuple[Any, Any]] = []
-    for number, line in enumerate(lines, first_line):
+    numbered = enumerate(lines, first_line) if numbers is None else zip(numbers, lines, strict=True)
+    for number, line in numbered:
         if not line.strip():
             continue
         position = len(ids)

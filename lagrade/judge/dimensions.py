@@ -157,7 +157,8 @@ MIXED = "mixed"
 def symbol_dimensions(variant: SceneVariant) -> dict[sp.Symbol, Dim]:
     """The dimension of every symbol whose dimension the scene tells: parameters from their
     units, t, and each coordinate (with its velocity and acceleration) from where it stands in
-    the positions, the bodies' angles and the potential."""
+    the positions, the bodies' angles and the potential (in L, for a scene given by its
+    Lagrangian)."""
     known: dict[sp.Symbol, Dim] = {t: TIME}
     symbols = variant.parameter_symbols
     for parameter in variant.scene.parameters:
@@ -170,7 +171,9 @@ def symbol_dimensions(variant: SceneVariant) -> dict[sp.Symbol, Dim]:
         wanted.append((body.mass, MASS))
         if isinstance(body, RigidBody):
             wanted += [(body.angle, NONE), (body.inertia, _dim(m=2, kg=1))]
-    wanted.append((variant.potential_energy, ENERGY))
+    # a scene given by its Lagrangian has no bodies and no V: its L is the energy it tells
+    energy = variant.lagrangian if variant.scene.given_by_lagrangian else variant.potential_energy
+    wanted.append((energy, ENERGY))
     coordinates = [j.q for j in variant.jets]
     for _ in range(len(coordinates) + 1):  # each pass settles at least one coordinate, or none
         before = len(known)

@@ -36,6 +36,10 @@ COMMANDS = frozenset(
 _TOKEN = re.compile(r"\\[A-Za-z]+|\\.|\\$|\s+|.", re.DOTALL)
 _NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*\Z")
 _SUBSCRIPT = re.compile(r"[A-Za-z0-9_]+\Z")
+#: What a fraction's numerator or denominator may be without brackets: a whole number, or one
+#: letter with its subscript. Anything longer is bracketed, whatever it looks like: `2l` is a
+#: product (the grammar would read `mg/2l` as (mg/2)*l), and a run of letters may be one too.
+_ATOM = re.compile(r"([0-9]+|[A-Za-z](_[A-Za-z0-9]+)?)\Z")
 _INTEGER = re.compile(r"[0-9]+\Z")
 _LEIBNIZ_DENOMINATOR = re.compile(r"d\s*t(\s*\^\s*\(?\s*2\s*\)?)?\Z")
 #: Numerators of \frac{d}{dt} and \frac{d^2}{dt^2} (as translated), by the order they give.
@@ -139,9 +143,10 @@ class _Translator:
         return self.tokens[first][1], self.tokens[last - 1][2]
 
     def group(self, pieces: list[tuple[str, int, int]], start: int, end: int) -> None:
-        """Emit pieces in round brackets, unless they are a single name or number."""
+        """Emit pieces in round brackets, unless they are one number or one letter (with its
+        subscript): `\\frac{mg}{2l}` is (mg)/(2l), never mg/2l."""
         text = self.flat(pieces).strip()
-        if _SUBSCRIPT.match(text):
+        if _ATOM.match(text):
             for p in pieces:
                 self.emit(*p)
             return

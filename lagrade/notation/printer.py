@@ -122,9 +122,19 @@ def latex(expr: sp.Basic, coordinates: Iterable[str] = ()) -> str:
 
 
 def mathml(expr: sp.Basic, coordinates: Iterable[str] = (), display: str = "inline") -> Markup:
-    """A complete `<math>` element (presentation MathML) for `expr`, safe to put in HTML."""
+    """A complete `<math>` element (presentation MathML) for `expr`, safe to put in HTML, with
+    its text alternative: the formula in the notation students type (`aria-label`), which a
+    browser's accessibility tree otherwise drops from a label holding it (a field named
+    "which exists when > :" for "which exists when ω²R > g")."""
     inner = _JetMathMLPrinter(coordinates).doprint(expr)
-    return Markup(f'<math xmlns="{_MATHML_NS}" display="{display}">{inner}</math>')
+    return Markup(
+        f'<math xmlns="{_MATHML_NS}" display="{display}" aria-label="{_alternative(expr)}">'
+        f"{inner}</math>"
+    )
+
+
+def _alternative(expr: sp.Basic) -> str:
+    return str(Markup.escape(plain(expr)))
 
 
 class _PlainPrinter(StrPrinter):
@@ -190,9 +200,10 @@ def named_equation(name: str, expr: sp.Basic, coordinates: Iterable[str] = ()) -
     def mathml_of(display: str) -> Markup:
         inner = _JetMathMLPrinter(coords).doprint(expr)
         text = str(Markup.escape(name))
+        label = f"{text} = {_alternative(expr)}"
         return Markup(
-            f'<math xmlns="{_MATHML_NS}" display="{display}"><mrow><mtext>{text}</mtext>'
-            f"<mo>=</mo>{inner}</mrow></math>"
+            f'<math xmlns="{_MATHML_NS}" display="{display}" aria-label="{label}"><mrow>'
+            f"<mtext>{text}</mtext><mo>=</mo>{inner}</mrow></math>"
         )
 
     return Math(

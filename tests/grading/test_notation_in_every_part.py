@@ -133,7 +133,7 @@ def test_a_latex_fraction_with_a_run_of_parameters_is_their_product():
     L = r"\frac{1}{2} m \left(\dot r^2 + r^2 \dot\theta^2\right) + \frac{GMm}{r}"
     verdict = judge(KEPLER, "lagrangian", L)
     assert verdict.status == "correct"
-    assert "G*M*m/r" in verdict.interpreted
+    assert "(G*M*m)/r" in verdict.interpreted
     assert verdict.feedback == ()  # a right answer carries no notes on its reading (issue 30)
     wrong = judge(KEPLER, "lagrangian", L.replace("GMm", "2GMm"))
     assert "GMm is read as G*M*m: in LaTeX adjacent letters multiply." in wrong.feedback
@@ -239,3 +239,51 @@ def test_max_and_min_have_one_value_in_every_evaluator():
         )
         hd = ev.run_hyperdual(program, {s: (env[s], 0, 0, 0) for s in env})
         assert float(np.ravel(hd[0][0])[0]) == pytest.approx(truth)
+
+
+# --- textbook forms the systems corpus found (benchmarks/corpus/systems.jsonl) -------------------
+
+PENDULUM_L = {
+    "lagrangian": "m*l**2*theta_dot**2/2 + m*g*l*cos(theta)",
+    "coordinates": ["theta"],
+    "parameters": {"m": "positive", "g": "positive", "l": "positive"},
+}
+
+
+@pytest.mark.parametrize(
+    "answer",
+    [
+        "1/2 m l^2 theta_dot^2 + m g l cos(theta) + const",
+        "L(theta, theta_dot) = 1/2 m l^2 theta_dot^2 + m g l cos(theta)",
+        "L(θ, θ̇) = ½ m l² θ̇² + m g l cos θ + constant",
+    ],
+)
+def test_a_lagrangian_with_an_additive_constant_or_its_arguments_is_read(answer):
+    assert judge(PENDULUM_L, "lagrangian", answer).status == "correct"
+
+
+def test_a_constant_that_is_not_added_is_not_dropped():
+    verdict = judge(PENDULUM_L, "lagrangian", "1/2 m l^2 theta_dot^2 + const*m g l cos(theta)")
+    assert verdict.status == "invalid" and "const" in verdict.feedback[0]
+    kinetic = judge({"scene": "simple_pendulum", "seed": 1}, "T", "T = 1/2 m l^2 phi_dot^2 + const")
+    assert kinetic.status != "correct"  # T has no arbitrary constant
+
+
+@pytest.mark.parametrize(
+    ("answer", "status"), [("2 π √(l/g)", "correct"), ("2π √(g/l)", "incorrect")]
+)
+def test_the_unicode_root_sign_is_sqrt(answer, status):
+    period = {"expression": "2*pi*sqrt(l/g)", "parameters": {"l": "positive", "g": "positive"}}
+    assert judge(period, "expression", answer).status == status
+
+
+@pytest.mark.parametrize(
+    ("answer", "status"), [("60°", "correct"), ("60 deg", "correct"), ("61°", "incorrect")]
+)
+def test_degrees_for_a_question_without_a_unit_are_pi_over_180(answer, status):
+    """A degree is the number π/180; with no unit declared it is read so (with a unit declared,
+    only an angle in rad takes degrees: the tests above)."""
+    verdict = judge({"expression": "acos(1/2)", "parameters": {}}, "expression", answer)
+    assert verdict.status == status
+    if status == "incorrect":
+        assert verdict.feedback[-1].endswith("is read as 61·π/180 rad.")

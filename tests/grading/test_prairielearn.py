@@ -1,9 +1,8 @@
 """`lagrade export prairielearn`: the question folders follow PrairieLearn's v3 format, and
 server.py honours PrairieLearn's contract when it is loaded and called the way PrairieLearn
-does (a module per question; generate, parse and grade mutate one `data` dictionary).
-
-What this cannot test without a PrairieLearn server: the rendering of question.html's mustache
-and elements, and PrairieLearn's own element grading before ours (we override partial_scores).
+does (a module per question; generate, parse and grade mutate one `data` dictionary). The
+contract as PrairieLearn documents it, with question.html rendered: `test_prairielearn_contract`;
+against PrairieLearn's real worker: `test_prairielearn_worker`.
 """
 
 from __future__ import annotations
@@ -42,12 +41,12 @@ def questions(tmp_path_factory) -> list[Path]:
                 "--seed",
                 "3",
                 "--out",
-                str(root / "questions"),
+                str(root / "course"),
             ]
         )
         == 0
     )
-    return sorted((root / "questions").iterdir())
+    return sorted((root / "course" / "questions").iterdir())
 
 
 def load_server(folder: Path):
@@ -81,7 +80,8 @@ def test_one_v3_question_per_problem_with_a_stable_uuid(questions, tmp_path):
             str(tmp_path / "again"),
         ]
     )
-    again = json.loads(next((tmp_path / "again").iterdir()).joinpath("info.json").read_text())
+    again = next((tmp_path / "again" / "questions").iterdir()).joinpath("info.json")
+    again = json.loads(again.read_text())
     assert again["uuid"] == info["uuid"]  # a re-export updates the same question
 
 
@@ -132,7 +132,7 @@ def test_unreadable_answers_are_format_errors_and_right_answers_score_full(quest
     server.grade(data)
     assert data["partial_scores"]["dof"]["score"] == 0.0
     assert data["score"] == pytest.approx(3 / 4)  # dof 1 point of 1 + 2 + 1
-    assert data["partial_scores"]["dof"]["feedback"]
+    assert data["feedback"]["lagrade"]["dof"]["notes"]
 
 
 SLOW_ASSIGNMENT = """\
@@ -149,7 +149,7 @@ def test_grade_stops_a_part_held_in_c_code_and_grades_the_others(tmp_path, monke
     """PrairieLearn calls grade() in its own process: the check runs in a worker killed at the
     part's limit + grace, the held part (the planted checker spinning in C, `tests/planted.py`)
     is `timeout` and every other part is graded."""
-    from lagrade.grading import batch, prairielearn
+    from lagrade.grading import batch, prairielearn_runtime
     from lagrade.judge.worker import GRACE
     from tests.planted import HANG, spinning
 
@@ -160,7 +160,7 @@ def test_grade_stops_a_part_held_in_c_code_and_grades_the_others(tmp_path, monke
         main(["export", "prairielearn", str(tmp_path / "a.toml"), "--seed", "3", "--out", str(out)])
         == 0
     )
-    server = load_server(next(out.iterdir()))
+    server = load_server(next((out / "questions").iterdir()))
     data = new_data(5)
     server.generate(data)
     data["submitted_answers"] = {"dof": "2", "lagrangian": "m*g*h", "block_acceleration": HANG}
@@ -170,11 +170,12 @@ def test_grade_stops_a_part_held_in_c_code_and_grades_the_others(tmp_path, monke
     elapsed = time.monotonic() - start
     scores = data["partial_scores"]
     assert scores["block_acceleration"]["score"] == 0.0
-    assert "ran out of time" in scores["block_acceleration"]["feedback"]
+    notes = data["feedback"]["lagrade"]["block_acceleration"]["notes"]
+    assert any("ran out of time" in note["text"] for note in notes)
     assert scores["dof"]["score"] == 1.0
-    assert scores["lagrangian"]["score"] == 0.0 and scores["lagrangian"]["feedback"]
+    assert scores["lagrangian"]["score"] == 0.0 and data["feedback"]["lagrade"]["lagrangian"]
     # the part's limit and grace, and a fresh worker's start for the rest
-    assert elapsed < prairielearn.PART_TIME_LIMIT + GRACE + 2.0, elapsed
+    assert elapsed < prairielearn_runtime.PART_TIME_LIMIT + GRACE + 2.0, elapsed
 
 
 LIST_ASSIGNMENT = """\
@@ -203,7 +204,7 @@ def test_a_pl_answer_is_read_as_check_reads_the_same_text(tmp_path, separator):
         main(["export", "prairielearn", str(tmp_path / "a.toml"), "--seed", "5", "--out", str(out)])
         == 0
     )
-    server = load_server(next(out.iterdir()))
+    server = load_server(next((out / "questions").iterdir()))
     data = new_data(11)
     server.generate(data)
     seed = data["params"]["seed"]
@@ -230,6 +231,7 @@ def test_a_pl_answer_is_read_as_check_reads_the_same_text(tmp_path, separator):
         )
         scored = data["partial_scores"][part]
         assert scored["score"] == pytest.approx(share), (part, text)
-        assert scored["feedback"] == (" ".join(verdict.feedback) or verdict.status), (part, text)
+        notes = [note["text"] for note in data["feedback"]["lagrade"][part]["notes"]]
+        assert notes == list(verdict.feedback), (part, text)
     assert data["partial_scores"]["eom"]["score"] == 1.0
     assert data["partial_scores"]["cyclic"]["score"] == 0.0  # every coordinate: a blind guess

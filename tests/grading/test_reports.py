@@ -85,7 +85,7 @@ def test_html_feedback_keeps_the_caret_under_its_character(tmp_path):
     result = _result("s001", 0.0, [part])
     report.write_student_outputs(tmp_path, MANIFEST, result)
     html = (tmp_path / "feedback" / "s001.html").read_text()
-    block = re.search(r'<pre class="source">(.*?)</pre>', html, flags=re.S)
+    block = re.search(r'<pre class="source"[^>]*>(.*?)</pre>', html, flags=re.S)
     assert block, html
     source, caret = block.group(1).split("\n")
     assert caret.strip() == "^"

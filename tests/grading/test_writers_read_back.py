@@ -21,6 +21,7 @@ from lagrade.assign.templating import one_line, toml_literal, toml_string
 from lagrade.cli.main import main
 from lagrade.errors import AssignmentError
 from lagrade.grading.answer_page.sheets import save_sheet, saved_answers, sheet_text
+from lagrade.grading.savelog import SaveLog, log_path, now_ns
 from lagrade.grading.submission import read_sheet
 
 #: Any text a browser or a file can hold: every code point but lone surrogates (which no UTF-8
@@ -87,7 +88,10 @@ def test_del_and_other_controls_never_go_raw_into_a_literal_string():
 def save_and_read(folder: Path, answer: str, key: str = "lagrangian", title: str = "Set 3"):
     manifest = {**MANIFEST, "assignment": {"title": title}}
     text = sheet_text(manifest, STUDENT, {1: {key: answer}})
-    path = save_sheet(folder, "s001", text)
+    log = SaveLog(log_path(folder))
+    saved = save_sheet(log, folder, "s001", text, answers={1: {key: answer}}, saved_ns=now_ns())
+    path = folder / saved.file
+    assert log.saves("s001")[-1].sheet == path.read_bytes()  # logged, byte for byte
     return read_sheet(path, "s001", 1, KEYS), saved_answers(folder, manifest, "s001")
 
 

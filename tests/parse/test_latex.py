@@ -39,6 +39,27 @@ def test_translation(latex: str, plain: str) -> None:
     assert _plain(latex) == plain
 
 
+FRACTIONS = Vocabulary.from_names(["x_M", "q", "theta"], ["m", "M", "g", "l", "alpha"])
+
+
+@pytest.mark.parametrize(
+    ("latex", "expected"),
+    [
+        (r"\frac{mg}{2l}", "m*g/(2*l)"),  # was (m*g/2)*l: the denominator 2l unbracketed
+        (r"\frac{g}{Mm}", "g/(M*m)"),
+        (r"\frac{1}{2m} q", "q/(2*m)"),
+        (r"\frac{x_M}{2}", "x_M/2"),
+        (r"\frac{\theta}{\alpha}", "theta/alpha"),
+    ],
+)
+def test_a_fraction_is_read_with_its_numerator_and_denominator_whole(latex, expected) -> None:
+    """A systems-corpus case (coupled pendula, `\\frac{mg}{2l}`) was read as (mg/2)·l: every
+    numerator and denominator longer than one number or one letter is bracketed. The expected
+    reading is the plain grammar's, which does not go through the LaTeX translator."""
+    got = parse_expression(latex, FRACTIONS).lhs
+    assert got == parse_expression(expected, FRACTIONS).lhs, (latex, got)
+
+
 def test_both_dot_placements_are_the_same_symbol() -> None:
     a = parse_expression(r"\dot{x}_M", VOCAB).lhs
     b = parse_expression(r"\dot{x_M}", VOCAB).lhs
@@ -82,7 +103,7 @@ def test_adjacent_declared_letters_multiply_in_latex_and_the_echo_shows_it() -> 
     read = parse_answer(r"\frac{GMm}{r}", vocab)
     G, M, m = (sp.Symbol(n, positive=True) for n in "GMm")
     assert read.lhs == G * M * m / jet("r").q
-    assert read.echo == "G*M*m/r"
+    assert read.echo == "(G*M*m)/r"  # a fraction's numerator is bracketed whole
     assert read.warnings == ("GMm is read as G*M*m: in LaTeX adjacent letters multiply.",)
     with pytest.raises(ParseError, match=r"Did you mean G\*M\*m\?"):
         parse_answer("GMm/r", vocab)

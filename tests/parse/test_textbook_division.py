@@ -125,7 +125,9 @@ def test_no_warning_on_a_right_answer_of_the_corpora():
             row = json.loads(line)
             if not row["label"]:
                 continue
-            vocabulary = Vocabulary.from_names(row["coordinates"], row["parameters"])
+            vocabulary = Vocabulary.from_names(
+                row["coordinates"], row["parameters"], imaginary_unit=row.get("imaginary_unit")
+            )
             parsed = parse_answer(row["answer"], vocabulary)
             warned += [row["id"] for w in parsed.warnings if "fraction bar" in w]
     assert warned == []

@@ -23,6 +23,7 @@ ASSIGNMENT = """\
 title = "Answer page test"
 course = "PHYS 201"
 points = 1
+{top}
 
 [[problems]]
 scene = "simple_pendulum"
@@ -49,8 +50,11 @@ class Served:
         return self.links[student_id]
 
 
-def generate_class(root: Path, extra: str = "") -> Path:
-    (root / "assignment.toml").write_text(ASSIGNMENT.replace("{extra}", extra))
+def generate_class(root: Path, extra: str = "", top: str = "", assignment: str = "") -> Path:
+    """A class of three from ASSIGNMENT (`top`: top-level keys such as `due`; `extra`: tables
+    after the problem), or from the whole `assignment` text given."""
+    text = assignment or ASSIGNMENT.replace("{extra}", extra).replace("{top}", top)
+    (root / "assignment.toml").write_text(text)
     (root / "roster.csv").write_text(ROSTER)
     status = main(
         [

@@ -1,5 +1,5 @@
 """`lagrade serve`, over HTTP against a live server: private links, the preview, saving the
-sheet `lagrade grade` reads (the previous version kept), refusals, and a clean stop."""
+sheet `lagrade grade` reads (every version in the log of saves), refusals, and a clean stop."""
 
 from __future__ import annotations
 
@@ -10,11 +10,13 @@ import subprocess
 import sys
 import threading
 import time
+from pathlib import Path
 
 import pytest
 
 from lagrade.grading.answer_page.tokens import load_or_create_secret, student_token
-from lagrade.grading.submission import read_sheet
+from lagrade.grading.savelog import SaveLog, log_path
+from lagrade.grading.submission import read_sheet, sheet_from_bytes
 from tests.serve.conftest import generate_class, get, post, start_server, stop_server
 
 
@@ -77,18 +79,18 @@ def test_preview_shows_the_reading_as_mathml(served):
     assert result["status"] == "read" and len(result["lines"]) == 1
     assert "Line 2 could not be read" in result["message"]
     status, result = post(url, {"problem": 1, "key": "lagrangian", "text": "  "})
-    assert result == {"status": "empty", "lines": [], "message": ""}
+    assert result == {"status": "empty", "lines": [], "message": "", "warnings": []}
 
 
 def test_preview_never_tells_right_from_wrong(served):
     url = served.url("s002") + "/preview"
     _, right = post(url, {"problem": 1, "key": "dof", "text": "1"})
     _, wrong = post(url, {"problem": 1, "key": "dof", "text": "7"})
-    assert set(right) == set(wrong) == {"status", "lines", "message"}
+    assert set(right) == set(wrong) == {"status", "lines", "message", "warnings"}
     assert right["status"] == wrong["status"] == "read"
 
 
-def test_save_writes_the_sheet_grade_reads_and_keeps_the_previous(served):
+def test_save_writes_the_sheet_grade_reads_and_logs_every_version(served):
     url = served.url("s003") + "/save"
     first = {"1": {"dof": "1", "lagrangian": r"\frac{1}{2} m l^2 \dot{\theta}^2", "eom": ""}}
     status, reply = post(url, {"answers": first})
@@ -108,9 +110,13 @@ def test_save_writes_the_sheet_grade_reads_and_keeps_the_previous(served):
     assert sheet.readable and not sheet.warnings
     assert sheet.answers[1]["lagrangian"] == second["1"]["lagrangian"]
     assert sheet.answers[1]["eom"].splitlines() == second["1"]["eom"].splitlines()
-    previous = read_sheet(served.sheets / ".previous" / "s003.toml", "s003", 1, keys)
+    logged = SaveLog(log_path(served.sheets), create=False).saves("s003")
+    assert logged[-1].sheet == (served.sheets / "s003.toml").read_bytes()
+    previous = sheet_from_bytes(Path("s003.toml"), logged[-2].sheet, "s003", 1, keys)
     assert previous.answers[1]["lagrangian"] == first["1"]["lagrangian"]  # backslashes kept
     assert "eom" not in previous.answers[1]  # a blank field is not written
+    assert logged[-2].answers == {"1": {k: v for k, v in first["1"].items() if v}}
+    assert not (served.sheets / ".previous").exists()  # the log holds every version
 
 
 def test_bad_requests_are_refused_and_write_nothing(served):
@@ -133,8 +139,11 @@ def test_bad_requests_are_refused_and_write_nothing(served):
 
 def test_saves_of_many_students_at_once_never_mix(tmp_path, served):
     """Each of 3 students saves 20 times from 3 threads at once: every sheet on disk is one
-    of that student's own saves, whole."""
+    of that student's own saves, whole, and the log holds all 60 of each, the last one the
+    sheet on disk."""
     errors = []
+    log = SaveLog(log_path(served.sheets), create=False) if served.sheets.exists() else None
+    before = {s: len(log.saves(s)) if log else 0 for s in served.links}
 
     def hammer(student_id: str, thread: int) -> None:
         for k in range(20):
@@ -157,6 +166,10 @@ def test_saves_of_many_students_at_once_never_mix(tmp_path, served):
         assert f'student_id = "{student_id}"' in text
         others = set(served.links) - {student_id}
         assert not any(f"# {o} " in text for o in others)
+        rows = SaveLog(log_path(served.sheets), create=False).saves(student_id)
+        assert len(rows) - before[student_id] == 60
+        assert rows[-1].sheet == (served.sheets / f"{student_id}.toml").read_bytes()
+        assert all(f"# {student_id} " in r.answers["1"]["lagrangian"] for r in rows[-60:])
 
 
 def test_port_in_use_is_one_clear_error(served, tmp_path):

@@ -12,8 +12,8 @@ from pathlib import Path
 import pytest
 
 from lagrade.cli.main import main
-from lagrade.grading.answer_page.app import SAVE_PART_TIME_LIMIT
 from lagrade.grading.answer_page.preview import PREVIEW_TIME_LIMIT
+from lagrade.grading.answer_page.saving import SAVE_PART_TIME_LIMIT
 from lagrade.judge.worker import GRACE
 from tests.planted import HANG
 from tests.serve.conftest import ROSTER, post, start_server, stop_server
@@ -109,7 +109,12 @@ def test_one_student_has_one_item_in_the_workers(attacked):
     for thread in (slow, first, newest):
         thread.join()
     assert results["slow"][1]["status"] == "timeout"
-    assert results["first"][1] == {"status": "superseded", "lines": [], "message": ""}
+    assert results["first"][1] == {
+        "status": "superseded",
+        "lines": [],
+        "message": "",
+        "warnings": [],
+    }
     assert results["first"][0] < 1.0  # answered when replaced, not when the lane frees
     assert results["newest"][1]["status"] == "read"
     assert results["newest"][1]["lines"][0]["plain"] == "2"

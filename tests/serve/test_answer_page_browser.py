@@ -112,3 +112,28 @@ def test_wrong_token_shows_nothing(browser, served):
     token = served.url("s001").rsplit("/", 1)[1]
     browser.get(f"{served.base}/s/{token[::-1]}")
     assert browser.find_element(By.TAG_NAME, "body").text == "Not found."
+
+
+def test_the_preview_shows_the_parsers_notes_right_or_wrong(browser, served):
+    """The notes on a reading the student may not have meant, under the preview, whatever the
+    verdict: (g/2)·l, a mixed number, a LaTeX run of letters split into names."""
+    browser.get(served.url("s002"))  # s002's coordinate is theta
+    cases = {
+        "p1-eom": ("theta_ddot + g/2l sin(theta) = 0", "g/2l is read as (g/2)*l"),
+        "p1-lagrangian": (
+            r"\frac{1}{2} ml^2 \dot{\theta}^2 + mgl\cos\theta",  # right, as written
+            "mgl is read as m*g*l",
+        ),
+        "p1-momenta": ("p_theta = m l^2 theta_dot + 2½ - 2½", "2½ is read as the mixed number"),
+    }
+    for field_id, (text, note) in cases.items():
+        _type(browser, field_id, text)
+        box = _preview(browser, field_id, "math")
+        WebDriverWait(browser, 30).until(lambda d, b=box, n=note: n in b.text)
+        notes = [p.text for p in box.find_elements(By.CSS_SELECTOR, "p.note")]
+        assert any(n.startswith("Note: ") and note in n for n in notes), notes
+    # the LaTeX Lagrangian is right: the note is about the reading, not the verdict
+    from lagrade.judge import check
+
+    verdict = check({"scene": "simple_pendulum"}, "lagrangian", cases["p1-lagrangian"][0])
+    assert verdict.status == "correct" and not any("mgl" in f for f in verdict.feedback)

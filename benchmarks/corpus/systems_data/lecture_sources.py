@@ -197,7 +197,7 @@ def spherical_pendulum() -> System:
     )
     s.ok(
         "eom",
-        ["θ̈ = φ̇² sin θ cos θ − (g/l) sin θ", "d/dt(m l² sin²θ φ̇) = 0"],
+        ["θ̈ = φ̇² sin θ cos θ − (g/l) sin θ", "d/dt(m l² φ̇ sin²θ) = 0"],
         [f"({et})/l", "Dt(m*l**2*sin(theta)**2*phi_dot)"],
         "unicode_conservation_form",
     )

@@ -11,7 +11,7 @@ import sympy as sp
 
 from lagrade.assign.figures.geometry import Geometry
 from lagrade.assign.figures.primitives import put_text
-from lagrade.assign.figures.style import GREY, INK
+from lagrade.assign.figures.style import GREY, GREY_TEXT, INK
 from lagrade.mechanics.scene import RigidBody
 
 
@@ -66,4 +66,4 @@ def axes3d(ax: Any, unit: float, g: Geometry) -> None:
                 arrowstyle="-|>", color=GREY, linewidth=0.8, shrinkA=0, shrinkB=0, mutation_scale=8
             ),
         )
-        put_text(ax, tip * 1.18, f"${name}$", color=GREY)
+        put_text(ax, tip * 1.18, f"${name}$", color=GREY_TEXT)

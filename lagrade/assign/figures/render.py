@@ -24,10 +24,12 @@ class FigureError(LagradeError):
 
 @dataclass(frozen=True)
 class Figure:
-    """A drawn figure in both formats."""
+    """A drawn figure in both formats, and the labels written on it (as matplotlib's mathtext:
+    `$x_{M}$`, `$\\alpha$`), for its text alternative."""
 
     svg: bytes
     pdf: bytes
+    labels: tuple[str, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -105,4 +107,5 @@ def draw(variant: SceneVariant) -> Figure:
     with matplotlib.rc_context(RC):
         composed.figure.savefig(svg, format="svg", metadata={"Date": None})
         composed.figure.savefig(pdf, format="pdf", metadata={"CreationDate": None, "ModDate": None})
-    return Figure(svg.getvalue(), pdf.getvalue())
+    labels = tuple(t.get_text() for t in composed.axes.texts if t.get_text().strip())
+    return Figure(svg.getvalue(), pdf.getvalue(), labels)

@@ -2,14 +2,15 @@
 
     GET  /s/<token>            the student's handout, one field per part, preview and save
     POST /s/<token>/preview    {"problem": 1, "key": "eom", "text": "…"} → how it is read
-    POST /s/<token>/save       {"answers": {"1": {"eom": "…"}}} → the sheet written (and,
-                               when the assignment allows, graded with feedback)
+    POST /s/<token>/save       {"answers": {"1": {"eom": "…"}}, "attempt": "…"} → the sheet
+                               written and logged (and, when the assignment allows, graded
+                               with feedback), or refused after the due date (`saving`)
     GET  /static/page.js, /static/page.css   the page's own script and style (no CDN)
 
 Any other path (a trailing slash included: never a redirect), and any token that is not a
 roster student's, is 404 with no data. Judging runs in killable worker processes, one item of
-each student at a time (`judging`); writing a student's sheet holds that student's lock, so two
-saves never interleave."""
+each student at a time (`judging`); a save holds that student's lock, so two saves never
+interleave, and is appended to the log of saves (`lagrade.grading.savelog`)."""
 
 from __future__ import annotations
 
@@ -18,7 +19,6 @@ import contextlib
 import functools
 import logging
 import threading
-import time
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from importlib import resources
@@ -30,31 +30,25 @@ from starlette.requests import ClientDisconnect, Request
 from starlette.responses import HTMLResponse, JSONResponse, PlainTextResponse, Response
 from starlette.routing import Route
 
-import lagrade.grading.atomic as atomic
 import lagrade.untrusted as untrusted
 from lagrade.assign.assignment import Assignment, load_assignment
 from lagrade.assign.templating import environment
 from lagrade.assign.variants import VariantChoice
 from lagrade.assign.views import MULTILINE, problem_view
-from lagrade.errors import LagradeError, UnreadableInput
+from lagrade.errors import UnreadableInput
+from lagrade.grading.answer_page import saving
+from lagrade.grading.answer_page.due import DueRule, due_rule
 from lagrade.grading.answer_page.judging import Judging
 from lagrade.grading.answer_page.settings import PageSettings, load_settings
-from lagrade.grading.answer_page.sheets import (
-    MAX_ANSWER_CHARS,
-    save_sheet,
-    saved_answers,
-    sheet_text,
-)
+from lagrade.grading.answer_page.sheets import MAX_ANSWER_CHARS, saved_answers
 from lagrade.grading.answer_page.tokens import token_table
 from lagrade.grading.manifest import carried_scene_texts
 from lagrade.grading.prompts import prompt_html
 from lagrade.grading.rubric import Rubric, load_rubric
+from lagrade.grading.savelog import SaveLog, log_path
 
 #: The largest request body accepted (every answer of a sheet together).
 MAX_BODY_BYTES = 512 * 1024
-#: Seconds one part may take when a save is graded.
-SAVE_PART_TIME_LIMIT = 10.0
-ATTEMPTS = ".attempts"
 _log = logging.getLogger("uvicorn.error")
 _HEADERS = {
     "Cache-Control": "no-store",
@@ -79,6 +73,8 @@ class ClassRoom:
     assignment: Assignment
     settings: PageSettings
     rubric: Rubric
+    log: SaveLog
+    due: DueRule
     jobs: int = 2
     students: dict[str, Mapping[str, Any]] = field(default_factory=dict)
     _judging: Judging | None = None
@@ -140,14 +136,18 @@ def build_classroom(
     manifest_dir = Path(manifest_path).parent
     assignment_file = manifest_dir / manifest["assignment"]["file"]
     ids = [s["id"] for s in manifest["students"]]
+    assignment = load_assignment(assignment_file, scene_texts=carried_scene_texts(manifest))
+    settings = load_settings(assignment_file)
     return ClassRoom(
         manifest=manifest,
         manifest_dir=manifest_dir,
         submissions=Path(submissions),
         tokens=token_table(secret, ids),
-        assignment=load_assignment(assignment_file, scene_texts=carried_scene_texts(manifest)),
-        settings=load_settings(assignment_file),
+        assignment=assignment,
+        settings=settings,
         rubric=load_rubric(assignment_file),
+        log=SaveLog(log_path(submissions)),
+        due=due_rule(assignment.due, settings),
         jobs=jobs,
     )
 
@@ -196,6 +196,7 @@ def make_app(room: ClassRoom) -> Starlette:
         loop = asyncio.get_running_loop()
         views = await loop.run_in_executor(None, room.problems_of, student_id)
         answers, warnings = saved_answers(room.submissions, room.manifest, student_id)
+        used = await loop.run_in_executor(None, room.log.attempts_used, student_id)
         html = page.render(
             base=f"/s/{request.path_params['token']}",
             assignment=room.assignment,
@@ -204,7 +205,8 @@ def make_app(room: ClassRoom) -> Starlette:
             answers=answers,
             warnings=warnings,
             settings=room.settings,
-            attempts_used=_attempts_used(room, student_id),
+            due=saving.due_view(room),
+            attempts_used=used,
             max_chars=MAX_ANSWER_CHARS,
         )
         return HTMLResponse(html, headers=_HEADERS)
@@ -230,28 +232,13 @@ def make_app(room: ClassRoom) -> Starlette:
         try:
             body = await _body(request)
             answers = _answers(room, body)
+            token = saving.attempt_token(body)
         except ClientDisconnect:
             return _gone(request)
         except (UnreadableInput, ValueError) as error:
             return _json({"status": "error", "message": str(error)}, 400)
-        student = room.students[student_id]
-        async with room.lock(student_id):
-            loop = asyncio.get_running_loop()
-            try:
-                text = sheet_text(room.manifest, student, answers)  # read back before saving
-                path = await loop.run_in_executor(
-                    None, save_sheet, room.submissions, student_id, text
-                )
-            except LagradeError as error:  # a full disk, a read-only folder
-                return _json({"status": "error", "message": f"Not saved: {error}"}, 503)
-            reply: dict[str, Any] = {
-                "status": "saved",
-                "file": path.name,
-                "saved_at": time.strftime("%H:%M:%S"),
-            }
-            if room.settings.feedback:
-                reply.update(await _graded(room, student_id, path))
-        return _json(reply)
+        status, reply = await saving.save(room, student_id, answers, token)
+        return _json(reply, status)
 
     async def static(request: Request) -> Response:
         name = request.path_params["name"]
@@ -347,57 +334,3 @@ def _answers(room: ClassRoom, body: Any) -> dict[int, dict[str, str]]:
             _part_of(room, number, key)
             out.setdefault(number, {})[key] = _text(value)
     return out
-
-
-# --- graded saves --------------------------------------------------------------------------
-
-
-def _attempts_path(room: ClassRoom, student_id: str) -> Path:
-    return room.submissions / ATTEMPTS / f"{student_id}.json"
-
-
-def _attempts_used(room: ClassRoom, student_id: str) -> int:
-    try:
-        data = untrusted.load_json(
-            _attempts_path(room, student_id).read_text(encoding="utf-8"), "attempts"
-        )
-    except (OSError, UnreadableInput):
-        return 0
-    used = data.get("used", 0) if isinstance(data, dict) else 0
-    return used if isinstance(used, int) and used >= 0 else 0
-
-
-async def _graded(room: ClassRoom, student_id: str, path: Path) -> dict[str, Any]:
-    """Grade the sheet just saved with `lagrade grade`'s own function, when attempts remain."""
-    used = _attempts_used(room, student_id)
-    limit = room.settings.attempts
-    if limit is not None and used >= limit:
-        return {"feedback": None, "attempts_left": 0}
-    task = {
-        "student": room.students[student_id],
-        "path": str(path),
-        "part_time_limit": SAVE_PART_TIME_LIMIT,
-    }
-    result = await room.judging().grade(student_id, task)
-    used += 1
-    atomic.write_json(_attempts_path(room, student_id), {"used": used})
-    return {
-        "feedback": _feedback(result),
-        "attempts_left": None if limit is None else max(limit - used, 0),
-    }
-
-
-def _feedback(result: Mapping[str, Any]) -> dict[str, Any]:
-    """What the student sees of a graded save: per part, the verdict, points and feedback."""
-    if not result.get("problems"):  # invalid, or not graded at all
-        return {"reason": result.get("reason", ""), "parts": {}}
-    parts = {}
-    for problem in result.get("problems", []):
-        for part in problem.get("parts", []):
-            parts[f"{problem['index']}/{part['key']}"] = {
-                "verdict": part["verdict"],
-                "points": part["points"],
-                "max_points": part["max_points"],
-                "feedback": part["feedback"],
-            }
-    return {"reason": "", "parts": parts}

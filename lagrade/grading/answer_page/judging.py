@@ -30,7 +30,7 @@ from lagrade.judge.worker import Limits, Outcome
 
 #: Seconds an item has before its first part sets its own deadline (reading a saved sheet).
 ITEM_SECONDS = 20.0
-SUPERSEDED = {"status": "superseded", "lines": [], "message": ""}
+SUPERSEDED = {"status": "superseded", "lines": [], "message": "", "warnings": []}
 _UNREADABLE = "This answer could not be read (the reader failed on it)."
 _log = logging.getLogger("uvicorn.error")
 
@@ -92,7 +92,7 @@ class Judging:
         if outcome.status == "timeout":
             return preview_module.timed_out()
         _log.warning("lagrade: a preview failed: %s", _first_line(outcome.reason))
-        return {"status": "unreadable", "lines": [], "message": _UNREADABLE}
+        return {"status": "unreadable", "lines": [], "message": _UNREADABLE, "warnings": []}
 
     async def grade(self, student_id: str, task: dict[str, Any]) -> dict[str, Any]:
         """The result of `grade_student` for a saved sheet; a worker killed in a part costs that

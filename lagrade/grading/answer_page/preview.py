@@ -15,6 +15,7 @@ from lagrade.errors import LagradeError, ParseError
 from lagrade.grading.batch import grade_part, question
 from lagrade.grading.manifest import entry_spec
 from lagrade.grading.rubric import Rubric
+from lagrade.judge.parts.reading import heard_notes
 from lagrade.notation.parse import parse_answer
 
 #: Seconds one preview may take (a preview is asked at every pause in typing).
@@ -24,14 +25,17 @@ _RUBRIC = Rubric()
 
 def preview(entry: Mapping[str, Any], part: Mapping[str, Any], text: str) -> dict[str, Any]:
     """{"status": "empty"|"read"|"unreadable"|"timeout", "lines": [{"plain", "mathml"}],
-    "message": the parser's error (caret included) when unreadable}."""
+    "message": the parser's error (caret included) when unreadable, "warnings": the parser's
+    notes on how it read the answer}."""
     if not text.strip():
-        return {"status": "empty", "lines": [], "message": ""}
-    result = grade_part(entry, part, text, {}, _RUBRIC, PREVIEW_TIME_LIMIT)
+        return {"status": "empty", "lines": [], "message": "", "warnings": []}
+    with heard_notes() as notes:
+        result = grade_part(entry, part, text, {}, _RUBRIC, PREVIEW_TIME_LIMIT)
     if result["verdict"] == "timeout":
         return timed_out()
     if result["verdict"] == "invalid":
-        return {"status": "unreadable", "lines": [], "message": "\n".join(result["feedback"])}
+        message = "\n".join(result["feedback"])
+        return {"status": "unreadable", "lines": [], "message": message, "warnings": notes}
     shown = result["interpreted"]
     lines = [line for line in (shown if isinstance(shown, list) else [shown]) if line]
     unread = [f for f in result["feedback"] if "could not be read" in f]
@@ -41,13 +45,19 @@ def preview(entry: Mapping[str, Any], part: Mapping[str, Any], text: str) -> dic
             {"plain": str(line), "mathml": _mathml(entry, part, str(line))} for line in lines
         ],
         "message": "\n".join(unread),
+        "warnings": list(notes),
     }
 
 
 def timed_out() -> dict[str, Any]:
     """The reply for an answer whose reading ran out of time, stopped by the alarm or by the
     kill of its worker at the limit + grace."""
-    return {"status": "timeout", "lines": [], "message": "Reading this answer took too long."}
+    return {
+        "status": "timeout",
+        "lines": [],
+        "message": "Reading this answer took too long.",
+        "warnings": [],
+    }
 
 
 def _mathml(entry: Mapping[str, Any], part: Mapping[str, Any], line: str) -> str:

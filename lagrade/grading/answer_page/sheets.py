@@ -1,17 +1,19 @@
 """Answer sheets written by the answer page: the same TOML file `lagrade grade` reads
-(`SUBMISSIONS/<id>.toml`), written atomically, the version it replaces kept in
-`SUBMISSIONS/.previous/<id>.toml` (a hidden folder, which `grade` does not list as stray)."""
+(`SUBMISSIONS/<id>.toml`), written atomically, each save appended to the log of saves beside
+it (`lagrade.grading.savelog`) in the same transaction. The log holds every version, so no
+copy of the replaced sheet is kept beside it (the `.previous/` folder of earlier versions)."""
 
 from __future__ import annotations
 
 import datetime as dt
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from pathlib import Path
 from typing import Any
 
 import lagrade.grading.atomic as atomic
 from lagrade.assign.templating import one_line, toml_literal, toml_string
 from lagrade.errors import OutputError
+from lagrade.grading.savelog import Save, SaveLog, modified_ns
 from lagrade.grading.submission import (
     Sheet,
     find_submission,
@@ -20,7 +22,6 @@ from lagrade.grading.submission import (
     sheet_from_bytes,
 )
 
-PREVIOUS = ".previous"
 #: The longest answer the page accepts for one part (a real one is a few hundred characters;
 #: the sheet reader's limit is 1 MiB for the whole file).
 MAX_ANSWER_CHARS = 20_000
@@ -35,14 +36,17 @@ def sheet_text(
     manifest: Mapping[str, Any],
     student: Mapping[str, Any],
     answers: Mapping[int, Mapping[str, str]],
+    saved: dt.datetime | None = None,
+    late: bool = False,
 ) -> str:
     """The TOML answer sheet holding `answers[problem][key]` (parts left blank are omitted).
     Values are TOML literal strings, so LaTeX backslashes are kept exactly as typed."""
     info = manifest["assignment"]
-    saved = dt.datetime.now(dt.UTC).replace(microsecond=0).isoformat()
+    saved = (saved or dt.datetime.now(dt.UTC)).astimezone(dt.UTC).replace(microsecond=0)
+    when = saved.isoformat() + (", late (after the due date)" if late else "")
     lines = [
         f"# Answer sheet: {one_line(info.get('title', ''))}",
-        f"# Saved from the answer page at {saved}.",
+        f"# Saved from the answer page at {when}.",
         f"student_id = {toml_string(student['id'])}",
         f"name = {toml_string(student.get('name', ''))}",
     ]
@@ -79,21 +83,56 @@ def _read_back(
         raise OutputError(f"the answer sheet would not read back as written ({why})")
 
 
-def save_sheet(folder: Path, student_id: str, text: str) -> Path:
-    """Write `text` as `<id>.toml` in `folder`, atomically; the sheet it replaces (whatever its
-    suffix) is first copied to `.previous/`, and a `<id>.json` it replaces is removed so that
-    `grade` finds one sheet. A symbolic link in the sheet's place is replaced, never followed."""
+def save_sheet(
+    log: SaveLog,
+    folder: Path,
+    student_id: str,
+    text: str,
+    *,
+    answers: Mapping[int, Mapping[str, str]],
+    saved_ns: int,
+    token: str | None = None,
+    late: bool = False,
+) -> Save:
+    """Write `text` as `<id>.toml` in `folder`, atomically, and append it to `log` in the same
+    transaction (`SaveLog.record`). A sheet it replaces that the log does not hold as the
+    student's last (one from before the log, or put there by hand) is logged first; a `<id>.json`
+    it replaces is removed so that `grade` finds one sheet. A symbolic link in the sheet's place
+    is replaced, never followed."""
     folder = Path(folder)
     target = folder / f"{student_id}.toml"
     existing, _ = find_submission(folder, student_id) if folder.is_dir() else (None, "")
+    old = b""
     if existing is not None:
-        data, reason = read_regular_file(existing)
-        if not reason:
-            atomic.write_bytes(folder / PREVIOUS / existing.name, data)
-    atomic.write_text(target, text)
-    if existing is not None and existing.name != target.name:
-        existing.unlink(missing_ok=True)
-    return target
+        old, reason = read_regular_file(existing)
+        if reason:
+            old = b""
+        else:
+            log.keep_found(student_id, existing.name, old, modified_ns(existing))
+    data = atomic.encode_text(text)
+
+    def write() -> Callable[[], None]:
+        atomic.write_bytes(target, data)
+        if existing is not None and existing.name != target.name:
+            existing.unlink(missing_ok=True)
+        return undo
+
+    def undo() -> None:  # the row could not be committed: the folder as it was
+        if existing is not None and old:
+            atomic.write_bytes(existing, old)
+        if existing is None or existing.name != target.name:
+            target.unlink(missing_ok=True)
+
+    return log.record(
+        student_id,
+        target.name,
+        data,
+        answers=answers,
+        token=token,
+        late=late,
+        saved_ns=saved_ns,
+        write=write,
+    )
 
 
 def saved_answers(

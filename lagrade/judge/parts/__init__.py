@@ -18,8 +18,10 @@ or request holds — and the checker splits and reads it (`items`, `reading`): t
     expression      a number at the handout's values, or equal to the reference expression
 
 `given` carries what the student brings besides the answer: their own L for follow-through on
-later parts ("lagrangian"), and for a numeric answer the handout's values and the tolerance
-("values", "tolerance").
+later parts ("lagrangian"), their transformation equations ("transformation": when valid and
+not the statement's, L, T, V, eom, momenta, cyclic and conserved are judged in the student's
+own coordinates, `own_coordinates`), and for a numeric answer the handout's values and the
+tolerance ("values", "tolerance").
 """
 
 from __future__ import annotations
@@ -37,7 +39,12 @@ from lagrade.judge.parts.energy import check_kinetic, check_lagrangian, check_po
 from lagrade.judge.parts.eom import check_eom
 from lagrade.judge.parts.expression import check_expression
 from lagrade.judge.parts.momenta import check_momenta
-from lagrade.judge.parts.reading import reading_notes
+from lagrade.judge.parts.own_coordinates import (
+    FOLLOWING,
+    judged_in_chosen_coordinates,
+    transformation_remark,
+)
+from lagrade.judge.parts.reading import hear, reading_notes
 from lagrade.judge.parts.transformation import check_transformation
 from lagrade.judge.problem import Problem
 from lagrade.judge.verdict import Verdict, invalid
@@ -81,7 +88,13 @@ def run_checker(problem: Problem, part: str, answer: Any, given: Mapping | None 
         )
     try:
         with reading_notes() as notes:
-            verdict = checker(problem, answer, given)
+            if part in FOLLOWING and given and given.get("transformation") is not None:
+                verdict = judged_in_chosen_coordinates(problem, part, answer, given, checker)
+            else:
+                verdict = checker(problem, answer, given)
+            if part == "transformation":
+                verdict = transformation_remark(problem, answer, verdict)
+        hear(notes)
         return with_notes(verdict, notes)
     except ParseError as error:
         return invalid(part, str(error), getattr(error, "source", ""))

@@ -33,7 +33,12 @@ from lagrade.judge.parts.common import (
     where_text,
     witness_point,
 )
-from lagrade.judge.parts.reading import decided, has_acceleration, read_single
+from lagrade.judge.parts.reading import (
+    decided,
+    has_acceleration,
+    read_single,
+    without_additive_constant,
+)
 from lagrade.judge.problem import Problem
 from lagrade.judge.sampling import Points
 from lagrade.judge.verdict import Verdict
@@ -175,7 +180,7 @@ def _same_dynamics_notes(problem: Problem, answer: Compiled, match, points: Poin
 
 
 def check_lagrangian(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
-    got = read_single(problem, answer, "lagrangian", "L")
+    got = without_additive_constant(problem, read_single(problem, answer, "lagrangian", "L"))
     tree = got.compiled is not got.sympy_compiled
     judged = judge_lagrangian(problem, got.compiled, diagnose=not tree)
     if judged[0] != "correct" and tree:  # a wrong answer's feedback reads its sympy form
@@ -219,7 +224,7 @@ def check_kinetic(problem: Problem, answer: Any, given: Mapping | None) -> Verdi
 
 
 def check_potential(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
-    got = read_single(problem, answer, "V", "V")
+    got = without_additive_constant(problem, read_single(problem, answer, "V", "V"))
     reference = problem.potential
     points = problem.points("V")
     out, answer_c = decided(got, lambda a: differ_by_constant(a, reference, points))

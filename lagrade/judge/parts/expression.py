@@ -113,6 +113,19 @@ def _with_unit(problem: Problem, answer: Any) -> tuple[str, str] | None:
     return match[1], unit
 
 
+def _angle_in_degrees(problem: Problem, answer: Any) -> tuple[str, str] | None:
+    """(the number, what was written) of an angle typed in degrees (`60°`, `-45 deg`) for a
+    question that declares no unit: a degree is the number π/180 in mathematics, so it is read
+    as that (in rad), with a note; with a declared unit `_with_unit` decides instead."""
+    if problem.unit or not isinstance(answer, str):
+        return None
+    match = _NUMBER_AND_UNIT.match(_DEGREE_SIGN.sub(" deg", answer))
+    unit = (match[2] or match[3] or "").strip() if match else ""
+    if not match or unit not in _DEGREES or unit in problem.by_name:
+        return None
+    return match[1], unit
+
+
 def _in_degrees(unit: str) -> bool:
     return any(name in _DEGREES for name in re.findall(r"[A-Za-z]+", unit))
 
@@ -249,6 +262,9 @@ def _check_one(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
             return answer
         if _in_degrees(with_unit[1]):
             note = f"{with_unit[0]} {with_unit[1]} is read as {float(answer):.6g} {problem.unit}."
+    elif (degrees := _angle_in_degrees(problem, answer)) is not None:
+        answer = f"({degrees[0]})*pi/180"
+        note = f"{degrees[0]} {degrees[1]} is read as {degrees[0]}·π/180 rad."
     if isinstance(answer, str) and problem.unit:
         answer = strip_unit(answer, problem.unit)
     got = read_single(problem, answer, "expression", "x")
@@ -280,7 +296,7 @@ def _check_one(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
         if problem.imaginary_unit or points.complex_values
         else problem.catalogue.match_plain(problem.catalogue.expression_mutants, ans, points)
     )
-    return incorrect(
+    verdict = incorrect(
         "expression",
         got,
         mutant,
@@ -291,3 +307,4 @@ def _check_one(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
         values_text(problem, points, out, ans, ref, "answer", unit_text(problem.unit)),
         reference=ref,
     )
+    return replace(verdict, feedback=(*verdict.feedback, note)) if note else verdict

@@ -232,6 +232,16 @@ class Lines:
         ]
 
 
+#: How `Lines.feedback` begins its sentence on a line that does not parse.
+_UNREADABLE_LINE = re.compile(r"Line \d+ could not be read: ")
+
+
+def is_unreadable_line(sentence: str) -> bool:
+    """Whether a verdict's feedback sentence is `Lines.feedback`'s on an unreadable line: for a
+    caller that must refuse such an answer rather than grade it (PrairieLearn's format errors)."""
+    return _UNREADABLE_LINE.match(sentence) is not None
+
+
 def read_lines(items: Sequence[Any], reader: Callable[[Any], Read | list[Read]]) -> Lines:
     """The one place a list of answer lines is parsed: each item (`items.list_items`) by
     `reader`, a line that does not parse set aside as Unreadable so that the others are still
@@ -314,6 +324,29 @@ def reading_notes() -> Iterator[list[str]]:
         _notes.reset(token)
 
 
+_heard: ContextVar[list[str] | None] = ContextVar("heard_notes", default=None)
+
+
+@contextmanager
+def heard_notes() -> Iterator[list[str]]:
+    """Collect, while the block runs, the reading notes of each part judged in it, whatever
+    its verdict: a preview shows how an answer is read before anyone says whether it is right,
+    so a note there tells nothing about the verdict (the verdict's feedback keeps them only on
+    a wrong answer: `with_notes`)."""
+    token = _heard.set([])
+    try:
+        yield _heard.get()  # type: ignore[misc]
+    finally:
+        _heard.reset(token)
+
+
+def hear(notes: list[str]) -> None:
+    """Pass a judged part's reading notes to an enclosing `heard_notes`, if any."""
+    heard = _heard.get()
+    if heard is not None:
+        heard += [n for n in notes if n not in heard]
+
+
 def read_parsed(problem: Problem, parsed) -> Read:
     notes = _notes.get()
     if notes is not None:
@@ -336,13 +369,22 @@ def read_parsed(problem: Problem, parsed) -> Read:
 
 
 _LABEL = re.compile(r"^\s*([A-Za-z][A-Za-z0-9_]*)\s*=")
+#: A label with its arguments, as textbooks write it: `L(theta, theta_dot) = …`.
+_LABEL_WITH_ARGUMENTS = re.compile(r"^\s*([A-Za-z][A-Za-z0-9_]*)\s*\([^()=]*\)\s*=")
+#: Names a student writes for an arbitrary additive constant (`L = T - V + const`).
+ADDITIVE_CONSTANTS = ("const", "constant")
 
 
 def read_labelled(problem: Problem, item: Any, extra_labels: Sequence[str] = ()) -> Read:
     """An expression that may be written `name = expression` (p_x = …, h = …, L = …): the name
     is dropped. `expression = const` is accepted too."""
-    labels = [n for n in [*extra_labels, "const", "constant"] if n not in problem.by_name]
+    labels = [n for n in [*extra_labels, *ADDITIVE_CONSTANTS] if n not in problem.by_name]
     if isinstance(item, str):
+        called = _LABEL_WITH_ARGUMENTS.match(item)
+        if called and called.group(1) in extra_labels:
+            # `L(theta, theta_dot) = …` is `L = …`, its arguments blanked so carets stay put
+            name = called.group(1)
+            item = name + " " * (called.end() - len(name) - 1) + "=" + item[called.end() :]
         m = _LABEL.match(item)
         if m and m.group(1) not in problem.by_name and m.group(1) not in labels:
             labels.append(m.group(1))
@@ -351,9 +393,29 @@ def read_labelled(problem: Problem, item: Any, extra_labels: Sequence[str] = ())
         return got
     if got.label is not None:  # a name for the quantity (h = …, even when h is a parameter:
         return got.only_rhs()  # "parameter = expression" says nothing)
-    if got.rhs_label in ("const", "constant"):
+    if got.rhs_label in ADDITIVE_CONSTANTS:
         return got.only_lhs()
     raise not_labelled(item)
+
+
+def without_additive_constant(problem: Problem, got: Read) -> Read:
+    """`got` with an arbitrary additive constant (`+ const`) set to zero, for the parts defined
+    up to one (a Lagrangian, a potential): it changes no motion. A `const` that is not simply
+    added (`const*x`) is left, and the evaluator says it has no value. The item's symbols (from
+    its tree) tell whether there is one; only then is its sympy form built."""
+    constants = [
+        symbol
+        for symbol in got.symbols
+        if str(symbol) in ADDITIVE_CONSTANTS and str(symbol) not in problem.by_name
+    ]
+    if not constants:
+        return got
+    expr = got.expr
+    for symbol in constants:
+        slope = expr.diff(symbol)
+        if slope != 0 and not slope.free_symbols:
+            expr = expr.subs(symbol, 0)
+    return got if expr is got.expr else Read(expr, None, got.echo)
 
 
 def not_labelled(item: Any) -> ParseError:

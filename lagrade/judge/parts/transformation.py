@@ -29,13 +29,26 @@ from lagrade.notation.printer import plain
 
 
 def check_transformation(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
+    return transformation_positions(problem, answer)[0]
+
+
+def transformation_positions(problem: Problem, answer: Any) -> tuple[Verdict, dict[str, sp.Expr]]:
+    """The verdict on a transformation answer, and the positions it gives when it is right
+    (`x_bob` → its expression, a rigid body's `phi_wheel` too: the student's own coordinates;
+    empty when the verdict is not `correct`)."""
+    positions: dict[str, sp.Expr] = {}
+    verdict = _judged(problem, answer, positions)
+    return verdict, (positions if verdict.status == "correct" else {})
+
+
+def _judged(problem: Problem, answer: Any, given_pos: dict[str, sp.Expr]) -> Verdict:
+    """The transformation check; fills `given_pos` with the positions the answer gives."""
     v = problem.variant
     if v is None:
         raise RequestError(NEEDS_BODIES)
     required = list(v.transformation)
     optional = [f"z_{b.name}" for b in v.bodies if b.planar and f"z_{b.name}" not in required]
     labels = required + optional
-    given_pos: dict[str, sp.Expr] = {}
 
     def read_line(item: Any) -> Read:
         got = read(problem, item, labels, "answer")
