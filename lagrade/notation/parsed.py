@@ -125,8 +125,9 @@ class Parsed:
         lhs, rhs, equation = self.sides
         if rhs is None and equation:
             zero = Node("num", 0, 0, (0, 1), True)
-            return typeset.mathml((lhs, zero), "0", coordinates)
-        return typeset.mathml((lhs,) if rhs is None else (lhs, rhs), self.text, coordinates)
+            return typeset.mathml((lhs, zero), self.text, coordinates, self.plain())
+        sides = (lhs,) if rhs is None else (lhs, rhs)
+        return typeset.mathml(sides, self.text, coordinates, self.plain())
 
     def __repr__(self) -> str:
         return f"Parsed({self.source!r}, echo={self.echo!r})"

@@ -40,13 +40,20 @@ def latex(node: Any, text: str) -> str:
     return _Latex(text).render(node)[0]
 
 
-def mathml(sides: Iterable[Any], text: str, coordinates: Iterable[str] = ()) -> Markup:
+def mathml(
+    sides: Iterable[Any], text: str, coordinates: Iterable[str] = (), alternative: str = ""
+) -> Markup:
     """A complete `<math>` element for the sides of an answer (one side, or lhs and rhs of an
-    equation), safe to put in HTML."""
+    equation), safe to put in HTML; `alternative` is its text for a screen reader (the plain
+    echo, as `printer.mathml` gives every formula its plain text)."""
     writer = _MathML(text, tuple(coordinates))
     rows = [writer.render(side)[0] for side in sides]
     inner = "<mo>=</mo>".join(rows)
-    return Markup(f'<math xmlns="{_MATHML_NS}" display="inline"><mrow>{inner}</mrow></math>')
+    label = escape(alternative, quote=True)
+    return Markup(
+        f'<math xmlns="{_MATHML_NS}" display="inline" aria-label="{label}"><mrow>{inner}</mrow>'
+        "</math>"
+    )
 
 
 class _Writer:

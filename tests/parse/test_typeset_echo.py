@@ -57,9 +57,17 @@ def test_latex_examples(text, latex):
 
 
 def test_a_bare_equation_reads_equal_to_zero():
-    parsed = parse_equation("m x_ddot + m g", VOCAB)
-    assert parsed.latex().endswith("= 0")
-    assert str(parsed.mathml(COORDINATES)).endswith("<mo>=</mo><mn>0</mn></mrow></math>")
+    parsed = parse_equation("2.5 m x_ddot + m g", VOCAB)
+    assert parsed.latex() == r"2.5 \cdot m \cdot \ddot{x} + m \cdot g = 0"
+    shown = str(parsed.mathml(COORDINATES))
+    assert shown.startswith("<math") and "<mn>2.5</mn>" in shown  # the decimal as typed
+    assert shown.endswith("<mo>=</mo><mn>0</mn></mrow></math>")
+
+
+def test_the_mathml_says_the_plain_echo_to_a_screen_reader():
+    parsed = parse_answer("m g l (1 - cos theta)", VOCAB)
+    root = ET.fromstring(str(parsed.mathml(COORDINATES)))
+    assert root.get("aria-label") == parsed.plain() == "m*g*l*(1 - cos(theta))"
 
 
 def test_the_imaginary_unit_as_spelled_is_escaped():
@@ -165,7 +173,9 @@ def test_typeset_echo_is_well_formed(text):
     parsed = _read(text)
     if parsed is None:
         return
-    _check_mathml(str(parsed.mathml(COORDINATES)))
+    markup = str(parsed.mathml(COORDINATES))
+    _check_mathml(markup)
+    assert ET.fromstring(markup).get("aria-label") == parsed.plain()
     _check_latex(parsed.latex())
 
 
