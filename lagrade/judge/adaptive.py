@@ -17,7 +17,7 @@ import numpy as np
 import sympy as sp
 
 import lagrade.judge.evaluate as ev
-from lagrade.judge import modular
+import lagrade.judge.modular as modular
 from lagrade.judge.evaluate.program import is_integer
 from lagrade.judge.exact import Domains, sorted_symbols
 from lagrade.judge.sampling import WIDEN

@@ -181,7 +181,7 @@ def _same_dynamics_notes(problem: Problem, answer: Compiled, match, points: Poin
 
 def check_lagrangian(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
     got = without_additive_constant(problem, read_single(problem, answer, "lagrangian", "L"))
-    tree = got.compiled is not got.sympy_compiled
+    tree = got.from_tree
     judged = judge_lagrangian(problem, got.compiled, diagnose=not tree)
     if judged[0] != "correct" and tree:  # a wrong answer's feedback reads its sympy form
         judged = judge_lagrangian(problem, got.sympy_compiled)

@@ -39,7 +39,7 @@ def check_eom(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
     lines = read_lines(list_items(answer, "eom"), read_line)
     if not lines.reads:
         return invalid("eom", "Give one equation of motion per coordinate.")
-    tree = any(r.compiled is not r.sympy_compiled for r in lines.reads)
+    tree = any(r.from_tree for r in lines.reads)
     verdict = _judge(problem, lines, [r.compiled for r in lines.reads], given, not tree)
     if verdict is None:  # wrong: the feedback reads the sympy forms (`Read.sympy_compiled`)
         verdict = _judge(problem, lines, [r.sympy_compiled for r in lines.reads], given)

@@ -138,6 +138,12 @@ class Read:
         return self._compiled
 
     @property
+    def from_tree(self) -> bool:
+        """Whether `compiled` is the tree's own program, not the sympy form's: asked without
+        building the sympy form (`compiled is not sympy_compiled` would build it)."""
+        return self.compiled is not self._sympy_compiled
+
+    @property
     def sympy_compiled(self) -> Compiled:
         """The item compiled from its sympy form: what the feedback on a wrong answer reads, so
         that the point it quotes and the numbers it shows are those the sympy form gives (the
@@ -403,6 +409,8 @@ def without_additive_constant(problem: Problem, got: Read) -> Read:
     up to one (a Lagrangian, a potential): it changes no motion. A `const` that is not simply
     added (`const*x`) is left, and the evaluator says it has no value. The item's symbols (from
     its tree) tell whether there is one; only then is its sympy form built."""
+    if not any(name in str(got.echo) for name in ADDITIVE_CONSTANTS):  # the usual case, at once
+        return got
     constants = [
         symbol
         for symbol in got.symbols
