@@ -94,9 +94,10 @@ def _product(factors: list, text: str) -> str:
     for k, factor in enumerate(factors):
         if factor.kind == "inv":
             pieces.append("/" + _at_least(factor.value, text, _POWER))
-        elif k == 0 and factor.kind == "neg" and factor.value.kind == "add":
+        elif k == 0 and factor.kind == "neg" and factor.value.kind in ("add", "neg", "mul"):
             # `(-(a + b))*c` is not `-(a + b)*c` once read: sympy distributes the sign over the
-            # sum in the first and not in the second, so the echo would read back differently.
+            # sum in the first and not in the second, so the echo would read back differently;
+            # and `-(-q)*q` reads back as -((-q)*q), another tree from (-(-q))*q.
             pieces.append(f"({_render(factor, text)[0]})")
         elif k == 0:
             pieces.append(_at_least(factor, text, _SIGNED))
