@@ -17,7 +17,9 @@ import numpy as np
 import sympy as sp
 
 import lagrade.judge.evaluate as ev
-from lagrade.judge.exact import Domains, ExactRational, sorted_symbols
+import lagrade.judge.modular as modular
+from lagrade.judge.evaluate.program import is_integer
+from lagrade.judge.exact import Domains, sorted_symbols
 from lagrade.judge.sampling import WIDEN
 from lagrade.mechanics.domains import REAL
 
@@ -51,7 +53,7 @@ def compile_pair(answer: sp.Expr, reference: sp.Expr) -> ev.Program | None:
 
 
 def has_imaginary_unit(program: ev.Program) -> bool:
-    return any(instr[0] == "const" and instr[1] is sp.I for instr in program.code)
+    return any(instr[0] == "const" and instr[1] is ev.I for instr in program.code)
 
 
 def _as_array(values, n: int) -> np.ndarray:
@@ -86,13 +88,21 @@ def sampled_pair(
     if program is None:
         return None
     symbols = sorted_symbols(answer, reference)
+    got = sampled_program(program, symbols, ranges_of, n, seed, complex_values)
+    return None if got is None else (program, symbols, got)
+
+
+def sampled_program(
+    program: ev.Program, symbols, ranges_of, n: int, seed: int, complex_values: bool = False
+) -> tuple | None:
+    """(a, b, env) of a compiled pair at n points where the reference has a value (see
+    `sampled_pair`), or None."""
     rng = np.random.default_rng(seed)
-    got = None
     for widen in WIDEN:  # the physical scale first; farther out only where nothing is defined
         got = usable_points(program, symbols, ranges_of(symbols, widen), n, rng, 2, complex_values)
         if got is not None:
-            break
-    return None if got is None else (program, symbols, got)
+            return got
+    return None
 
 
 def usable_points(
@@ -230,7 +240,7 @@ def _bounded_run(program: ev.Program, env: Mapping, B) -> list[tuple]:
             vals.append((f, (abs(x) * ey + abs(y) * ex) / (x * x + y * y) + 2 * abs(f)))
         else:
             name, (x, ex) = instr[1], vals[instr[2]]
-            f = ev._apply(B, name, x)
+            f = ev.apply(B, name, x)
             d = _DERIVATIVE[name](B, x, f)
             vals.append((f, abs(d) * ex + 2 * abs(f)))
     return [vals[k] for k in program.outputs]
@@ -243,16 +253,19 @@ _SAFETY = 64.0
 @dataclass(frozen=True)
 class ExactThenAdaptive:
     """The study's proposal for the default, built because no measured method was both never
-    wrong and fast: exact evaluation (`ExactRational`) where the expressions allow it, otherwise
-    numbers whose rounding is bounded, with precision raised only where the bound cannot decide.
+    wrong and fast: exact evaluation where the expressions allow it, otherwise numbers whose
+    rounding is bounded, with precision raised only where the bound cannot decide.
 
-    1. float64 at `points` points in the declared domains, each value with a running error bound
-       E (see `_bounded_run`): |a − b| > 64 E u means the answers differ — most wrong answers stop
-       here, in microseconds. (The bound follows cancellation inside the expression, so a true
-       identity that loses digits in float64 is not rejected.)
-    2. Otherwise, if the pair is a rational function of symbols and of trig of their
-       combinations, the exact test decides.
-    3. Otherwise mpmath at 50, 100, 200 digits on `confirm` of the points: different as soon as
+    1. If the pair is a rational function of symbols and of trig of their rational
+       combinations, the exact test decides, modulo two large primes (`modular`): a few
+       microseconds per instruction, whatever the size of the numbers.
+    2. Otherwise float64 at `points` points in the declared domains, each value with a running
+       error bound E (see `_bounded_run`): |a − b| > 64 E u means the answers differ — most wrong
+       answers stop here, in microseconds. (The bound follows cancellation inside the expression,
+       so a true identity that loses digits in float64 is not rejected.)
+    3. Where roots, non-integer powers or logarithms make complex values possible, the answers
+       must agree on principal branches too (`_differ_on_branches`).
+    4. Otherwise mpmath at 50, 100, 200 digits on `confirm` of the points: different as soon as
        |a − b| exceeds the bound, equal once the bound is below 10^-(digits/2) of the values and
        |a − b| within it (a difference that small at every point is no student's answer), and
        equal at 200 digits if still within the bound.
@@ -264,9 +277,23 @@ class ExactThenAdaptive:
     name: str = "exact_then_adaptive"
 
     def decide(self, answer, reference, domains) -> bool | None:
-        sampled = sampled_pair(
-            answer,
-            reference,
+        """The verdict on two sympy expressions (None: these methods cannot judge them)."""
+        try:
+            a, b = ev.compile_program([answer]), ev.compile_program([reference])
+        except ev.UnsupportedExpression:
+            return None
+        return self.decide_programs(a, b, domains)
+
+    def decide_programs(self, answer: ev.Program, reference: ev.Program, domains) -> bool | None:
+        """The verdict on two compiled expressions (one output each)."""
+        pair = answer.joined(reference)
+        exact = modular.identical(pair, self.seed)
+        if exact is not None:
+            return exact
+        symbols = sorted(pair.symbols, key=lambda s: s.name)
+        sampled = sampled_program(
+            pair,
+            symbols,
             lambda s, w=1.0: sample_ranges(s, domains, w),
             self.points,
             self.seed,
@@ -274,24 +301,21 @@ class ExactThenAdaptive:
         )
         if sampled is None:
             return None
-        program, symbols, (_, b_float, env) = sampled
+        _a, b_float, env = sampled
         n = len(next(iter(env.values()))) if env else 1
         # where the reference is complex, its values are compared in complex arithmetic
-        real = np.all(np.isfinite(b_float)) and not has_imaginary_unit(program)
+        real = np.all(np.isfinite(b_float)) and not has_imaginary_unit(pair)
         backend = ev.FLOAT if real else ev.COMPLEX
         with np.errstate(all="ignore"):
-            (a, ea), (b, eb) = _bounded_run(program, env, backend)
+            (a, ea), (b, eb) = _bounded_run(pair, env, backend)
         a, b = _as_array(a, n), _as_array(b, n)
         bound = _SAFETY * np.finfo(float).eps * (as_float_array(ea, n) + as_float_array(eb, n))
         finite = np.isfinite(a) & np.isfinite(b) & np.isfinite(bound)
         with np.errstate(all="ignore"):  # inf − inf where both are past float range
             if np.any(finite & (np.abs(a - b) > bound)):
                 return False
-        if _has_branches(program) and _differ_on_branches(program, symbols, domains, self.seed):
+        if _has_branches(pair) and _differ_on_branches(pair, symbols, domains, self.seed):
             return False
-        exact = ExactRational(seed=self.seed).decide(answer, reference, domains, program)
-        if exact is not None:
-            return exact
         order = np.argsort(finite, kind="stable")  # points the float test left open first
         chosen = order[: max(self.confirm, int(np.count_nonzero(~finite)))]
         return _adaptive_mp(answer, reference, symbols, env, chosen)
@@ -310,7 +334,7 @@ def _has_branches(program: ev.Program) -> bool:
     """Whether the program takes a root, a non-integer or variable power, or a logarithm-like
     function: only then can complex values differ where real ones agree or do not exist."""
     for instr in program.code:
-        if instr[0] == "powe" or (instr[0] == "powc" and not instr[2].is_integer):
+        if instr[0] == "powe" or (instr[0] == "powc" and not is_integer(instr[2])):
             return True
         if instr[0] == "fn" and instr[1] in _BRANCHED:
             return True
@@ -379,9 +403,8 @@ def _mp_bounded(program: ev.Program, values: Mapping) -> tuple:
         return mpmath.mpf("nan"), mpmath.mpf("nan")
 
 
-def _adaptive_mp(answer: sp.Expr, reference: sp.Expr, symbols, env, chosen) -> bool:
+def _adaptive_mp(prog_a: ev.Program, prog_b: ev.Program, symbols, env, chosen) -> bool:
     """Decide at the chosen points in mpmath, raising the precision while the bound cannot."""
-    prog_a, prog_b = ev.compile_program([answer]), ev.compile_program([reference])
     for i in chosen:
         point = {s: float(env[s][i]) for s in symbols}
         for digits in (50, 100, 200):

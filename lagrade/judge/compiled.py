@@ -23,21 +23,42 @@ from lagrade.judge.evaluate import (
 )
 
 
-@dataclass(frozen=True)
 class Compiled:
     """An expression compiled by top-level terms: its value is their sum, its size the sum of
-    their absolute values."""
+    their absolute values. `expr`, the sympy form, is given or built on first use (an answer
+    compiled from the parser's tree needs it only for a diagnosis)."""
 
-    expr: sp.Expr
-    program: Program
+    __slots__ = ("program", "_expr", "_whole")
+
+    def __init__(self, expr: sp.Expr | Callable[[], sp.Expr], program: Program):
+        self.program = program
+        self._expr = expr
+        self._whole: Program | None = None
 
     @classmethod
     def of(cls, expr: sp.Expr) -> Compiled:
         return cls(expr, compile_program(top_terms(sp.S(expr))))
 
     @property
+    def expr(self) -> sp.Expr:
+        if callable(self._expr) and not isinstance(self._expr, sp.Basic):
+            self._expr = self._expr()
+        return self._expr  # type: ignore[return-value]
+
+    @property
     def symbols(self) -> frozenset[sp.Symbol]:
         return self.program.symbols
+
+    @property
+    def whole(self) -> Program:
+        """The expression as one output: the sum of the terms."""
+        if self._whole is None:
+            code, outputs = self.program.code, self.program.outputs
+            if len(outputs) == 1:
+                self._whole = self.program
+            else:
+                self._whole = Program((*code, ("add", outputs)), (len(code),), self.program.symbols)
+        return self._whole
 
     def values(self, env: Mapping, backend=FLOAT) -> tuple[np.ndarray, np.ndarray]:
         """(value, size) at the points of env."""

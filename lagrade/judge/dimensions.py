@@ -338,16 +338,18 @@ def _with_name(dim: Dim) -> str:
     return unit_text(dim) + (f", {name}" if name else "")
 
 
-def hint_for(problem, expr: sp.Expr, expected: str = "") -> str:
-    """The dimension hint for an answer to `problem` (a `Problem`): its terms are the top-level
-    terms of expr (lhs − rhs for an equation), `expected` what it is — "energy" (L, V),
-    "kinetic" (T), "equation" (a force or torque per coordinate), "momentum:k" (of coordinate
-    k); "" without a hint. In L and V, what changes no motion is no term to check: a
-    constant, and terms that add up to a total time derivative dF/dt (whatever F's
-    dimension): a right answer may add either."""
+def hint_for(problem, answer, expected: str = "") -> str:
+    """The dimension hint for an answer to `problem` (a `Problem`), a sympy expression or a read
+    answer (whose sympy form is built only when the question has units): its terms are the
+    top-level terms of the expression (lhs − rhs for an equation), `expected` what it is —
+    "energy" (L, V), "kinetic" (T), "equation" (a force or torque per coordinate),
+    "momentum:k" (of coordinate k); "" without a hint. In L and V, what changes no motion
+    is no term to check: a constant, and terms that add up to a total time derivative dF/dt
+    (whatever F's dimension): a right answer may add either."""
     known = dimensions_of(problem)
     if not known:
         return ""
+    expr = answer if isinstance(answer, sp.Basic) else answer.expr  # a Read: built only now
     terms = list(sp.Add.make_args(expr))
     harmless: Callable[[list[sp.Expr]], bool] = lambda odd: False  # noqa: E731
     if expected == "energy":

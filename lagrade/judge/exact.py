@@ -230,8 +230,8 @@ def exact_work(program: ev.Program, bits: Mapping[sp.Basic, tuple[int, int]]) ->
         elif op == "const":
             value = instr[1]
             num, q = (
-                (abs(int(value.p)), int(value.q))
-                if isinstance(value, sp.Rational)
+                (abs(value.numerator), value.denominator)
+                if isinstance(value, Fraction)
                 else (2**64, 2**64)
             )
             size = (num.bit_length(), {("const", q): q.bit_length()} if q != 1 else {})
@@ -273,8 +273,8 @@ def _small(program: ev.Program, bits: Mapping[sp.Basic, tuple[int, int]]) -> boo
         elif op == "const":
             value = instr[1]
             size = (
-                int(abs(value.p)).bit_length() + int(value.q).bit_length()
-                if isinstance(value, sp.Rational)
+                abs(value.numerator).bit_length() + value.denominator.bit_length()
+                if isinstance(value, Fraction)
                 else 128
             )
         elif op in ("add", "mul"):
@@ -385,10 +385,10 @@ class _FractionBackend:
     never reaches it (`_RATIONAL_OPS`)."""
 
     @staticmethod
-    def const(value: sp.Expr) -> Fraction:
-        if not isinstance(value, sp.Rational):
+    def const(value: ev.Constant) -> Fraction:
+        if not isinstance(value, Fraction):
             raise _OutOfScope(f"constant {value}")
-        return Fraction(int(value.p), int(value.q))
+        return value
 
 
 def _exact_values(program, env: Mapping) -> list[Fraction] | None:

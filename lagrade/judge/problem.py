@@ -105,6 +105,16 @@ class Problem:
         table = self.vocabulary()._lexicon.table
         return all(table[n].value is s for n, s in self.by_name.items() if n in table)
 
+    @cached_property
+    def renaming(self) -> dict[sp.Symbol, sp.Symbol]:
+        """The parser's symbols → this problem's, where they differ (`canonical` for a tree)."""
+        table = self.vocabulary()._lexicon.table
+        return {
+            table[n].value: s
+            for n, s in self.by_name.items()
+            if n in table and table[n].value is not s and getattr(table[n].value, "is_Symbol", 0)
+        }
+
     def canonical(self, expr: sp.Expr) -> sp.Expr:
         """expr with every symbol replaced by this problem's symbol of the same name (the parser
         and the bank agree on symbols; this guards against a mismatch of assumptions)."""

@@ -18,7 +18,7 @@ from lagrade.notation.build import TUPLE_ARGUMENTS
 
 # Binding strength: a sub-expression is bracketed when it binds more loosely than its place needs.
 _SUM, _PRODUCT, _SIGNED, _POWER, _ATOM = range(5)
-_DECIMAL = re.compile(r"\d+\.?\d*(?:[eE][+-]?\d+)?|\.\d+(?:[eE][+-]?\d+)?")
+DECIMAL = re.compile(r"\d+\.?\d*(?:[eE][+-]?\d+)?|\.\d+(?:[eE][+-]?\d+)?")
 
 
 def echo(node: Any, text: str) -> str:
@@ -40,7 +40,7 @@ def _render(node: Any, text: str) -> tuple[str, int]:
     if kind == "mul":
         return _product(node.value, text), _PRODUCT
     if kind == "neg":
-        return "-" + _at_least(node.value, text, _PRODUCT), _SIGNED
+        return "-" + _negated(node.value, text), _SIGNED
     if kind == "pow":
         base = _at_least(node.value, text, _ATOM)
         exponent = _at_least(node.extra, text, _ATOM)
@@ -61,11 +61,18 @@ def _at_least(node: Any, text: str, strength: int) -> str:
     return shown if own >= strength else f"({shown})"
 
 
+def _negated(node: Any, text: str) -> str:
+    """What a minus sign stands before: bracketed where it binds more loosely than a product,
+    or where it begins with a minus of its own (`-(-x*y)`: `--x*y` would read as -((-(-x))*y))."""
+    shown, own = _render(node, text)
+    return f"({shown})" if own < _PRODUCT or shown.startswith("-") else shown
+
+
 def _number(node: Any, text: str) -> tuple[str, int]:
     """A number as written (9.81, 1.6e-19, 1E100), else p or p/q (from a translation)."""
     p, q = node.value
     written = text[node.start : node.end].strip("() \t")
-    if _DECIMAL.fullmatch(written):
+    if DECIMAL.fullmatch(written):
         return written, _ATOM
     return (str(p), _ATOM) if q == 1 else (f"{p}/{q}", _PRODUCT)
 
@@ -74,7 +81,7 @@ def _sum(terms: list, text: str) -> str:
     pieces = []
     for k, term in enumerate(terms):
         if term.kind == "neg":
-            inner = _at_least(term.value, text, _PRODUCT)
+            inner = _negated(term.value, text)
             pieces.append(f"-{inner}" if k == 0 else f" - {inner}")
         else:
             shown = _render(term, text)[0]
@@ -87,9 +94,10 @@ def _product(factors: list, text: str) -> str:
     for k, factor in enumerate(factors):
         if factor.kind == "inv":
             pieces.append("/" + _at_least(factor.value, text, _POWER))
-        elif k == 0 and factor.kind == "neg" and factor.value.kind == "add":
+        elif k == 0 and factor.kind == "neg" and factor.value.kind in ("add", "neg", "mul"):
             # `(-(a + b))*c` is not `-(a + b)*c` once read: sympy distributes the sign over the
-            # sum in the first and not in the second, so the echo would read back differently.
+            # sum in the first and not in the second, so the echo would read back differently;
+            # and `-(-q)*q` reads back as -((-q)*q), another tree from (-(-q))*q.
             pieces.append(f"({_render(factor, text)[0]})")
         elif k == 0:
             pieces.append(_at_least(factor, text, _SIGNED))

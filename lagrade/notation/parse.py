@@ -23,7 +23,8 @@ from lagrade.notation.grammar import Parser
 from lagrade.notation.latex import translate
 from lagrade.notation.lexer import Source, normalise
 from lagrade.notation.limits import MAX_LENGTH, MAX_TOTAL_LENGTH
-from lagrade.notation.parsed import Parsed
+from lagrade.notation.parsed import Parsed, Tree
+from lagrade.notation.screen import needs_sympy
 from lagrade.notation.vocabulary import Vocabulary
 
 __all__ = [
@@ -64,17 +65,35 @@ def _parse_source(src: Source, vocabulary: Vocabulary, latex: bool | None, mode:
     if latex:  # LaTeX sets a product of single letters as a run of them (\frac{GMm}{r})
         parser.tokens = parser.split_letter_runs(parser.tokens)
     lhs_node, rhs_node = parser.parse_answer(mode)
+    shown = _echo(lhs_node, src.text)
+    if rhs_node is not None:
+        shown += " = " + _echo(rhs_node, src.text)
+    elif mode == "equation":
+        shown += " = 0"
+    found = frozenset(parser.found)
+    imaginary = lexicon.imaginary_unit is not None
+    if not needs_sympy((lhs_node, rhs_node), imaginary):  # sympy would refuse nothing: later
+        tree = Tree(lhs_node, rhs_node, mode == "equation")
+        return Parsed.unbuilt(
+            src.original,
+            tree,
+            found,
+            parser.warnings,
+            shown,
+            lambda node: build(node, src),
+            src.text,
+        )
     lhs = build(lhs_node, src)
     rhs = build(rhs_node, src) if rhs_node is not None else None
     if mode == "equation" and rhs is None:
         rhs = sp.S.Zero
     for side, node in ((lhs, lhs_node), (rhs, rhs_node)):
         if side is not None:
-            check_finite(side, node, src, imaginary=lexicon.imaginary_unit is not None)
-    shown = _echo(lhs_node, src.text)
-    if rhs is not None:
-        shown += " = " + (_echo(rhs_node, src.text) if rhs_node is not None else "0")
-    return Parsed(src.original, lhs, rhs, frozenset(parser.found), tuple(parser.warnings), shown)
+            check_finite(side, node, src, imaginary=imaginary)
+    sides = Tree(lhs_node, rhs_node, mode == "equation")
+    return Parsed(
+        src.original, lhs, rhs, found, tuple(parser.warnings), shown, sides=sides, text=src.text
+    )
 
 
 def _guarded(

@@ -50,7 +50,7 @@ def dotted_latex(base: str, suffix: str) -> str:
     return _subscripted_latex(base, _DOTS[suffix][0])
 
 
-def _jet_name_latex(name: str) -> str:
+def jet_name_latex(name: str) -> str:
     """theta_dot → \\dot{\\theta}; x_M_ddot → \\ddot{x}_{M}; x_M → x_{M}: any name ending in
     _dot or _ddot is dotted, whether or not its base is a coordinate."""
     for suffix in (mech.DDOT, mech.DOT):
@@ -110,6 +110,12 @@ class _JetMathMLPrinter(MathMLPresentationPrinter):
         return msub
 
 
+def symbol_mathml(name: str, coordinates: Iterable[str] = ()) -> str:
+    """Presentation MathML of one symbol (no `<math>` around it), dotted where it is the
+    velocity or acceleration of one of `coordinates`: a name as `mathml` writes it."""
+    return _JetMathMLPrinter(coordinates).doprint(sp.Symbol(name))
+
+
 def latex(expr: sp.Basic, coordinates: Iterable[str] = ()) -> str:
     """LaTeX of `expr` with dotted velocities and accelerations."""
     return sp.latex(expr, symbol_names=symbol_names(coordinates))
@@ -151,7 +157,7 @@ def plain(expr: sp.Basic, order: str | None = None) -> str:
 def answer_latex(expr: sp.Basic) -> str:
     """A parsed answer in LaTeX, as a student's check: every velocity and acceleration dotted,
     and products shown with \\cdot so that an implicit multiplication is visible."""
-    names = {s: _jet_name_latex(s.name) for s in expr.free_symbols if isinstance(s, sp.Symbol)}
+    names = {s: jet_name_latex(s.name) for s in expr.free_symbols if isinstance(s, sp.Symbol)}
     return sp.latex(expr, symbol_names=names, mul_symbol="dot")
 
 

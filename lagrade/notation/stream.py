@@ -72,7 +72,8 @@ class TokenStream:
         return f"Missing ')': the '(' at position {self.column(opening.start)} is never closed."
 
     def operand_after(self, op: Token) -> None:
-        """After an operator, something must follow."""
+        """After an operator, something must follow: a term, a bracket, a sign, or outside
+        bars a '|' that opens an absolute value (`m + |x|`)."""
         tok = self.peek()
         if tok.kind == "end":
             self.fail(
@@ -80,7 +81,11 @@ class TokenStream:
                 op.start,
                 op.end,
             )
-        if tok.kind == "op" and tok.text not in ("(", "-"):
+        if (
+            tok.kind == "op"
+            and tok.text not in ("(", "-")
+            and not (tok.text == "|" and not self.bars)
+        ):
             self.fail(
                 f"Expected a term after '{op.text}' but found '{tok.text}'.", op.start, tok.end
             )

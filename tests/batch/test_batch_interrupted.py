@@ -90,12 +90,13 @@ def _zombie(pid: int) -> bool:
 def test_rerun_completes_an_interrupted_run(workspace, how):
     process = start(workspace)
     students = workspace / "grades" / "students"
-    done = wait_for_results(students, 3, process)
+    done = wait_for_results(students, 1, process)
     workers = children(process.pid)
     process.send_signal(how)
     process.wait(30)
     assert_gone(workers)  # a killed parent's workers do not live on as orphans
-    if done >= 12:
+    # a fast run can finish all 12 between the first result and the signal
+    if done >= 12 or (process.returncode == 0 and len(list(students.glob("*.json"))) >= 12):
         pytest.skip("the run finished before it could be interrupted")
     assert_no_partial_files(workspace / "grades")
     if how == signal.SIGINT:

@@ -20,6 +20,8 @@ VOCAB = Vocabulary.from_names(["x", "q"], {"m": "positive"})
         ("||x| - m|", "abs(abs(x) - m)"),
         ("|x| |q|", "abs(x)*abs(q)"),
         ("|sin x|", "abs(sin(x))"),
+        ("m + |x|", "m + abs(x)"),  # after an operator, outside bars, '|' opens (was refused)
+        ("m*|x| - |q|/m", "m*abs(x) - abs(q)/m"),
     ],
 )
 def test_bars_read_as_abs(text, echo):

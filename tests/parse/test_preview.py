@@ -10,7 +10,7 @@ def test_preview_of_a_good_answer() -> None:
     assert status == 0
     assert text.splitlines() == [
         "Interpreted as: 1/2*m*R^2*theta_dot^2",
-        "LaTeX:          \\frac{R^{2} \\cdot m \\cdot \\dot{\\theta}^{2}}{2}",
+        "LaTeX:          \\frac{1}{2} \\cdot m \\cdot R^{2} \\cdot \\dot{\\theta}^{2}",
         "Symbols found:  R, m, theta_dot",
         "Warning: the coordinate phi does not appear (nor its velocity).",
     ]

@@ -66,6 +66,10 @@ def test_preview_shows_the_reading_as_mathml(served):
     (line,) = result["lines"]
     assert line["plain"].startswith("1/2*m*l^2*theta_dot^2")
     assert line["mathml"].startswith("<math") and "<mover" in line["mathml"]  # θ with a dot
+    # typeset in the student's order with every product dotted (issue 29), not sympy's g·l·m…
+    dot = "<mo>&#183;</mo>"
+    assert line["mathml"].index("<mfrac>") < line["mathml"].index("<mi>g</mi>")
+    assert f"<mi>m</mi>{dot}<mi>g</mi>{dot}<mi>l</mi>{dot}<mrow><mi>cos</mi>" in line["mathml"]
     status, result = post(url, {"problem": 1, "key": "lagrangian", "text": r"\frac{1}{2} m"})
     assert result["status"] == "read"
     status, result = post(url, {"problem": 1, "key": "lagrangian", "text": "m (g"})

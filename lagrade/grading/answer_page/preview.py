@@ -11,15 +11,12 @@ from __future__ import annotations
 from collections.abc import Mapping
 from typing import Any
 
-import sympy as sp
-
 from lagrade.errors import LagradeError, ParseError
 from lagrade.grading.batch import grade_part, question
 from lagrade.grading.manifest import entry_spec
 from lagrade.grading.rubric import Rubric
 from lagrade.judge.parts.reading import heard_notes
 from lagrade.notation.parse import parse_answer
-from lagrade.notation.printer import mathml
 
 #: Seconds one preview may take (a preview is asked at every pause in typing).
 PREVIEW_TIME_LIMIT = 3.0
@@ -64,9 +61,10 @@ def timed_out() -> dict[str, Any]:
 
 
 def _mathml(entry: Mapping[str, Any], part: Mapping[str, Any], line: str) -> str:
-    """The echo of one read line typeset, or "" where it is not a formula (a list of names,
-    a number of degrees of freedom). The echo is the grader's own output in the plain grammar,
-    parsed again by the project's parser, never evaluated."""
+    """The echo of one read line typeset in the student's order, every product shown
+    (`lagrade.notation.typeset`), or "" where it is not a formula (a list of names, a number of
+    degrees of freedom). The echo is the grader's own output in the plain grammar, parsed again
+    by the project's parser, never evaluated."""
     if part["part"] in ("dof", "cyclic", "coordinates") or not line.strip():
         return ""
     spec = entry_spec(entry)
@@ -78,7 +76,6 @@ def _mathml(entry: Mapping[str, Any], part: Mapping[str, Any], line: str) -> str
             [part["quantity"]] if part.get("quantity") else []
         )
         parsed = parse_answer(line, problem.vocabulary(labels))
-        shown = parsed.lhs if parsed.rhs is None else sp.Eq(parsed.lhs, parsed.rhs, evaluate=False)
-        return str(mathml(shown, problem.coordinates))
+        return str(parsed.mathml(problem.coordinates))
     except (ParseError, LagradeError, ValueError, TypeError):
         return ""

@@ -37,7 +37,7 @@ def handout_numbers(problem: Problem, got: Read, reference: Compiled | None = No
     when the answer is the reference with their values put in (up to a constant), else those
     whose value (or its square: ω² = 64) the answer holds as a typed number. The sentence
     saying so, or nothing."""
-    syms = got.expr.free_symbols
+    syms = got.symbols
     used = reference.symbols if reference is not None else frozenset(problem.domains)
     left_out = [s for s, value in problem.values.items() if s in used and s not in syms and value]
     if not left_out:
@@ -82,7 +82,7 @@ def _is_reference_with_values(
     values = {s: sp.Float(problem.values[s]) for s in left_out if s != keep}
     points = problem.points("handout values")
     try:
-        answer = Compiled.of(got.expr)
+        answer = got.compiled
         plugged = Compiled.of(reference.expr.xreplace(values))
         with np.errstate(all="ignore"):
             a, sa = answer.values(points.env)
@@ -304,7 +304,7 @@ def incorrect(
     feedback.append(sentence + where_text(witness, problem, values) + ".")
     if problem is not None:
         expected = {"T": "kinetic", "V": "energy"}.get(part, "")
-        dimensions = hint_for(problem, got.expr, expected) if tells(mutant) else ""
+        dimensions = hint_for(problem, got, expected) if tells(mutant) else ""
         hints = [handout_numbers(problem, got, reference), dimensions]
         feedback += [hint for hint in hints if hint]
     mistakes = (mutant.kind,) if mutant is not None else ()

@@ -10,7 +10,6 @@ from collections.abc import Mapping, Sequence
 from typing import Any
 
 import numpy as np
-import sympy as sp
 
 from lagrade.judge.compiled import Compiled, to_length
 from lagrade.judge.decision import Outcome, decide
@@ -96,15 +95,18 @@ def check_conserved(problem: Problem, answer: Any, given: Mapping | None) -> Ver
     follows_all = not lines.unreadable  # an unreadable line follows from nothing
     for r in reads:
         label = r.echo
-        if has_acceleration(problem, r.expr):
+        if has_acceleration(problem, r):
             feedback.append(
                 f"{label} contains an acceleration; a conserved quantity is a function "
                 "of the coordinates, velocities and t."
             )
             mistakes.append("acceleration")
             continue
-        Q = Compiled.of(r.expr)
+        Q = r.compiled
         out, constant, grad = _conservation(problem, Q, points)
+        if not (out.equal or constant) and Q is not r.sympy_compiled:
+            Q = r.sympy_compiled  # the feedback reads the sympy form (`Read`)
+            out, constant, grad = _conservation(problem, Q, points)
         outcomes.append(out)
         if constant:
             feedback.append(
@@ -163,10 +165,9 @@ def check_conserved(problem: Problem, answer: Any, given: Mapping | None) -> Ver
     )
 
 
-def _conserved_by_own(problem: Problem, own: sp.Expr, Q: Compiled, points: Points) -> bool:
+def _conserved_by_own(problem: Problem, own_c: Compiled, Q: Compiled, points: Points) -> bool:
     """Follow-through: D_t Q = 0 along the motion of the student's own L (its accelerations
     from its own Euler–Lagrange equations), decided like the reference case."""
-    own_c = Compiled.of(own)
     jets = problem.jets
     try:
         with np.errstate(all="ignore"):

@@ -69,7 +69,7 @@ def check_cyclic(problem: Problem, answer: Any, given: Mapping | None) -> Verdic
     follows = False
     own = own_lagrangian(problem, given)
     if right < n and own is not None:
-        own_cyclic = {j.name for j in problem.jets if not sp.expand(own).has(j.q)}
+        own_cyclic = {j.name for j in problem.jets if not sp.expand(own.expr).has(j.q)}
         if own_cyclic == claimed and own_cyclic != truth:
             follows = True
             feedback.append(

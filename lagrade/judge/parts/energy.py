@@ -33,18 +33,24 @@ from lagrade.judge.parts.common import (
     where_text,
     witness_point,
 )
-from lagrade.judge.parts.reading import has_acceleration, read_single, without_additive_constant
+from lagrade.judge.parts.reading import (
+    decided,
+    has_acceleration,
+    read_single,
+    without_additive_constant,
+)
 from lagrade.judge.problem import Problem
 from lagrade.judge.sampling import Points
 from lagrade.judge.verdict import Verdict
 
 
 def judge_lagrangian(
-    problem: Problem, expr: sp.Expr
+    problem: Problem, expr: sp.Expr | Compiled, diagnose: bool = True
 ) -> tuple[str, float, list[str], Outcome, dict[str, float] | None, tuple[str, ...]]:
-    """(status, score, feedback, outcome, witness, mistakes) for a Lagrangian answer; the
-    witness is a point where the motion differs, when it does."""
-    answer = Compiled.of(expr)
+    """(status, score, feedback, outcome, witness, mistakes) for a Lagrangian answer (a sympy
+    expression, or compiled already); the witness is a point where the motion differs, when it
+    does. `diagnose=False`: a wrong answer's status alone, without feedback."""
+    answer = expr if isinstance(expr, Compiled) else Compiled.of(expr)
     points = problem.points("lagrangian")
     if has_acceleration(problem, answer):  # before E(L), which needs an L(q, q̇, t)
         return (
@@ -96,6 +102,8 @@ def judge_lagrangian(
             None,
             ("V_minus_T",),
         )
+    if not diagnose:
+        return ("incorrect", 0.0, [], out, None, ())
     feedback = []
     mistakes: tuple[str, ...] = ()
     mutant = problem.catalogue.match_lagrangian(answer, points, match.answer_el)
@@ -173,10 +181,14 @@ def _same_dynamics_notes(problem: Problem, answer: Compiled, match, points: Poin
 
 def check_lagrangian(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
     got = without_additive_constant(problem, read_single(problem, answer, "lagrangian", "L"))
-    status, score, feedback, out, witness, mistakes = judge_lagrangian(problem, got.expr)
+    tree = got.from_tree
+    judged = judge_lagrangian(problem, got.compiled, diagnose=not tree)
+    if judged[0] != "correct" and tree:  # a wrong answer's feedback reads its sympy form
+        judged = judge_lagrangian(problem, got.sympy_compiled)
+    status, score, feedback, out, witness, mistakes = judged
     if status != "correct":
         named = not mistakes or "missing_factor" in mistakes  # see dimensions.tells
-        dimensions = hint_for(problem, got.expr, "energy") if named else ""
+        dimensions = hint_for(problem, got, "energy") if named else ""
         hints = [handout_numbers(problem, got, problem.L), dimensions]
         feedback += [hint for hint in hints if hint]
     return Verdict(
@@ -193,9 +205,8 @@ def check_lagrangian(problem: Problem, answer: Any, given: Mapping | None) -> Ve
 
 def check_kinetic(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
     got = read_single(problem, answer, "T", "T")
-    answer_c = Compiled.of(got.expr)
     points = problem.points("T")
-    out = expressions_equal(answer_c, problem.kinetic, points)
+    out, answer_c = decided(got, lambda a: expressions_equal(a, problem.kinetic, points))
     if out.equal:
         return Verdict("T", "correct", 1.0, (), got.echo, method_name(out))
     mutant = problem.catalogue.match_plain(problem.catalogue.kinetic, answer_c, points)
@@ -214,10 +225,9 @@ def check_kinetic(problem: Problem, answer: Any, given: Mapping | None) -> Verdi
 
 def check_potential(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
     got = without_additive_constant(problem, read_single(problem, answer, "V", "V"))
-    answer_c = Compiled.of(got.expr)
     reference = problem.potential
     points = problem.points("V")
-    out = differ_by_constant(answer_c, reference, points)
+    out, answer_c = decided(got, lambda a: differ_by_constant(a, reference, points))
     if out.equal:
         notes = ()
         if not expressions_equal(answer_c, reference, points).equal:

@@ -7,7 +7,6 @@ from collections.abc import Mapping
 from typing import Any
 
 import numpy as np
-import sympy as sp
 
 from lagrade.judge.compiled import Compiled
 from lagrade.judge.decision import decide
@@ -38,15 +37,25 @@ def check_eom(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
         return read(problem, item, (), "equation" if isinstance(item, str) else "answer")
 
     lines = read_lines(list_items(answer, "eom"), read_line)
+    if not lines.reads:
+        return invalid("eom", "Give one equation of motion per coordinate.")
+    tree = any(r.from_tree for r in lines.reads)
+    verdict = _judge(problem, lines, [r.compiled for r in lines.reads], given, not tree)
+    if verdict is None:  # wrong: the feedback reads the sympy forms (`Read.sympy_compiled`)
+        verdict = _judge(problem, lines, [r.sympy_compiled for r in lines.reads], given)
+    return verdict  # type: ignore[return-value]
+
+
+def _judge(
+    problem: Problem, lines, compiled: list[Compiled], given: Mapping | None, diagnose=True
+) -> Verdict | None:
+    """The verdict on the equations read (`lines`), compiled; None for a wrong equation when
+    not `diagnose` (the verdict then needs its feedback, found another time)."""
     reads = lines.reads
     echoes = lines.echoes
     entry = [k for k, e in enumerate(lines.entries) if isinstance(e, Read)]  # read → position
     total = len(lines.entries)
     unreadable = bool(lines.unreadable)
-    if not reads:
-        return invalid("eom", "Give one equation of motion per coordinate.")
-    exprs = [sp.S(r.expr) for r in reads]
-    compiled = [Compiled.of(e) for e in exprs]
     jets = problem.jets
     n = len(jets)
     points = problem.points("eom")
@@ -79,6 +88,8 @@ def check_eom(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
         if out.equal:
             right.append(k)
             continue
+        if not diagnose:
+            return None
         wrong.append(k)
         witness = witness or witness_point(points, out, compiled[k])
         mutant = problem.catalogue.match_row(compiled[k], points)
@@ -98,7 +109,7 @@ def check_eom(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
                 )
                 + "."
             )
-        dimensions = hint_for(problem, exprs[k], "equation") if tells(mutant) else ""
+        dimensions = hint_for(problem, reads[k], "equation") if tells(mutant) else ""
         if dimensions:
             feedback.append(f"{label}: {dimensions[0].lower()}{dimensions[1:]}")
     rank = row_rank(rows.coef.astype(float), right)
@@ -158,8 +169,7 @@ def _span_residual(problem, compiled, ref_rows, k, points, backend):
     return in_span(student, ref, 0, backend)
 
 
-def _follows_from_own(problem: Problem, own: sp.Expr, compiled, wrong, points) -> bool:
-    own_c = Compiled.of(own)
+def _follows_from_own(problem: Problem, own_c: Compiled, compiled, wrong, points) -> bool:
     jets = problem.jets
     try:
         with np.errstate(all="ignore"):

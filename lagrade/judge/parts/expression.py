@@ -216,9 +216,9 @@ def _closed_form_and_value(problem: Problem, answer: Any, given: Mapping | None)
         )
     except (ParseError, RequestError):
         return None
-    if not one.expr.free_symbols and two.expr.free_symbols:  # `1.238 = acos(…)`
+    if not one.symbols and two.symbols:  # `1.238 = acos(…)`
         left, right, one, two = right, left, two, one
-    if not one.expr.free_symbols or two.expr.free_symbols:
+    if not one.symbols or two.symbols:
         return None
     closed, number = _check_one(problem, left, given), _check_one(problem, right, given)
     feedback = [f"Your closed form: {f}" for f in closed.feedback]
@@ -249,8 +249,8 @@ def _bare(problem: Problem, side: str) -> str:
 PIECEWISE_POINTS = 256
 
 
-def _piecewise(*exprs: sp.Expr) -> bool:
-    return any(e.has(sp.Max, sp.Min) for e in exprs)
+def _piecewise(*compiled: Compiled) -> bool:
+    return any(instr[0] in ("max", "min") for c in compiled for instr in c.program.code)
 
 
 def _check_one(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
@@ -268,23 +268,22 @@ def _check_one(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
     if isinstance(answer, str) and problem.unit:
         answer = strip_unit(answer, problem.unit)
     got = read_single(problem, answer, "expression", "x")
-    values = _handout_values(problem, given) if not got.expr.free_symbols else None
+    values = _handout_values(problem, given) if not got.symbols else None
     if values is not None:
         tolerance = float((given or {}).get("tolerance", NUMERIC_TOLERANCE))
         verdict = _judge_number(problem, got.expr, values, tolerance, bare=not with_unit)
         return replace(verdict, feedback=(*verdict.feedback, note)) if note else verdict
     ref = problem.reference_expression
+    ans = got.compiled
     # The default decision (docs/methods.csv): exact where possible, bounded floats otherwise;
     # the numeric hybrid decides only what that method cannot reach, and finds witnesses.
     method = (
-        ExactThenAdaptive(points=PIECEWISE_POINTS)
-        if _piecewise(got.expr, ref.expr)
-        else ExactThenAdaptive()
+        ExactThenAdaptive(points=PIECEWISE_POINTS) if _piecewise(ans, ref) else ExactThenAdaptive()
     )
-    decided = method.decide(got.expr, ref.expr, _domains_for(problem))
+    decided = method.decide_programs(ans.whole, ref.whole, _domains_for(problem))
     if decided:
         return Verdict("expression", "correct", 1.0, (), got.echo, "exact_then_adaptive")
-    ans = Compiled.of(got.expr)
+    ans = got.sympy_compiled  # not right: the feedback reads the sympy form (`Read`)
     points = problem.points("expression")
     out = expressions_equal(ans, ref, points)
     if decided is not None:

@@ -5,8 +5,6 @@ from __future__ import annotations
 from collections.abc import Mapping
 from typing import Any
 
-import sympy as sp
-
 from lagrade.errors import ParseError
 from lagrade.judge.compiled import Compiled
 from lagrade.judge.derivatives import gradient
@@ -24,6 +22,7 @@ from lagrade.judge.parts.items import list_items
 from lagrade.judge.parts.reading import (
     Read,
     Unreadable,
+    decided,
     line_label,
     own_lagrangian,
     read,
@@ -40,7 +39,7 @@ def check_momenta(problem: Problem, answer: Any, given: Mapping | None) -> Verdi
 
     def read_line(item: Any) -> Read:
         got = read(problem, item, labels)
-        if got.rhs is not None and not (isinstance(got.lhs, sp.Symbol) and str(got.lhs) in labels):
+        if got.has_rhs and got.label not in labels:
             text = item if isinstance(item, str) else str(item)
             raise ParseError(
                 f"Write each momentum as {labels[0]} = … or give them in the order "
@@ -62,14 +61,14 @@ def check_momenta(problem: Problem, answer: Any, given: Mapping | None) -> Verdi
                 by_coordinate[labels.index(name)] = got
             else:
                 unlabelled.append(got)
-        elif got.rhs is not None:
-            k = labels.index(str(got.lhs))
+        elif got.has_rhs:
+            k = labels.index(got.label)
             if k in by_coordinate:
                 if isinstance(by_coordinate[k], Unreadable):
                     unlabelled.append(by_coordinate[k])
                 else:
                     return invalid("momenta", f"{labels[k]} is given twice.", echoes)
-            by_coordinate[k] = Read(got.rhs, None, got.echo)
+            by_coordinate[k] = got.only_rhs()
         else:
             unlabelled.append(got)
     free_slots = [k for k in range(len(jets)) if k not in by_coordinate]
@@ -90,10 +89,11 @@ def check_momenta(problem: Problem, answer: Any, given: Mapping | None) -> Verdi
         if isinstance(by_coordinate[k], Unreadable):  # counts as wrong; its line is named above
             any_wrong, follows_all = True, False
             continue
-        expr = by_coordinate[k].expr
-        ans = Compiled.of(expr)
         points = problem.points("momenta")
-        out = expressions_equal(ans, problem.momenta[k], points)
+        reference = problem.momenta[k]
+        out, ans = decided(
+            by_coordinate[k], lambda a, r=reference, p=points: expressions_equal(a, r, p)
+        )
         outcomes.append(out)
         if out.equal:
             right += 1
@@ -121,7 +121,7 @@ def check_momenta(problem: Problem, answer: Any, given: Mapping | None) -> Verdi
         else:
             where = where_text(witness_point(points, out, ans), problem)
             feedback.append(f"p_{j.name} is not ∂L/∂{j.name}_dot{where}.")
-        dimensions = hint_for(problem, expr, f"momentum:{k}") if tells(mutant) else ""
+        dimensions = hint_for(problem, by_coordinate[k], f"momentum:{k}") if tells(mutant) else ""
         if dimensions:
             feedback.append(f"p_{j.name}: {dimensions[0].lower()}{dimensions[1:]}")
     score = right / len(jets)
@@ -142,8 +142,7 @@ def check_momenta(problem: Problem, answer: Any, given: Mapping | None) -> Verdi
     )
 
 
-def _own_momentum_matches(problem: Problem, own: sp.Expr, ans: Compiled, k: int, points) -> bool:
-    own_c = Compiled.of(own)
+def _own_momentum_matches(problem: Problem, own_c: Compiled, ans: Compiled, k: int, points) -> bool:
     velocity = problem.jets[k].dot
 
     def values(backend):
@@ -158,10 +157,10 @@ def _own_momentum_matches(problem: Problem, own: sp.Expr, ans: Compiled, k: int,
         return False
 
 
-def _own_is_same_gauge(problem: Problem, own: sp.Expr) -> bool:
+def _own_is_same_gauge(problem: Problem, own: Compiled) -> bool:
     """The student's L is T − V plus a constant or a total derivative (factor exactly 1), so its
     momenta are right for it."""
     points = problem.points("lagrangian")
-    match = lagrangians_match(Compiled.of(own), reference_el(problem, points), problem.jets, points)
+    match = lagrangians_match(own, reference_el(problem, points), problem.jets, points)
     c = match.factor
     return match.outcome.equal and c is not None and abs(c - 1) <= 1e-9

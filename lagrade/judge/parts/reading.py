@@ -13,25 +13,191 @@ from typing import Any
 
 import sympy as sp
 
-from lagrade.errors import ParseError, RequestError
+from lagrade.errors import ParseError, RequestError, UnsupportedExpression
 from lagrade.judge.compiled import Compiled
+from lagrade.judge.evaluate import compile_tree
 from lagrade.judge.parts.items import single_text
 from lagrade.judge.problem import Problem, parser
 from lagrade.notation.parse import NameRead
 from lagrade.notation.printer import plain
 
 
-@dataclass(frozen=True)
-class Read:
-    """One parsed answer item: lhs (a label symbol or an expression), rhs, and the echo."""
+class Side:
+    """One side of an answer as the parser read it: its tree, and its sympy form, built on first
+    use (with the question's own symbols)."""
 
-    lhs: sp.Expr
-    rhs: sp.Expr | None
-    echo: str
+    __slots__ = ("node", "_make", "_expr")
+
+    def __init__(self, node: Any, make: Callable[[], sp.Expr]):
+        self.node = node
+        self._make = make
+        self._expr: sp.Expr | None = None
 
     @property
     def expr(self) -> sp.Expr:
-        return self.lhs if self.rhs is None else self.lhs - self.rhs
+        if self._expr is None:
+            self._expr = self._make()
+        return self._expr
+
+    @property
+    def label(self) -> str | None:
+        """The name of the side when it is a single symbol (`p_x` in `p_x = …`)."""
+        value = self.node.value if self.node.kind == "sym" else None
+        return value.name if getattr(value, "is_Symbol", False) else None
+
+
+_ZERO_SIDE: Any = object()  # the right side of a bare expression read as an equation
+
+
+class Read:
+    """One parsed answer item: lhs (a label symbol or an expression), rhs, and the echo. Read from
+    the parser's tree, the checks compile it (`compiled`) and see its symbols (`symbols`)
+    without sympy, which is built (`lhs`, `rhs`, `expr`) only where a step needs algebra: a
+    diagnosis, a hint, a number worked out exactly."""
+
+    __slots__ = ("_lhs", "_rhs", "echo", "_rename", "_compiled", "_sympy_compiled", "_expr")
+    __slots__ += ("_symbols",)
+
+    def __init__(self, lhs: Any, rhs: Any, echo: Any, rename: Mapping | None = None):
+        self._lhs, self._rhs, self.echo = lhs, rhs, echo
+        self._rename = rename or {}
+        self._compiled: Compiled | None = None
+        self._sympy_compiled: Compiled | None = None
+        self._expr: sp.Expr | None = None
+        self._symbols: frozenset | None = None
+
+    @staticmethod
+    def _sympy(side: Any) -> sp.Expr | None:
+        if side is _ZERO_SIDE:
+            return sp.S.Zero
+        return side.expr if isinstance(side, Side) else side
+
+    @property
+    def lhs(self) -> sp.Expr:
+        return self._sympy(self._lhs)  # type: ignore[return-value]
+
+    @property
+    def rhs(self) -> sp.Expr | None:
+        return self._sympy(self._rhs)
+
+    @property
+    def has_rhs(self) -> bool:
+        return self._rhs is not None
+
+    @property
+    def expr(self) -> sp.Expr:
+        if self._expr is None:
+            self._expr = self.lhs if self._rhs is None else self.lhs - self.rhs
+        return self._expr
+
+    @staticmethod
+    def _label(side: Any) -> str | None:
+        if isinstance(side, Side):
+            return side.label
+        return side.name if isinstance(side, sp.Symbol) else None
+
+    @property
+    def label(self) -> str | None:
+        """The name on the left when the left side is a single symbol (a label, p_x = …)."""
+        return self._label(self._lhs)
+
+    @property
+    def rhs_label(self) -> str | None:
+        return self._label(self._rhs) if self._rhs is not _ZERO_SIDE else None
+
+    def only_lhs(self) -> Read:
+        """The left side alone, with this item's echo."""
+        return Read(self._lhs, None, self.echo, self._rename)
+
+    def only_rhs(self) -> Read:
+        """The right side alone, with this item's echo."""
+        return Read(self._rhs, None, self.echo, self._rename)
+
+    def _sides(self) -> list[tuple[Any, int]] | None:
+        """(node, sign) of each side read from the tree; None when a side is sympy's."""
+        sides = []
+        for side, sign in ((self._lhs, 1), (self._rhs, -1)):
+            if side is None or side is _ZERO_SIDE:
+                continue
+            if not isinstance(side, Side):
+                return None
+            sides.append((side.node, sign))
+        return sides
+
+    @property
+    def compiled(self) -> Compiled:
+        """The item (lhs − rhs) compiled by its top-level terms; from the tree when it was read
+        from one."""
+        if self._compiled is None:
+            sides = self._sides()
+            program = compile_tree(sides, self._rename) if sides else None
+            if program is None:
+                self._compiled = self.sympy_compiled
+            else:
+                self._compiled = Compiled(lambda: self.expr, program)
+        return self._compiled
+
+    @property
+    def from_tree(self) -> bool:
+        """Whether `compiled` is the tree's own program, not the sympy form's: asked without
+        building the sympy form (`compiled is not sympy_compiled` would build it)."""
+        return self.compiled is not self._sympy_compiled
+
+    @property
+    def sympy_compiled(self) -> Compiled:
+        """The item compiled from its sympy form: what the feedback on a wrong answer reads, so
+        that the point it quotes and the numbers it shows are those the sympy form gives (the
+        tree's program agrees with it to the last bits only, and a witness is chosen among
+        points where the answer is equally wrong)."""
+        if self._sympy_compiled is None:
+            self._sympy_compiled = Compiled.of(self.expr)
+        return self._sympy_compiled
+
+    @property
+    def symbols(self) -> frozenset:
+        """The symbols the item holds (the question's own)."""
+        if self._symbols is None:
+            sides = self._sides()
+            if sides is None:
+                self._symbols = frozenset(self.expr.free_symbols)
+            else:
+                found: set = set()
+                for node, _sign in sides:
+                    _collect(node, found)
+                self._symbols = frozenset(self._rename.get(s, s) for s in found)
+        return self._symbols
+
+
+def decided(got: Read, decide: Callable[[Compiled], Any]) -> tuple[Any, Compiled]:
+    """(outcome, the compiled answer it was decided on): `decide` on the item compiled from its
+    tree, and when that is not `equal`, again on its sympy form — the feedback on a wrong answer
+    quotes the sympy form's numbers (`Read.sympy_compiled`)."""
+    out = decide(got.compiled)
+    if out.equal or got.compiled is got.sympy_compiled:
+        return out, got.compiled
+    return decide(got.sympy_compiled), got.sympy_compiled
+
+
+def _collect(node: Any, found: set) -> None:
+    """The symbols of a tree (the declared imaginary unit is a number)."""
+    kind = node.kind
+    if kind == "sym":
+        if getattr(node.value, "is_Symbol", False):
+            found.add(node.value)
+    elif kind in ("add", "mul"):
+        for child in node.value:
+            _collect(child, found)
+    elif kind in ("neg", "inv"):
+        _collect(node.value, found)
+    elif kind == "pow":
+        _collect(node.value, found)
+        _collect(node.extra, found)
+    elif kind == "call":
+        argument = node.extra[0]
+        for a in (argument,) if hasattr(argument, "kind") else argument:
+            _collect(a, found)
+    elif kind == "ddt":  # never unbuilt (the parser's screen), but its symbols are these
+        _collect(node.value, found)
 
 
 @dataclass(frozen=True)
@@ -191,7 +357,18 @@ def read_parsed(problem: Problem, parsed) -> Read:
     notes = _notes.get()
     if notes is not None:
         notes += [w for w in parsed.warnings if w not in notes]
-    if problem.parser_symbols_are_mine:
+    mine = problem.parser_symbols_are_mine
+    tree = parsed.tree
+    if tree is not None:  # left unbuilt: sides that build their sympy form on demand
+        canonical = (lambda e: e) if mine else problem.canonical
+        lhs = Side(tree.lhs, lambda: canonical(parsed.lhs))
+        rhs = (
+            Side(tree.rhs, lambda: canonical(parsed.rhs))
+            if tree.rhs is not None
+            else (_ZERO_SIDE if tree.equation else None)
+        )
+        return Read(lhs, rhs, parsed.plain(), None if mine else problem.renaming)
+    if mine:
         return Read(parsed.lhs, parsed.rhs, parsed.plain())
     rhs = None if parsed.rhs is None else problem.canonical(parsed.rhs)
     return Read(problem.canonical(parsed.lhs), rhs, parsed.plain())
@@ -218,26 +395,35 @@ def read_labelled(problem: Problem, item: Any, extra_labels: Sequence[str] = ())
         if m and m.group(1) not in problem.by_name and m.group(1) not in labels:
             labels.append(m.group(1))
     got = read(problem, item, labels)
-    if got.rhs is None:
+    if not got.has_rhs:
         return got
-    if isinstance(got.lhs, sp.Symbol):  # a name for the quantity (h = …, even when h is a
-        return Read(got.rhs, None, got.echo)  # parameter: "parameter = expression" says nothing)
-    if isinstance(got.rhs, sp.Symbol) and str(got.rhs) in ADDITIVE_CONSTANTS:
-        return Read(got.lhs, None, got.echo)
+    if got.label is not None:  # a name for the quantity (h = …, even when h is a parameter:
+        return got.only_rhs()  # "parameter = expression" says nothing)
+    if got.rhs_label in ADDITIVE_CONSTANTS:
+        return got.only_lhs()
     raise not_labelled(item)
 
 
 def without_additive_constant(problem: Problem, got: Read) -> Read:
     """`got` with an arbitrary additive constant (`+ const`) set to zero, for the parts defined
     up to one (a Lagrangian, a potential): it changes no motion. A `const` that is not simply
-    added (`const*x`) is left, and the evaluator says it has no value."""
+    added (`const*x`) is left, and the evaluator says it has no value. The item's symbols (from
+    its tree) tell whether there is one; only then is its sympy form built."""
+    if not any(name in str(got.echo) for name in ADDITIVE_CONSTANTS):  # the usual case, at once
+        return got
+    constants = [
+        symbol
+        for symbol in got.symbols
+        if str(symbol) in ADDITIVE_CONSTANTS and str(symbol) not in problem.by_name
+    ]
+    if not constants:
+        return got
     expr = got.expr
-    for symbol in expr.free_symbols:
-        if str(symbol) in ADDITIVE_CONSTANTS and str(symbol) not in problem.by_name:
-            slope = expr.diff(symbol)
-            if slope != 0 and not slope.free_symbols:
-                expr = expr.subs(symbol, 0)
-    return got if expr is got.expr else Read(expr, got.rhs, got.echo)
+    for symbol in constants:
+        slope = expr.diff(symbol)
+        if slope != 0 and not slope.free_symbols:
+            expr = expr.subs(symbol, 0)
+    return got if expr is got.expr else Read(expr, None, got.echo)
 
 
 def not_labelled(item: Any) -> ParseError:
@@ -252,18 +438,20 @@ def read_single(problem: Problem, answer: Any, part: str, label: str) -> Read:
     return read_labelled(problem, single_text(answer, part), (label,))
 
 
-def own_lagrangian(problem: Problem, given: Mapping | None) -> sp.Expr | None:
-    """The student's own L from `given`, when it parses (follow-through is best effort)."""
+def own_lagrangian(problem: Problem, given: Mapping | None) -> Compiled | None:
+    """The student's own L from `given`, compiled, when it parses (follow-through is best
+    effort)."""
     if not given or "lagrangian" not in given:
         return None
     try:
         with reading_notes():  # the notes belong to the lagrangian part, not to this one
-            expr = read_single(problem, given["lagrangian"], "lagrangian", "L").expr
-    except (ParseError, RequestError):
+            got = read_single(problem, given["lagrangian"], "lagrangian", "L")
+            own = got.compiled
+    except (ParseError, RequestError, UnsupportedExpression):
         return None
-    return None if has_acceleration(problem, expr) else expr
+    return None if has_acceleration(problem, own) else own
 
 
-def has_acceleration(problem: Problem, expr: sp.Expr | Compiled) -> bool:
-    symbols = expr.symbols if isinstance(expr, Compiled) else expr.free_symbols
+def has_acceleration(problem: Problem, expr: sp.Expr | Compiled | Read) -> bool:
+    symbols = expr.symbols if isinstance(expr, Compiled | Read) else expr.free_symbols
     return any(j.ddot in symbols for j in problem.jets)
