@@ -153,7 +153,7 @@ class Running:
     def ready(self) -> None:
         self.client.restart()
         self.client.wait_for_workers(self.workers)
-        for module in ("lagrade.grading.cluster.on_worker", "lagrade.grading.batch"):
+        for module in ("lagrade.grading.cluster.on_worker", "lagrade.grading.student"):
             self.client.run(importlib.import_module, module)
         self.since = self._total()
 

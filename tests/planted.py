@@ -5,7 +5,7 @@ judge now bounds its own work before it starts, so the kill at limit + grace is 
 this plant, whatever the judge's bounds become.
 
 `install()` patches the checker `lagrade grade`, the answer page and PrairieLearn call
-(`lagrade.grading.batch.run_checker`); forked workers inherit it. A server started in a process
+(`lagrade.grading.student.run_checker`); forked workers inherit it. A server started in a process
 of its own installs it with `python -c "import tests.planted as p; p.install(); ..."`."""
 
 from __future__ import annotations
@@ -23,6 +23,6 @@ def spinning(real):
 
 
 def install() -> None:
-    import lagrade.grading.batch as batch
+    import lagrade.grading.student as student
 
-    batch.run_checker = spinning(batch.run_checker)
+    student.run_checker = spinning(student.run_checker)

@@ -22,8 +22,9 @@ import lagrade.grading.atomic as atomic
 from lagrade.assign.generate import generate
 from lagrade.assign.solution import latex_symbol_names
 from lagrade.assign.templating import toml_string
-from lagrade.grading.batch import BatchSummary, grade, question
+from lagrade.grading.batch import BatchSummary, grade
 from lagrade.grading.manifest import entry_variant
+from lagrade.grading.student import question
 from lagrade.judge.key import key_answer
 from lagrade.judge.verify import verify_variant
 from lagrade.mechanics.scene import SceneVariant

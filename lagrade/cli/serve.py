@@ -15,8 +15,9 @@ def run(args: argparse.Namespace) -> int:
     import uvicorn
 
     import lagrade.grading.atomic as atomic
-    from lagrade.grading.answer_page.app import build_classroom, make_app
+    from lagrade.grading.answer_page.app import make_app
     from lagrade.grading.answer_page.deadlines import ReadDeadlines
+    from lagrade.grading.answer_page.room import build_classroom
     from lagrade.grading.answer_page.tokens import SECRET_NAME, links_csv, load_or_create_secret
     from lagrade.grading.manifest import load_manifest
 

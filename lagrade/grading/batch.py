@@ -17,7 +17,6 @@ import gc
 import hashlib
 import json
 import tempfile
-import threading
 from collections.abc import Callable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -26,34 +25,18 @@ from typing import Any
 import lagrade.grading.atomic as atomic
 import lagrade.grading.gradebooks as gradebooks
 import lagrade.grading.report as report
-import lagrade.grading.resume as resume
 import lagrade.grading.savelog as savelog
 import lagrade.grading.submission as submission
 from lagrade.assign.manifest import project_version
-from lagrade.assign.views import PROMPTS
-from lagrade.bank.scenefile import sha256
 from lagrade.errors import AssignmentError, LagradeError
 from lagrade.grading.instants import shown
-from lagrade.grading.manifest import entry_spec, entry_variant, load_manifest
+from lagrade.grading.manifest import load_manifest
 from lagrade.grading.rubric import Rubric, load_rubric
-from lagrade.grading.submission import UnreadableAnswer, find_submission, read_sheet
-from lagrade.judge.check import cached_problem, forget_problems, prepare, timeout_verdict
-from lagrade.judge.key import key_answer
-from lagrade.judge.parts import run_checker
-from lagrade.judge.parts.own_coordinates import FOLLOWING
-from lagrade.judge.problem import Problem
-from lagrade.judge.verdict import Verdict
-from lagrade.judge.worker import GRACE, Limits, Outcome, PartTimeout, Pool, deadline, time_limit
+from lagrade.grading.student import grade_student, judge_sheets, warm_up
+from lagrade.grading.submission import find_submission
+from lagrade.judge.check import forget_problems
+from lagrade.judge.worker import Limits, Outcome, Pool
 
-#: Parts that can follow from the student's own Lagrangian.
-FOLLOW_L = frozenset({"eom", "momenta", "cyclic", "conserved"})
-#: Parts that bring `given` to their checker: their own L, their transformation equations (the
-#: coordinates they chose, which the later parts are judged in).
-GIVEN_TO = FOLLOW_L | FOLLOWING
-#: The handout's prompt for `conserved` asks for "the conserved quantities" (all of them), so a
-#: graded sheet is judged for completeness too (`"all": true`); a `check` request is not unless
-#: it says so.
-ASKS_ALL_CONSERVED = "the conserved quantities" in PROMPTS["conserved"]
 STATUSES = ("graded", "missing", "invalid", "timeout", "error")
 
 
@@ -92,242 +75,6 @@ def _rubric(manifest_path: Path, manifest: dict) -> Rubric:
 
 
 # --- grading one student -------------------------------------------------------------------------
-
-
-def _question_key(spec: Mapping[str, Any]) -> str:
-    """What a symbolic question depends on: the scene, the variant's names and options, the
-    quantity — not its numbers, which only numeric follow-ups use (each with its own variant).
-    A class of 1,000 with 1,000 seeds asks only a handful of distinct symbolic questions. A
-    scene file's text is part of its identity (its hash, short)."""
-    variant = entry_variant(spec)
-    text = spec.get("scene_text")
-    scene = spec["scene"] if text is None else f"{spec['scene']}@{sha256(text)[:16]}"
-    return json.dumps([scene, variant.names, variant.options, spec.get("quantity")], sort_keys=True)
-
-
-def question(spec: Mapping[str, Any]) -> Problem:
-    """The Problem of a manifest entry, shared by every student who was asked the same thing."""
-    return cached_problem(dict(spec), _question_key(spec))
-
-
-def _spec(entry: Mapping[str, Any], part: Mapping[str, Any]) -> dict[str, Any]:
-    spec = entry_spec(entry)
-    if part["part"] == "expression":
-        spec["quantity"] = part["quantity"]
-    return spec
-
-
-def warm_up(manifest: dict) -> None:
-    """Derive every reference the batch needs in the parent, so forked children share it.
-
-    Besides `prepare`, each distinct question is asked its own key once: that fills the lazy
-    caches a real answer touches (compiled mutants, sample points, reference values), which a
-    child would otherwise rebuild and throw away for every submission (measured: about 3× the
-    grading time of a warm process)."""
-    warm_questions(asked_questions(manifest))
-
-
-def asked_questions(manifest: Mapping[str, Any]) -> dict[tuple[str, str], tuple[dict, Mapping]]:
-    """Each distinct question of the class, (its key, the part), with the spec and part of the
-    first student on the roster who is asked it. The Problem every later student shares is
-    built from that student's variant (its sample points, so the points feedback quotes), so
-    whichever process builds it, this machine's or a Dask worker, builds the same."""
-    asked: dict[tuple[str, str], tuple[dict, Mapping]] = {}
-    for student in manifest["students"]:
-        for entry, problem in zip(student["problems"], manifest["problems"], strict=True):
-            for part in problem["parts"]:
-                spec = _spec(entry, part)
-                asked.setdefault((_question_key(spec), part["part"]), (spec, part))
-    return asked
-
-
-def warm_questions(asked: Mapping[tuple[str, str], tuple[dict, Mapping]]) -> None:
-    """Derive each question of `asked` (as `asked_questions` gives them) in this process."""
-    for spec, part in asked.values():
-        problem = question(spec)
-        prepare(problem, part["part"], diagnosis=True)
-        if part["part"] != "expression" and problem.variant is not None:
-            _warm_with_key(problem, part)
-
-
-def _warm_with_key(question: Problem, part: Mapping[str, Any]) -> None:
-    """Ask a question its own key (trusted: `generate` verified it), under a time limit; a
-    failure here only means a colder start for the children, never a stopped batch."""
-    name = part["part"]
-    variant = question.variant
-    given = {"lagrangian": key_answer(variant, "lagrangian")} if name in FOLLOW_L else None
-    # The alarm rings only in a main thread; a Dask worker warms up in one of its threads, and
-    # checks the key (verified when it was generated) without it.
-    main = threading.current_thread() is threading.main_thread()
-    try:
-        with time_limit(10.0 if main else None):
-            run_checker(question, name, key_answer(variant, name, part.get("quantity")), given)
-    except (PartTimeout, LagradeError, ArithmeticError, ValueError):
-        pass
-
-
-def _blank(answer: Any) -> bool:
-    if isinstance(answer, list):
-        return not any(str(a).strip() for a in answer)
-    return not str(answer).strip()
-
-
-def grade_part(
-    entry: Mapping[str, Any],
-    part: Mapping[str, Any],
-    answer: Any,
-    given: dict[str, Any],
-    rubric: Rubric,
-    limit: float,
-) -> dict[str, Any]:
-    """One part's result: the verdict, the points it earns and the feedback."""
-    name = part["part"]
-    if answer is None or (not isinstance(answer, UnreadableAnswer) and _blank(answer)):
-        verdict = Verdict(
-            name, "incorrect", 0.0, ("Not answered.",), "", "blank", mistakes=("blank",)
-        )
-    elif isinstance(answer, UnreadableAnswer):
-        verdict = Verdict(
-            name,
-            "invalid",
-            0.0,
-            (f"This answer is a {answer.kind}; write it as a string.",),
-            "",
-            "parse",
-        )
-    else:
-        deadline(limit + GRACE)
-        try:
-            with time_limit(limit):
-                verdict = _judge(entry, part, answer, given, rubric)
-        except PartTimeout:
-            verdict = timeout_verdict(name, limit)
-    return _scored(part, verdict, rubric)
-
-
-def stopped_part(part: Mapping[str, Any], rubric: Rubric, limit: float) -> dict[str, Any]:
-    """The result of a part whose worker was killed at its limit + grace (C code the alarm
-    could not interrupt): `timeout`, as if the alarm had struck (`lagrade.grading.resume`)."""
-    return _scored(part, timeout_verdict(part["part"], limit), rubric)
-
-
-def _scored(part: Mapping[str, Any], verdict: Verdict, rubric: Rubric) -> dict[str, Any]:
-    """A part's result from its verdict: the points the rubric gives it and the feedback."""
-    name = part["part"]
-    share = rubric.fraction(
-        verdict.status, verdict.score, verdict.mistakes, verdict.follows_from_own_answer
-    )
-    return {
-        "key": part["key"],
-        "part": name,
-        "verdict": verdict.status,
-        "points": round(share * float(part["points"]), 6),
-        "max_points": float(part["points"]),
-        "feedback": list(verdict.feedback),
-        "interpreted": verdict.interpreted,
-        "method": verdict.method,
-        "mistakes": list(verdict.mistakes),
-        "follows_from_own_answer": verdict.follows_from_own_answer,
-    }
-
-
-def _judge(entry, part, answer, given, rubric: Rubric) -> Verdict:
-    """The sheet's raw answer (its string, or the list of strings TOML gave) goes to the part's
-    checker as it is: splitting, separators and reading are the checker's (the one door), so
-    `grade` reads an answer exactly as `check` does."""
-    name = part["part"]
-    problem = question(_spec(entry, part))
-    return run_checker(problem, name, answer, _given(entry, name, given, rubric))
-
-
-def _given(entry, name: str, given: dict[str, Any], rubric: Rubric) -> dict[str, Any] | None:
-    """What the student brings besides the answer: the handout's own values and the rubric's
-    tolerance for a numeric follow-up; their own L for follow-through; and for `conserved`
-    that the handout asks for all of them."""
-    if name == "expression":
-        own = entry_variant(entry)  # this student's numbers
-        return {"values": own.values, "tolerance": rubric.numeric_tolerance}
-    if name not in GIVEN_TO:
-        return None
-    if name == "conserved" and ASKS_ALL_CONSERVED:
-        return {**given, "all": True}  # the handout asks for "the conserved quantities"
-    return given
-
-
-def sheet_given(parts: Sequence[tuple[str, str]], answers: Mapping[str, Any]) -> dict[str, Any]:
-    """What one problem's answers bring to its other parts (`given`): the student's own L
-    (follow-through) and their transformation equations (the coordinates the later parts are
-    judged in), both raw as typed: the checkers read them. The one place a sheet's `given` is
-    built, for `grade`, the answer page and PrairieLearn alike; `parts` are the problem's
-    (key, part name) pairs."""
-    given: dict[str, Any] = {}
-    for key, name in parts:
-        answer = answers.get(key)
-        if isinstance(answer, list) and not all(isinstance(a, str) for a in answer):
-            continue
-        if not isinstance(answer, str | list) or _blank(answer):
-            continue
-        if name in ("lagrangian", "transformation"):
-            given[name] = answer
-    return given
-
-
-def grade_student(manifest: Mapping, rubric: Rubric, task: Mapping[str, Any]) -> dict[str, Any]:
-    """Grade one student's sheet (runs inside a worker; the manifest and rubric are inherited
-    when the worker is forked, only the small task crosses the pipe). Each part is noted as it
-    is judged, so that a worker killed in one part costs only that part: the task `resumed`
-    from the kill (`lagrade.grading.resume`) keeps the parts judged and skips the one stopped."""
-    student = task["student"]
-    problems = manifest["problems"]
-    keys = {p["index"]: [part["key"] for part in p["parts"]] for p in problems}
-    # On a Dask cluster the parent has read the file and sends its bytes (`content`).
-    content = task.get("content")
-    sheet = read_sheet(Path(task["path"]), student["id"], len(problems), keys, content)
-    base = {"warnings": list(sheet.warnings) + ([task["note"]] if task.get("note") else [])}
-    if sheet.other_id is not None:
-        base["sheet_student_id"] = sheet.other_id
-    if not sheet.readable:
-        return {**base, "status": "invalid", "reason": sheet.reason, "problems": []}
-    graded = []
-    timeouts = []
-    for problem, entry in zip(problems, student["problems"], strict=True):
-        answers = sheet.answers.get(problem["index"], {})
-        given = sheet_given([(p["key"], p["part"]) for p in problem["parts"]], answers)
-        parts = []
-        for part in problem["parts"]:
-            part_id = f"{problem['index']}/{part['key']}"
-            result = resume.earlier(task, part_id)
-            if result is None and resume.stopped(task, part_id):
-                result = stopped_part(part, rubric, task["part_time_limit"])
-            if result is None:
-                resume.begin(part_id)
-                result = grade_part(
-                    entry, part, answers.get(part["key"]), given, rubric, task["part_time_limit"]
-                )
-                resume.judged(part_id, result)
-            parts.append(result)
-        timeouts += [
-            f"problem {problem['index']} {p['key']}" for p in parts if p["verdict"] == "timeout"
-        ]
-        graded.append(_problem_result(problem, entry, parts))
-    status, reason = "graded", ""
-    if timeouts:
-        status, reason = "timeout", "ran out of time on " + ", ".join(timeouts)
-    return {**base, "status": status, "reason": reason, "problems": graded}
-
-
-def _problem_result(problem: Mapping, entry: Mapping, parts: list[dict]) -> dict[str, Any]:
-    return {
-        "index": problem["index"],
-        "scene": entry["scene"],
-        "title": problem["title"],
-        "score": round(sum(p["points"] for p in parts), 6),
-        "max_score": float(sum(p["max_points"] for p in parts)),
-        "parts": parts,
-    }
-
-
-# --- the batch ----------------------------------------------------------------------------------
 
 
 def _fingerprint(
@@ -553,21 +300,6 @@ def _judged_here(
     gc.freeze()
     with Pool(functools.partial(grade_student, manifest, rubric), jobs=jobs, limits=limits) as pool:
         yield from judge_sheets(pool, tasks)
-
-
-def judge_sheets(pool: Pool, tasks: list[tuple[str, dict[str, Any]]]) -> Iterator[Outcome]:
-    """The Outcome of each (student id, task), as each is settled. A worker killed in a part
-    leaves a task that resumes after it: judged in a later round, by a fresh worker (each round
-    settles at least one part of each such sheet)."""
-    while tasks:
-        by_key = dict(tasks)
-        tasks = []
-        for outcome in pool.run(list(by_key.items())):
-            again = resume.resumed(by_key[outcome.key], outcome)
-            if again is not None:
-                tasks.append((outcome.key, again))
-                continue
-            yield outcome
 
 
 def _missing_reason(student_id: str, stray: Mapping[str, str]) -> str:

@@ -36,9 +36,9 @@ from lagrade.assign.templating import environment
 from lagrade.assign.variants import VariantChoice
 from lagrade.assign.views import presentation, problem_view, symbolic_solution
 from lagrade.bank.registry import scene_reference
-from lagrade.grading.batch import grade_part, sheet_given, stopped_part
 from lagrade.grading.prompts import prompt_html
 from lagrade.grading.rubric import Rubric, rubric_from_table
+from lagrade.grading.student import grade_part, sheet_given, stopped_part
 from lagrade.judge.parts.reading import is_unreadable_line
 from lagrade.judge.worker import PREPARE_LIMIT, Limits, Pool
 

@@ -7,8 +7,9 @@ from __future__ import annotations
 
 import json
 
-from lagrade.grading.batch import grade, question
+from lagrade.grading.batch import grade
 from lagrade.grading.manifest import entry_spec, load_manifest
+from lagrade.grading.student import question
 
 
 def _outputs(folder):

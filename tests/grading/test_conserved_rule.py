@@ -90,7 +90,7 @@ def test_all_in_a_batch_request_and_a_bad_all_is_invalid():
 
 
 def test_the_handout_asks_for_all_the_conserved_quantities():
-    from lagrade.grading.batch import ASKS_ALL_CONSERVED
+    from lagrade.grading.student import ASKS_ALL_CONSERVED
 
     assert ASKS_ALL_CONSERVED
 

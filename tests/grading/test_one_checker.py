@@ -11,8 +11,8 @@ import sympy as sp
 
 from lagrade.assign.views import MULTILINE
 from lagrade.bank import get_scene
-from lagrade.grading.batch import grade_part
 from lagrade.grading.rubric import Rubric
+from lagrade.grading.student import grade_part
 from lagrade.judge.check import check, forget_problems
 from lagrade.judge.key import key_answer
 from lagrade.judge.parts import PARTS

@@ -14,9 +14,10 @@ import pytest
 
 from lagrade.cli.main import main
 from lagrade.grading.answer_page.sheets import sheet_text
-from lagrade.grading.batch import ASKS_ALL_CONSERVED, _rubric, grade, grade_student, question
+from lagrade.grading.batch import _rubric, grade
 from lagrade.grading.manifest import entry_spec
 from lagrade.grading.rubric import Rubric
+from lagrade.grading.student import ASKS_ALL_CONSERVED, grade_student, question
 from lagrade.judge.check import check, run_batch
 
 from .own_coordinates_cases import CASES, answers

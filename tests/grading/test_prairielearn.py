@@ -149,11 +149,11 @@ def test_grade_stops_a_part_held_in_c_code_and_grades_the_others(tmp_path, monke
     """PrairieLearn calls grade() in its own process: the check runs in a worker killed at the
     part's limit + grace, the held part (the planted checker spinning in C, `tests/planted.py`)
     is `timeout` and every other part is graded."""
-    from lagrade.grading import batch, prairielearn_runtime
+    from lagrade.grading import prairielearn_runtime, student
     from lagrade.judge.worker import GRACE
     from tests.planted import HANG, spinning
 
-    monkeypatch.setattr(batch, "run_checker", spinning(batch.run_checker))
+    monkeypatch.setattr(student, "run_checker", spinning(student.run_checker))
     (tmp_path / "a.toml").write_text(SLOW_ASSIGNMENT)
     out = tmp_path / "questions"
     assert (

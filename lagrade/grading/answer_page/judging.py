@@ -23,8 +23,8 @@ from typing import Any
 
 import lagrade.grading.resume as resume
 from lagrade.grading.answer_page import preview as preview_module
-from lagrade.grading.batch import grade_student, warm_up
 from lagrade.grading.rubric import Rubric
+from lagrade.grading.student import grade_student, warm_up
 from lagrade.judge.live import LivePool
 from lagrade.judge.worker import Limits, Outcome
 

@@ -12,9 +12,9 @@ from collections.abc import Mapping
 from typing import Any
 
 from lagrade.errors import LagradeError, ParseError
-from lagrade.grading.batch import grade_part, question
 from lagrade.grading.manifest import entry_spec
 from lagrade.grading.rubric import Rubric
+from lagrade.grading.student import grade_part, question
 from lagrade.judge.parts.reading import heard_notes
 from lagrade.notation.parse import parse_answer
 

@@ -24,7 +24,7 @@ from lagrade.grading.instants import from_ns, shown
 from lagrade.grading.savelog import Save, canonical_answers, now_ns
 
 if TYPE_CHECKING:
-    from lagrade.grading.answer_page.app import ClassRoom
+    from lagrade.grading.answer_page.room import ClassRoom
 
 #: Seconds one part may take when a save is graded.
 SAVE_PART_TIME_LIMIT = 10.0

@@ -66,7 +66,7 @@ def grade_chunk(shared: dict[str, Any], tasks: list[tuple[str, dict]], version: 
     and the feedback quoting them are the same), with the same resume-after-a-kill rounds as on
     one machine (`judge_sheets`)."""
     # Imported here: a worker that only checks requests does not load the reports' modules.
-    from lagrade.grading.batch import asked_questions, grade_student, judge_sheets, warm_questions
+    from lagrade.grading.student import asked_questions, grade_student, judge_sheets, warm_questions
 
     _same_version(version)
     with _lock:
