@@ -12,22 +12,12 @@ import time
 from html.parser import HTMLParser
 from pathlib import Path
 
+from lagrade.assign.assignment import PARTS
 from lagrade.bank.registry import get_scene
 from lagrade.mechanics.scene import LAGRANGIAN_PARTS
 from tests.prairielearn_node import Question, Text, shown
 
-ALL_PARTS = (
-    "dof",
-    "coordinates",
-    "transformation",
-    "T",
-    "V",
-    "lagrangian",
-    "eom",
-    "momenta",
-    "cyclic",
-    "conserved",
-)
+ALL_PARTS = PARTS
 HOSTILE = "<img src=x onerror=\"document.title='PWNED'\">"
 UNREADABLE_LINE = "1/2 m (q_dot"
 

@@ -48,14 +48,19 @@ def is_latex(text: str) -> bool:
     return "\\" in text or "^{" in text or (stripped.startswith("$") and stripped.endswith("$"))
 
 
-def _parse_source(src: Source, vocabulary: Vocabulary, latex: bool | None, mode: str) -> Parsed:
-    """Text → tokens → tree → sympy, then the finiteness check and the echo."""
+def _check_length(src: Source) -> None:
+    """Refuse an answer over MAX_LENGTH characters before anything reads it."""
     if len(src.text) > MAX_LENGTH:
         src.fail(
             f"The answer is too long ({len(src.text)} characters; the limit is {MAX_LENGTH}).",
             MAX_LENGTH,
             len(src.text),
         )
+
+
+def _parse_source(src: Source, vocabulary: Vocabulary, latex: bool | None, mode: str) -> Parsed:
+    """Text → tokens → tree → sympy, then the finiteness check and the echo."""
+    _check_length(src)
     lexicon = vocabulary._lexicon
     src = normalise(src)
     latex = bool(latex or (latex is None and is_latex(src.text)))
@@ -204,12 +209,7 @@ class NameRead:
 def _read_name_source(src: Source, vocabulary: Vocabulary, latex: bool | None, expected: str):
     """Text → names: the same normalisation, LaTeX translation, tokens and lexicon as an
     expression, but every token must be a name; anything else fails with `expected`."""
-    if len(src.text) > MAX_LENGTH:
-        src.fail(
-            f"The answer is too long ({len(src.text)} characters; the limit is {MAX_LENGTH}).",
-            MAX_LENGTH,
-            len(src.text),
-        )
+    _check_length(src)
     lexicon = vocabulary._lexicon
     src = normalise(src)
     if latex or (latex is None and is_latex(src.text)):

@@ -38,8 +38,10 @@ WCAG_21_AA = ["wcag2a", "wcag2aa", "wcag21a", "wcag21aa"]
 __all__ = ["By", "WebDriverWait"]
 
 
-def start_browser(profile: Path):
-    """A headless Chromium with a profile of its own (localStorage lives there)."""
+def start_browser(profile: Path, hide_scrollbars: bool = True):
+    """A headless Chromium with a profile of its own (localStorage lives there). Scrollbars are
+    hidden as a phone's overlay ones take no width; `hide_scrollbars=False` shows them, as a
+    desktop browser does (a screenshot then shows a box that scrolls)."""
     options = webdriver.ChromeOptions()
     options.binary_location = CHROMIUM
     for flag in (
@@ -51,9 +53,9 @@ def start_browser(profile: Path):
         "--disable-component-update",
         "--disable-sync",
         "--no-first-run",
-        "--hide-scrollbars",
         "--window-size=1100,1400",
         f"--user-data-dir={profile}",
+        *(["--hide-scrollbars"] if hide_scrollbars else []),
     ):
         options.add_argument(flag)
     return webdriver.Chrome(options=options, service=Service(DRIVER))

@@ -172,42 +172,17 @@ class FigureReader:
                 return None
             return value
         if kind == "ranges":
-            pair = self._list(value, at, 2, 2)
-            return (
-                None
-                if pair is None
-                else self._all([self._expr(x, f"{at}[{i}]") for i, x in enumerate(pair, 1)])
-            )
+            return self._each(value, at, 2, 2, self._expr)
         if kind in ("offsets",):
             return self._point(value, at)
         if kind == "shapes":
-            points = self._list(value, at, 3, MAX_POINTS)
-            return (
-                None
-                if points is None
-                else self._all([self._point(p, f"{at}[{i}]") for i, p in enumerate(points, 1)])
-            )
+            return self._each(value, at, 3, MAX_POINTS, self._point)
         if kind == "dimensions":
-            pair = self._list(value, at, 2, 2)
-            return (
-                None
-                if pair is None
-                else self._all([self._point(p, f"{at}[{i}]") for i, p in enumerate(pair, 1)])
-            )
+            return self._each(value, at, 2, 2, self._point)
         if kind == "angles":
-            three = self._list(value, at, 3, 3)
-            return (
-                None
-                if three is None
-                else self._all([self._point(p, f"{at}[{i}]") for i, p in enumerate(three, 1)])
-            )
+            return self._each(value, at, 3, 3, self._point)
         if kind == "spans":
-            pair = self._list(value, at, 2, 2)
-            return (
-                None
-                if pair is None
-                else self._all([self._anchor(p, f"{at}[{i}]") for i, p in enumerate(pair, 1)])
-            )
+            return self._each(value, at, 2, 2, self._anchor)
         raise AssertionError(kind)
 
     def _fixtures(self, raw: Any, key: str) -> list[_Fixture]:
@@ -274,6 +249,14 @@ class FigureReader:
 
     def _expr(self, value: Any, at: str) -> Expr | None:
         return self.reader.read(expression(value, at, self.problems), "figure")
+
+    def _each(self, value: Any, at: str, low: int, high: int, read: Any) -> tuple | None:
+        """A list of `low` to `high` entries, each read by `read` at `at[i]`; None (the
+        problems noted) when the list or any entry is wrong."""
+        entries = self._list(value, at, low, high)
+        if entries is None:
+            return None
+        return self._all([read(x, f"{at}[{i}]") for i, x in enumerate(entries, 1)])
 
     def _point(self, value: Any, at: str) -> Point | None:
         size = 3 if self.three_d else 2
