@@ -150,8 +150,8 @@ def _values(expr: sp.Expr) -> list[complex | None]:
         }
         try:
             value = complex(expr.xreplace(subs).evalf(30))
-        except (TypeError, ValueError, ZeroDivisionError):
-            value = None
+        except (TypeError, ValueError, ZeroDivisionError, OverflowError):
+            value = None  # no value there: exp(exp(exp(150 q))) has more digits than mpmath holds
         values.append(value)
     return values
 
