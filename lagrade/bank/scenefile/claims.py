@@ -135,7 +135,7 @@ def parameter_points(variant: Any, count: int = 3) -> list[dict[sp.Symbol, sp.Ex
 def _number(expr: sp.Expr, point: Mapping) -> sp.Expr:
     """expr at `point`, kept exact (cos(pi/2) is 0, not 1e-51), after checking that it is a
     finite real number there."""
-    exact = sp.sympify(expr).xreplace(point)
+    exact = sp.sympify(expr).xreplace(point)  # a derived expression or a Python number, never text
     value = sp.N(exact, _DIGITS)
     if not value.is_number or value.has(sp.zoo, sp.nan, sp.oo, -sp.oo):
         raise ArithmeticError(f"{expr} has no finite value there")
