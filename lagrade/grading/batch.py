@@ -295,7 +295,10 @@ def _judged_here(
     forget_problems()
     warm_up(manifest)
     # Children are forked: keep the collector off the parent's (now immortal) objects, or
-    # every child would touch, and so copy, the whole heap (measured: half its time).
+    # every child would touch, and so copy, the whole heap (measured: half its time). Unfrozen
+    # first: what an earlier run in this process froze (its questions, forgotten above) is
+    # garbage now, and a process that grades again and again must not keep every class's.
+    gc.unfreeze()
     gc.collect()
     gc.freeze()
     with Pool(functools.partial(grade_student, manifest, rubric), jobs=jobs, limits=limits) as pool:
