@@ -58,35 +58,23 @@ def read_claim(q: QuantityDecl, d: Declaration, reader: Any, problems: Problems)
     key = f"{q.key}.check"
     jets = reader.jets
     names = {j.name: j.q for j in jets.values()} | {j.dot.name: j.dot for j in jets.values()}
-    at: dict[sp.Symbol, sp.Expr] = {}
-    ok = True
-    raw_at = check.get("at", {})
-    if not isinstance(raw_at, dict):
-        problems.add(f"{key}.at", "is not a table of coordinates and velocities")
-        raw_at, ok = {}, False
-    for name, value in raw_at.items():
-        if name not in names:
-            problems.add(f"{key}.at.{name}", "is not a coordinate or a coordinate's velocity")
-            ok = False
-            continue
-        read = reader.read(expression(value, f"{key}.at.{name}", problems), "state")
-        ok &= read is not None
-        if read is not None:
-            at[names[name]] = read
-    accelerations: dict[sp.Symbol, sp.Expr] = {}
+    at, ok_at = _read_table(
+        check,
+        "at",
+        key,
+        names,
+        "coordinates and velocities",
+        "coordinate or a coordinate's velocity",
+        reader,
+        problems,
+    )
+    by_q = {name: j.q for name, j in jets.items()}
+    accelerations, ok_acc = _read_table(
+        check, "accelerations", key, by_q, "coordinates", "coordinate", reader, problems
+    )
+    ok = ok_at and ok_acc
     raw_acc = check.get("accelerations", {})
-    if not isinstance(raw_acc, dict):
-        problems.add(f"{key}.accelerations", "is not a table of coordinates")
-        raw_acc, ok = {}, False
-    for name, value in raw_acc.items():
-        if name not in jets:
-            problems.add(f"{key}.accelerations.{name}", "is not a coordinate")
-            ok = False
-            continue
-        read = reader.read(expression(value, f"{key}.accelerations.{name}", problems), "state")
-        ok &= read is not None
-        if read is not None:
-            accelerations[jets[name].q] = read
+    raw_acc = raw_acc if isinstance(raw_acc, dict) else {}
     frequencies = []
     raw_freq = check.get("frequencies", [])
     if not isinstance(raw_freq, list) or len(raw_freq) > len(jets):
@@ -132,10 +120,40 @@ def parameter_points(variant: Any, count: int = 3) -> list[dict[sp.Symbol, sp.Ex
     return points
 
 
+def _read_table(
+    check: Mapping,
+    field: str,
+    key: str,
+    allowed: Mapping[str, sp.Symbol],
+    plural: str,
+    singular: str,
+    reader: Any,
+    problems: Problems,
+) -> tuple[dict[sp.Symbol, sp.Expr], bool]:
+    """One table of a `check` (`at` or `accelerations`): each name one of `allowed`, each value
+    an expression read in the state vocabulary; the problems noted, and whether it all read."""
+    found: dict[sp.Symbol, sp.Expr] = {}
+    ok = True
+    raw = check.get(field, {})
+    if not isinstance(raw, dict):
+        problems.add(f"{key}.{field}", f"is not a table of {plural}")
+        return found, False
+    for name, value in raw.items():
+        if name not in allowed:
+            problems.add(f"{key}.{field}.{name}", f"is not a {singular}")
+            ok = False
+            continue
+        read = reader.read(expression(value, f"{key}.{field}.{name}", problems), "state")
+        ok &= read is not None
+        if read is not None:
+            found[allowed[name]] = read
+    return found, ok
+
+
 def _number(expr: sp.Expr, point: Mapping) -> sp.Expr:
     """expr at `point`, kept exact (cos(pi/2) is 0, not 1e-51), after checking that it is a
     finite real number there."""
-    exact = sp.sympify(expr).xreplace(point)  # a derived expression or a Python number, never text
+    exact = expr.xreplace(point)
     value = sp.N(exact, _DIGITS)
     if not value.is_number or value.has(sp.zoo, sp.nan, sp.oo, -sp.oo):
         raise ArithmeticError(f"{expr} has no finite value there")
