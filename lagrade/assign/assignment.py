@@ -60,7 +60,7 @@ _TOP_KEYS = {
     "lms",
 }
 _PROBLEM_KEYS = {"scene", "title", "parts", "points", "variants", "names", "options"}
-_PART_KEYS = {"part", "quantity", "points"}
+_PART_KEYS = {"part", "quantity", "points", "all"}
 MAX_VARIANTS = 10_000
 
 
@@ -72,6 +72,10 @@ class Part:
     part: str
     points: float
     quantity: str | None = None
+    #: For `conserved`: the part asks for all the conserved quantities (a set that misses one
+    #: is incomplete), or, with `all = false`, for any one of them. A field of the part, so that
+    #: the grader never reads the rule from the prompt's wording.
+    all: bool = True
 
     @property
     def key(self) -> str:
@@ -315,12 +319,19 @@ def _parse_parts(where: str, raw: Any, scene: Scene | None, problems: list[str])
     for j, item in enumerate(raw, start=1):
         at = f"{where}.parts[{j}]"
         points: Any = None
+        asks_all = True
         if isinstance(item, str):
             name, quantity = item, None
         elif isinstance(item, dict):
             for key in sorted(set(item) - _PART_KEYS):
-                problems.append(f"{at}.{key}: unknown field (known: part, quantity, points)")
+                problems.append(f"{at}.{key}: unknown field (known: part, quantity, points, all)")
             quantity = item.get("quantity")
+            asks_all = item.get("all", True)
+            if not isinstance(asks_all, bool):
+                problems.append(f"{at}.all: must be true or false, not {asks_all!r}")
+                asks_all = True
+            elif "all" in item and item.get("part") != "conserved":
+                problems.append(f"{at}.all: only the 'conserved' part asks for all or for one")
             name = item.get("part", EXPRESSION if quantity is not None else None)
             points = item.get("points")
             if points is not None and not _is_points(points):
@@ -342,7 +353,7 @@ def _parse_parts(where: str, raw: Any, scene: Scene | None, problems: list[str])
             continue
         elif scene is not None and not _scene_can_ask(at, name, scene, problems):
             continue
-        part = Part(name, points or 0, quantity)
+        part = Part(name, points or 0, quantity, asks_all)
         if part.key in seen:
             problems.append(f"{at}: part {part.key!r} is asked twice")
             continue
@@ -418,7 +429,7 @@ def _apply_points(
     result = []
     for p in parts:
         value = p.points or table.get(p.key, base)
-        result.append(Part(p.part, value if _is_points(value) else base, p.quantity))
+        result.append(Part(p.part, value if _is_points(value) else base, p.quantity, p.all))
     return result
 
 

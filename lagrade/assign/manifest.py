@@ -95,6 +95,7 @@ def manifest_json(
                     "part": part.part,
                     "quantity": part.quantity,
                     "points": part.points,
+                    **({"all": part.all} if part.part == "conserved" else {}),
                 }
                 for part in p.parts
             ],

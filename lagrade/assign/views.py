@@ -40,6 +40,10 @@ PROMPTS: dict[str, str] = {
     "cyclic": "Which coordinates are cyclic? (Write none if there are none.)",
     "conserved": "Give the conserved quantities as functions of the coordinates and velocities.",
 }
+#: The prompt of a `conserved` part that asks for any one conserved quantity (`all = false`).
+ONE_CONSERVED_PROMPT = (
+    "Give a conserved quantity (any one) as a function of the coordinates and velocities."
+)
 #: Parts with a key answer of their own (an expression part's key is its quantity's name).
 KEYED_PARTS = tuple(PROMPTS)
 #: Parts whose answer sheet field holds several lines (one equation or item per line).
@@ -270,6 +274,8 @@ def _parts(problem: Problem, variant: SceneVariant) -> list[dict[str, Any]]:
                 "your parameter values).",
             )
             unit = unit_formats(q.unit) if q.unit else None
+        elif part.part == "conserved" and not part.all:
+            prompt = render_prose(ONE_CONSERVED_PROMPT)
         else:
             prompt = render_prose(PROMPTS[part.part])
         parts.append(

@@ -34,7 +34,7 @@ from lagrade.grading.manifest import load_manifest
 from lagrade.grading.rubric import Rubric, load_rubric
 from lagrade.grading.student import grade_student, judge_sheets, warm_up
 from lagrade.grading.submission import find_submission
-from lagrade.judge.check import forget_problems
+from lagrade.judge.driver import forget_problems
 from lagrade.judge.worker import Limits, Outcome, Pool
 
 STATUSES = ("graded", "missing", "invalid", "timeout", "error")

@@ -39,8 +39,9 @@ from lagrade.bank.registry import scene_reference
 from lagrade.grading.prompts import prompt_html
 from lagrade.grading.rubric import Rubric, rubric_from_table
 from lagrade.grading.student import grade_part, sheet_given, stopped_part
+from lagrade.judge.clocks import PREPARE_LIMIT
 from lagrade.judge.parts.reading import is_unreadable_line
-from lagrade.judge.worker import PREPARE_LIMIT, Limits, Pool
+from lagrade.judge.worker import Limits, Pool
 
 #: Seconds per part when PrairieLearn grades (its own worker limits the whole call too); a part
 #: whose check holds its worker in C code is killed `GRACE` seconds later.
@@ -265,6 +266,7 @@ def _judge_task(task: Mapping[str, Any]) -> dict[str, dict]:
             "part": part.part,
             "points": part.points,
             "quantity": part.quantity,
+            "all": part.all,
         }
         result = resume.earlier(task, part.key)
         if result is None and resume.stopped(task, part.key):

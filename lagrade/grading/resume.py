@@ -1,5 +1,5 @@
 """A kill costs only the part it stopped. A worker judging the parts of a submission one after
-another notes each part as it begins and as it is judged (`lagrade.judge.worker.note`); when the
+another notes each part as it begins and as it is judged (`lagrade.judge.clocks.note`); when the
 parent kills the worker at a part's limit + grace, `resumed` turns those notes into the task for
 a fresh worker: the parts judged keep their results, the part that was running is marked
 stopped (its verdict `timeout`), and the rest is judged again. Each round settles at least one
@@ -13,7 +13,8 @@ from __future__ import annotations
 from collections.abc import Mapping
 from typing import Any
 
-from lagrade.judge.worker import Outcome, note
+from lagrade.judge.clocks import note
+from lagrade.judge.worker import Outcome
 
 
 def begin(part_id: str) -> None:

@@ -1,8 +1,8 @@
-"""One student's sheet graded, part by part: the questions a class shares (each built from the
-first student asked it), each part judged by its one checker with what the student's other
-answers bring (`given`), scored by the rubric, and a killed part costing only itself. `grade`
+"""One student's sheet graded, part by part: each part judged by the one driver
+(`lagrade.judge.driver.judge`) on the student's own variant, with what the student's other answers
+bring (`given`), scored by the rubric, and a killed part costing only itself. `grade`
 (`lagrade.grading.batch`), the answer page, PrairieLearn and a Dask worker all grade a sheet
-here, so that they agree."""
+here, so that they agree — with each other and with `check --seed` on the same variant."""
 
 from __future__ import annotations
 
@@ -13,36 +13,34 @@ from pathlib import Path
 from typing import Any
 
 import lagrade.grading.resume as resume
-from lagrade.assign.views import PROMPTS
 from lagrade.bank.scenefile import sha256
 from lagrade.errors import LagradeError
 from lagrade.grading.manifest import entry_spec, entry_variant
 from lagrade.grading.rubric import Rubric
 from lagrade.grading.submission import UnreadableAnswer, read_sheet
-from lagrade.judge.check import cached_problem, prepare, timeout_verdict
+from lagrade.judge.clocks import PartTimeout, time_limit
+from lagrade.judge.driver import cached_problem, judge, prepare, timeout_verdict
 from lagrade.judge.key import key_answer
 from lagrade.judge.parts import run_checker
 from lagrade.judge.parts.own_coordinates import FOLLOWING
 from lagrade.judge.problem import Problem
 from lagrade.judge.verdict import Verdict
-from lagrade.judge.worker import GRACE, Outcome, PartTimeout, Pool, deadline, time_limit
+from lagrade.judge.worker import Outcome, Pool
 
 #: Parts that can follow from the student's own Lagrangian.
 FOLLOW_L = frozenset({"eom", "momenta", "cyclic", "conserved"})
 #: Parts that bring `given` to their checker: their own L, their transformation equations (the
 #: coordinates they chose, which the later parts are judged in).
 GIVEN_TO = FOLLOW_L | FOLLOWING
-#: The handout's prompt for `conserved` asks for "the conserved quantities" (all of them), so a
-#: graded sheet is judged for completeness too (`"all": true`); a `check` request is not unless
-#: it says so.
-ASKS_ALL_CONSERVED = "the conserved quantities" in PROMPTS["conserved"]
 
 
-def question_key(spec: Mapping[str, Any]) -> str:
-    """What a symbolic question depends on: the scene, the variant's names and options, the
-    quantity — not its numbers, which only numeric follow-ups use (each with its own variant).
-    A class of 1,000 with 1,000 seeds asks only a handful of distinct symbolic questions. A
-    scene file's text is part of its identity (its hash, short)."""
+def structure_key(spec: Mapping[str, Any]) -> str:
+    """What a question's derivation depends on: the scene, the variant's names and options, the
+    quantity — not its numbers. Variants that share it share their derivation (T, V, L, the
+    Euler–Lagrange expressions, below the judge), so a class of 1,000 with 1,000 seeds derives
+    only a handful of structures; each student's question (its sample points, the handout
+    values its feedback quotes) is still their own (`question`). A scene file's text is part of
+    its identity (its hash, short)."""
     variant = entry_variant(spec)
     text = spec.get("scene_text")
     scene = spec["scene"] if text is None else f"{spec['scene']}@{sha256(text)[:16]}"
@@ -50,8 +48,8 @@ def question_key(spec: Mapping[str, Any]) -> str:
 
 
 def question(spec: Mapping[str, Any]) -> Problem:
-    """The Problem of a manifest entry, shared by every student who was asked the same thing."""
-    return cached_problem(dict(spec), question_key(spec))
+    """The Problem of a manifest entry: the student's own variant, as `check --seed` builds it."""
+    return cached_problem(dict(spec))
 
 
 def part_spec(entry: Mapping[str, Any], part: Mapping[str, Any]) -> dict[str, Any]:
@@ -62,31 +60,29 @@ def part_spec(entry: Mapping[str, Any], part: Mapping[str, Any]) -> dict[str, An
 
 
 def warm_up(manifest: dict) -> None:
-    """Derive every reference the batch needs in the parent, so forked children share it.
+    """Derive every structure the batch needs in the parent, so forked children share it.
 
-    Besides `prepare`, each distinct question is asked its own key once: that fills the lazy
-    caches a real answer touches (compiled mutants, sample points, reference values), which a
-    child would otherwise rebuild and throw away for every submission (measured: about 3× the
-    grading time of a warm process)."""
+    Besides `prepare`, one question of each structure is asked its own key once: that fills the
+    lazy caches of the derivation a real answer touches, which a child would otherwise rebuild
+    and throw away for every submission."""
     warm_questions(asked_questions(manifest))
 
 
 def asked_questions(manifest: Mapping[str, Any]) -> dict[tuple[str, str], tuple[dict, Mapping]]:
-    """Each distinct question of the class, (its key, the part), with the spec and part of the
-    first student on the roster who is asked it. The Problem every later student shares is
-    built from that student's variant (its sample points, so the points feedback quotes), so
-    whichever process builds it, this machine's or a Dask worker, builds the same."""
+    """Each distinct structure of the class's questions, (its key, the part), with the spec and
+    part of the first student on the roster who is asked it: what a process derives before it
+    judges (`warm_questions`), whichever process it is, this machine's or a Dask worker."""
     asked: dict[tuple[str, str], tuple[dict, Mapping]] = {}
     for student in manifest["students"]:
         for entry, problem in zip(student["problems"], manifest["problems"], strict=True):
             for part in problem["parts"]:
                 spec = part_spec(entry, part)
-                asked.setdefault((question_key(spec), part["part"]), (spec, part))
+                asked.setdefault((structure_key(spec), part["part"]), (spec, part))
     return asked
 
 
 def warm_questions(asked: Mapping[tuple[str, str], tuple[dict, Mapping]]) -> None:
-    """Derive each question of `asked` (as `asked_questions` gives them) in this process."""
+    """Derive each structure of `asked` (as `asked_questions` gives them) in this process."""
     for spec, part in asked.values():
         problem = question(spec)
         prepare(problem, part["part"], diagnosis=True)
@@ -140,12 +136,8 @@ def grade_part(
             "parse",
         )
     else:
-        deadline(limit + GRACE)
-        try:
-            with time_limit(limit):
-                verdict = _judge(entry, part, answer, given, rubric)
-        except PartTimeout:
-            verdict = timeout_verdict(name, limit)
+        spec = part_spec(entry, part)
+        verdict = judge(spec, name, answer, _given(entry, part, given, rubric), limit=limit)
     return _scored(part, verdict, rubric)
 
 
@@ -156,45 +148,33 @@ def stopped_part(part: Mapping[str, Any], rubric: Rubric, limit: float) -> dict[
 
 
 def _scored(part: Mapping[str, Any], verdict: Verdict, rubric: Rubric) -> dict[str, Any]:
-    """A part's result from its verdict: the points the rubric gives it and the feedback."""
-    name = part["part"]
+    """A part's result: the verdict's one serialised form (`Verdict.to_dict`, without timings),
+    with the sheet's key for the part and the points the rubric gives it."""
     share = rubric.fraction(
         verdict.status, verdict.score, verdict.mistakes, verdict.follows_from_own_answer
     )
     return {
         "key": part["key"],
-        "part": name,
-        "verdict": verdict.status,
         "points": round(share * float(part["points"]), 6),
         "max_points": float(part["points"]),
-        "feedback": list(verdict.feedback),
-        "interpreted": verdict.interpreted,
-        "method": verdict.method,
-        "mistakes": list(verdict.mistakes),
-        "follows_from_own_answer": verdict.follows_from_own_answer,
+        **verdict.to_dict(timings=False),
     }
 
 
-def _judge(entry, part, answer, given, rubric: Rubric) -> Verdict:
-    """The sheet's raw answer (its string, or the list of strings TOML gave) goes to the part's
-    checker as it is: splitting, separators and reading are the checker's (the one door), so
-    `grade` reads an answer exactly as `check` does."""
+def _given(
+    entry, part: Mapping[str, Any], given: dict[str, Any], rubric: Rubric
+) -> dict[str, Any] | None:
+    """What the student brings besides the answer: the rubric's tolerance for a numeric
+    follow-up (the handout's values are the question's own: `question`); their own L for
+    follow-through; and for `conserved` whether the part asks for all of them (its `all`
+    field; a manifest written before the field asked for all)."""
     name = part["part"]
-    problem = question(part_spec(entry, part))
-    return run_checker(problem, name, answer, _given(entry, name, given, rubric))
-
-
-def _given(entry, name: str, given: dict[str, Any], rubric: Rubric) -> dict[str, Any] | None:
-    """What the student brings besides the answer: the handout's own values and the rubric's
-    tolerance for a numeric follow-up; their own L for follow-through; and for `conserved`
-    that the handout asks for all of them."""
     if name == "expression":
-        own = entry_variant(entry)  # this student's numbers
-        return {"values": own.values, "tolerance": rubric.numeric_tolerance}
+        return {"tolerance": rubric.numeric_tolerance}
     if name not in GIVEN_TO:
         return None
-    if name == "conserved" and ASKS_ALL_CONSERVED:
-        return {**given, "all": True}  # the handout asks for "the conserved quantities"
+    if name == "conserved" and part.get("all", True):
+        return {**given, "all": True}
     return given
 
 

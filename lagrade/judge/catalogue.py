@@ -23,6 +23,7 @@ import numpy as np
 import sympy as sp
 
 import lagrade.judge.keepers as keepers
+from lagrade.judge.clocks import Budget, set_aside
 from lagrade.judge.compiled import Combination, Compiled, weighted
 from lagrade.judge.derivatives import euler_lagrange_values
 from lagrade.judge.lazylist import LazyList
@@ -56,7 +57,6 @@ from lagrade.judge.mutations import (
 )
 from lagrade.judge.rows import Rows, equation_rows, span_basis
 from lagrade.judge.sampling import Points
-from lagrade.judge.worker import Budget, set_aside
 from lagrade.mechanics.lagrange import Jet, LagrangianSystem, t
 from lagrade.mechanics.scene import SceneVariant
 

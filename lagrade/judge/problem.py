@@ -27,10 +27,10 @@ from lagrade.bank.registry import get_scene
 from lagrade.bank.scenefile import scene_from_text, sha256
 from lagrade.errors import LagradeError, ParseError, ReferenceUndefined, RequestError
 from lagrade.judge.catalogue import Catalogue
+from lagrade.judge.clocks import PREPARE_LIMIT, Budget
 from lagrade.judge.compiled import Compiled, finite_mask
 from lagrade.judge.rows import Rows, equation_rows
 from lagrade.judge.sampling import Points, Space, seed_for
-from lagrade.judge.worker import PREPARE_LIMIT, Budget
 from lagrade.mechanics.domains import Domain
 from lagrade.mechanics.lagrange import Jet, LagrangianSystem, jet, t
 from lagrade.mechanics.scene import SceneVariant

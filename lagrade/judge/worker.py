@@ -1,17 +1,13 @@
-"""Untrusted work in killable processes, under one time-limit rule, for `check --batch`, the
-`check()` API and `grade` alike.
+"""Untrusted work in killable processes, for `check --batch`, the `check()` API and `grade` alike.
 
-The rule. A part gets its time limit once its question is prepared (preparing, the instructor's
-side, has its own budget per question, `Budget`; work of that kind that a check does on demand,
-such as deriving the mistake catalogue for a wrong answer, runs `set_aside` from the student's
-clock and is charged to the question's budget). The limit is enforced twice: inside the worker an
-alarm interrupts Python-level work (`time_limit`: the part's verdict is `timeout` and the worker
-keeps its caches), and the parent kills a worker that has not answered `GRACE` seconds after that
-(SIGKILL stops sympy or numpy stuck in C code); the item in hand then gets `timeout`, a fresh
-worker takes the rest. A worker moves the parent's deadline for the item in hand with
-`deadline(seconds)`, and tells the parent what the item has achieved so far with `note(value)`:
-a killed item's `timeout` Outcome carries those notes, so work done before the kill (the parts
-of a sheet already judged) is kept and only the rest is done again.
+A worker runs items one at a time under the clocks of `lagrade.judge.clocks`: inside, an alarm
+interrupts Python-level work at a part's limit; here, the parent kills a worker that has not
+answered `GRACE` seconds after the item's deadline (SIGKILL stops sympy or numpy stuck in C code);
+the item in hand then gets `timeout`, a fresh worker takes the rest. A worker moves the parent's
+deadline for the item in hand with `clocks.deadline(seconds)`, and tells the parent what the item
+has achieved so far with `clocks.note(value)`: a killed item's `timeout` Outcome carries those
+notes, so work done before the kill (the parts of a sheet already judged) is kept and only the
+rest is done again.
 
 Workers are forked and persistent: what the parent derived before the pool started is shared,
 what a worker derives stays for its next items, and a worker is replaced after `Limits.recycle`
@@ -29,137 +25,21 @@ import time
 import traceback
 from collections import deque
 from collections.abc import Callable, Hashable, Iterable, Iterator
-from contextlib import contextmanager
 from dataclasses import dataclass, field
 from multiprocessing.connection import Connection, wait
 from multiprocessing.reduction import ForkingPickler
 from typing import Any
 
 from lagrade.errors import LagradeError
+from lagrade.judge.clocks import report_to
 
 _FORK = mp.get_context("fork")
 
-#: Seconds past a part's time limit before the parent kills the worker (the alarm comes first).
-GRACE = 2.0
 #: Allocations between collections of the youngest generation in a worker (Python's default:
 #: 700).
 GC_THRESHOLD = 10_000
 #: Seconds an idle worker waits between checks that its parent is still alive.
 ORPHAN_CHECK = 1.0
-#: Seconds of instructor-side work a question may take in one process (deriving its reference,
-#: sample points and, for wrong answers, its mistake catalogue): its `Budget`.
-PREPARE_LIMIT = 60.0
-
-
-class PartTimeout(BaseException):
-    """A part's time limit ran out (raised by the alarm inside the process doing the work). A
-    BaseException, like KeyboardInterrupt, so that no `except Exception` on the way swallows it."""
-
-
-class PreparationTimeout(PartTimeout):
-    """A question's preparation budget ran out (in `set_aside` work): the question, not the
-    answer, is what took too long."""
-
-
-@dataclass
-class Budget:
-    """The seconds of instructor-side work a question may still take, and what it has spent. One
-    per question and process: once `left` is used up, every later answer to the question gets
-    the same timeout at once instead of trying again."""
-
-    left: float
-    spent: float = 0.0
-
-    @property
-    def exhausted(self) -> bool:
-        return self.left <= 0
-
-    def charge(self, seconds: float) -> None:
-        """Count `seconds` of the question's work against it."""
-        self.left -= seconds
-        self.spent += seconds
-
-
-_aside = False  # inside set_aside: nested instructor work is charged by the outer one
-
-
-@contextmanager
-def set_aside(budget: Budget, timed: bool | None = None):
-    """Run the block as the question's work, not the student's: a running part clock stops and
-    the question's remaining budget applies instead (PreparationTimeout when it runs out), then
-    the part clock goes on with the time it had left. The time is charged to `budget`.
-    `timed`: whether to enforce the budget (default: only when a part clock is running, so that
-    an untimed in-process check stays untimed)."""
-    global _aside
-    if _aside:
-        yield
-        return
-    remaining = signal.getitimer(signal.ITIMER_REAL)[0]
-    if timed is None:
-        timed = remaining > 0
-    if timed and budget.exhausted:
-        raise PreparationTimeout
-    previous = None
-    if timed:
-
-        def ring(signum, frame):
-            raise PreparationTimeout
-
-        previous = signal.signal(signal.SIGALRM, ring)
-        signal.setitimer(signal.ITIMER_REAL, budget.left)
-        if remaining > 0:  # before any part clock, the item's first deadline covers the budget
-            deadline(budget.left + GRACE)
-    _aside = True
-    start = time.perf_counter()
-    try:
-        yield
-    finally:
-        _aside = False
-        budget.charge(time.perf_counter() - start)
-        if timed:
-            signal.setitimer(signal.ITIMER_REAL, 0)
-            signal.signal(signal.SIGALRM, previous)
-            if remaining > 0:
-                signal.setitimer(signal.ITIMER_REAL, remaining)
-                deadline(remaining + GRACE)
-
-
-@contextmanager
-def time_limit(seconds: float | None):
-    """Interrupt Python-level work after `seconds` with PartTimeout (None: no limit). The
-    parent's kill at the deadline backs this up for C code that never returns to Python."""
-    if seconds is None:
-        yield
-        return
-
-    def ring(signum, frame):
-        raise PartTimeout
-
-    previous = signal.signal(signal.SIGALRM, ring)
-    signal.setitimer(signal.ITIMER_REAL, seconds)
-    try:
-        yield
-    finally:
-        signal.setitimer(signal.ITIMER_REAL, 0)
-        signal.signal(signal.SIGALRM, previous)
-
-
-_parent: Connection | None = None  # set inside a worker: where deadline() reports to
-
-
-def deadline(seconds: float) -> None:
-    """Inside a worker: the item in hand must finish within `seconds` from now, else the parent
-    kills the worker. Outside a worker (work run in-process) it does nothing."""
-    if _parent is not None:
-        _parent.send(("deadline", float(seconds)))
-
-
-def note(value: Any) -> None:
-    """Inside a worker: record `value` (picklable, small) as progress of the item in hand. If the
-    worker is killed before the item finishes, its `timeout` Outcome's value is the tuple of
-    these notes in order. Outside a worker it does nothing."""
-    if _parent is not None:
-        _parent.send(("note", value))
 
 
 @dataclass(frozen=True)
@@ -198,8 +78,7 @@ def _address_space_in_use() -> int:
 
 def _serve(conn: Connection, work: Callable[[Any], Any], limits: Limits) -> None:
     """The worker loop: an item in, ("done", status, value) out, until None or EOF."""
-    global _parent
-    _parent = conn
+    report_to(conn)
     signal.signal(signal.SIGINT, signal.SIG_IGN)  # the parent handles Ctrl-C and kills us
     # The parent stops us with SIGTERM: die quietly, not through the CLI's handler (inherited
     # by the fork), which would raise KeyboardInterrupt and print a traceback from the child.

@@ -1,14 +1,14 @@
 """`grade` called twice in one process (the API, a notebook, a test run) gives what a fresh
-`lagrade grade` gives: a class shares each question, built from its first student asked it, so a
-question left in the process by another class (built from another seed with the same names and
-options, whose sample points a wrong answer's feedback quotes) must not be reused."""
+`lagrade grade` gives: each student's question is their own variant's, so a question left in the
+process by another class (built from another seed with the same structure — names and options —
+whose sample points a wrong answer's feedback would quote) is never reused."""
 
 from __future__ import annotations
 
 from lagrade.grading.batch import grade
 from lagrade.grading.manifest import entry_spec, load_manifest
-from lagrade.grading.student import question, question_key
-from lagrade.judge.check import forget_problems
+from lagrade.grading.student import question, structure_key
+from lagrade.judge.driver import forget_problems
 
 
 def _outputs(folder):
@@ -31,7 +31,8 @@ def test_a_question_another_class_built_is_not_reused(workspace):
         other = next(
             seed
             for seed in range(1, 500)
-            if seed != entry["seed"] and question_key({**spec, "seed": seed}) == question_key(spec)
+            if seed != entry["seed"]
+            and structure_key({**spec, "seed": seed}) == structure_key(spec)
         )
         question({**spec, "seed": other})
     grade(manifest_path, workspace / "submissions", workspace / "again", jobs=1)

@@ -20,7 +20,7 @@ from lagrade.grading.batch import grade
 from lagrade.judge.worker import Limits
 from tests.planted import HANG, spinning
 
-check_module = importlib.import_module("lagrade.judge.check")  # the package shadows the name
+check_module = importlib.import_module("lagrade.judge.driver")  # the package shadows the name
 
 PART_LIMIT = 2.0  # the default
 

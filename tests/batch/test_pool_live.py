@@ -12,8 +12,9 @@ import socket
 import time
 from pathlib import Path
 
+from lagrade.judge.clocks import note
 from lagrade.judge.live import SLOW_NICE, LivePool
-from lagrade.judge.worker import Limits, note
+from lagrade.judge.worker import Limits
 
 
 def _work(item):

@@ -89,10 +89,57 @@ def test_all_in_a_batch_request_and_a_bad_all_is_invalid():
     assert bad["verdict"] == "invalid" and '"all"' in bad["feedback"][0]
 
 
-def test_the_handout_asks_for_all_the_conserved_quantities():
-    from lagrade.grading.student import ASKS_ALL_CONSERVED
+_ONE_OR_ALL = """\
+title = "Conserved"
+points = 1
 
-    assert ASKS_ALL_CONSERVED
+[[problems]]
+scene = "kepler"
+parts = [{{ part = "conserved"{extra} }}]
+variants = 1
+"""
+
+
+@pytest.mark.parametrize("extra, asks_all", [("", True), (", all = false", False)])
+def test_whether_all_are_asked_is_a_field_of_the_part(tmp_path, extra, asks_all):
+    """The rule "all the conserved quantities" is the part's `all` field (default true), carried
+    by the manifest and read by `grade` — never read from the prompt's wording: the same one
+    quantity (ℓ, where ℓ and the energy are conserved) is complete for `all = false` and half
+    of the set for the default."""
+    from lagrade.assign.generate import generate
+    from lagrade.grading.batch import grade
+
+    (tmp_path / "a.toml").write_text(_ONE_OR_ALL.format(extra=extra))
+    (tmp_path / "roster.csv").write_text("id,name\ns1,Ada\n")
+    generate(tmp_path / "a.toml", tmp_path / "roster.csv", 1, tmp_path / "out", formats=("md",))
+    manifest = json.loads((tmp_path / "out" / "manifest.json").read_text())
+    (part,) = manifest["problems"][0]["parts"]
+    assert part["all"] is asks_all
+    handout = next((tmp_path / "out" / "handouts").glob("*.md")).read_text()
+    assert ("any one" in handout) is not asks_all
+    (tmp_path / "subs").mkdir()
+    names = manifest["students"][0]["problems"][0]["names"]  # the variant's (r may be rho)
+    angular = f"m {names['r']}^2 {names['theta']}_dot"
+    (tmp_path / "subs" / "s1.toml").write_text(
+        f'student_id = "s1"\n[problem1]\nconserved = "{angular}"\n'
+    )
+    summary = grade(tmp_path / "out" / "manifest.json", tmp_path / "subs", tmp_path / "g", jobs=1)
+    (result,) = summary.results
+    (graded,) = result["problems"][0]["parts"]
+    assert graded["verdict"] == ("incorrect" if asks_all else "correct"), graded
+    assert graded["points"] == pytest.approx(0.5 if asks_all else 1.0)
+
+
+def test_all_is_refused_on_another_part(tmp_path):
+    from lagrade.assign.assignment import load_assignment
+    from lagrade.errors import AssignmentError
+
+    path = tmp_path / "a.toml"
+    path.write_text(
+        _ONE_OR_ALL.format(extra="").replace('part = "conserved"', 'part = "eom", all = false')
+    )
+    with pytest.raises(AssignmentError, match=r"parts\[1\]\.all: only the 'conserved' part"):
+        load_assignment(path)
 
 
 def test_the_command_line_asks_for_completeness_with_all(capsys):

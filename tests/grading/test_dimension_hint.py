@@ -15,7 +15,6 @@ import pytest
 import sympy as sp
 
 from lagrade.bank.registry import get_scene, scene_ids
-from lagrade.judge.check import cached_problem
 from lagrade.judge.dimensions import (
     ENERGY,
     LENGTH,
@@ -25,6 +24,7 @@ from lagrade.judge.dimensions import (
     symbol_dimensions,
     unit_text,
 )
+from lagrade.judge.driver import cached_problem
 from lagrade.judge.key import key_answer
 from lagrade.judge.parts.reading import read, read_labelled
 from lagrade.mechanics.scene import SceneVariant

@@ -5,7 +5,8 @@ import time
 
 import sympy as sp
 
-from lagrade.judge.check import cached_problem, check_request
+from lagrade.judge.check import check_request
+from lagrade.judge.driver import cached_problem
 from lagrade.judge.key import key_answer
 from lagrade.judge.problem import build_problem
 from lagrade.notation.printer import plain
@@ -70,7 +71,8 @@ def test_results_report_prepare_ms_beside_ms():
 def test_reading_the_question_counts_as_its_preparation():
     """Parsing an ad-hoc problem's L is the instructor's side of the work: the first answer's
     `prepare_ms` includes it (it once fell outside both clocks)."""
-    from lagrade.judge.check import _problems, problem_key
+    from lagrade.judge.driver import _problems
+    from lagrade.judge.problem import problem_key
 
     spec = {
         "lagrangian": "m*l^2*theta_dot^2/2 + m*g*l*cos(theta) + 0*k_9021",

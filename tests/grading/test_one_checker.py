@@ -13,7 +13,8 @@ from lagrade.assign.views import MULTILINE
 from lagrade.bank import get_scene
 from lagrade.grading.rubric import Rubric
 from lagrade.grading.student import grade_part
-from lagrade.judge.check import check, forget_problems
+from lagrade.judge.check import check
+from lagrade.judge.driver import forget_problems
 from lagrade.judge.key import key_answer
 from lagrade.judge.parts import PARTS
 

@@ -23,7 +23,8 @@ from lagrade.cli.check import check_batch_file
 from lagrade.grading.batch import grade
 from lagrade.grading.manifest import student_variant
 from lagrade.grading.rubric import Rubric
-from lagrade.judge.check import check, forget_problems
+from lagrade.judge.check import check
+from lagrade.judge.driver import forget_problems
 from lagrade.notation.printer import answer_latex
 
 SEED = 2025

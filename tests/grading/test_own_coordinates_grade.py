@@ -17,7 +17,7 @@ from lagrade.grading.answer_page.sheets import sheet_text
 from lagrade.grading.batch import _rubric, grade
 from lagrade.grading.manifest import entry_spec
 from lagrade.grading.rubric import Rubric
-from lagrade.grading.student import ASKS_ALL_CONSERVED, grade_student, question
+from lagrade.grading.student import grade_student, question
 from lagrade.judge.check import check, run_batch
 
 from .own_coordinates_cases import CASES, answers
@@ -96,7 +96,7 @@ def _checked(entry: dict, part: str, table: dict):
     given = {"transformation": table["transformation"]}
     if part in ("eom", "momenta", "cyclic", "conserved"):
         given["lagrangian"] = table["lagrangian"]
-    if part == "conserved" and ASKS_ALL_CONSERVED:
+    if part == "conserved":  # the generated part asks for all of them (its `all` field)
         given["all"] = True
     answer = table[part]
     if part == "cyclic":

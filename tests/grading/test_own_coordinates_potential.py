@@ -14,7 +14,8 @@ import pytest
 
 from lagrade.bank import get_scene, scene_ids
 from lagrade.bank.scenefile import presentations
-from lagrade.judge.check import cached_problem, check
+from lagrade.judge.check import check
+from lagrade.judge.driver import cached_problem
 from lagrade.judge.parts.own_coordinates import _verified_inverses
 from lagrade.mechanics.reparametrize import coordinates_to_carry
 from lagrade.mechanics.scene import SceneVariant
@@ -209,9 +210,9 @@ def test_a_map_whose_reference_takes_too_long_keeps_the_statements_coordinates(m
     """Deriving in the student's coordinates has its own budget (10 s per map in a process);
     a map that exhausts it is judged in the statement's coordinates, saying why, never a
     timeout of the part."""
+    from lagrade.judge.clocks import time_limit
     from lagrade.judge.parts import own_coordinates, run_checker
     from lagrade.judge.problem import build_problem
-    from lagrade.judge.worker import time_limit
 
     monkeypatch.setattr(own_coordinates, "OWN_PREPARE_LIMIT", 1e-6)
     fresh = build_problem({"scene": "spring_pendulum"})  # nothing of it cached yet

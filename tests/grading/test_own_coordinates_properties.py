@@ -16,7 +16,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from lagrade.bank import get_scene
-from lagrade.judge.check import cached_problem
+from lagrade.judge.driver import cached_problem
 from lagrade.judge.parts.own_coordinates import chosen_coordinates
 from lagrade.judge.sampling import coordinate_range
 from lagrade.mechanics import lagrange as mech

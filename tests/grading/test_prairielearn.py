@@ -150,7 +150,7 @@ def test_grade_stops_a_part_held_in_c_code_and_grades_the_others(tmp_path, monke
     part's limit + grace, the held part (the planted checker spinning in C, `tests/planted.py`)
     is `timeout` and every other part is graded."""
     from lagrade.grading import prairielearn_runtime, student
-    from lagrade.judge.worker import GRACE
+    from lagrade.judge.clocks import GRACE
     from tests.planted import HANG, spinning
 
     monkeypatch.setattr(student, "run_checker", spinning(student.run_checker))

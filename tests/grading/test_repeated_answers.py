@@ -6,9 +6,10 @@ import importlib
 
 import pytest
 
-from lagrade.judge.check import cached_problem, check_request
+from lagrade.judge.check import check_request
+from lagrade.judge.driver import cached_problem
 
-check_module = importlib.import_module("lagrade.judge.check")
+check_module = importlib.import_module("lagrade.judge.driver")
 
 
 @pytest.fixture

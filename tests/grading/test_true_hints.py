@@ -17,8 +17,8 @@ import pytest
 import sympy as sp
 
 from lagrade.bank.registry import scene_ids
-from lagrade.judge.check import cached_problem
 from lagrade.judge.compiled import Compiled
+from lagrade.judge.driver import cached_problem
 from lagrade.judge.mutations import Mutant, terms_changed
 from lagrade.mechanics.lagrange import t
 

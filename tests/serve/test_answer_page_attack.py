@@ -14,7 +14,7 @@ import pytest
 from lagrade.cli.main import main
 from lagrade.grading.answer_page.preview import PREVIEW_TIME_LIMIT
 from lagrade.grading.answer_page.saving import SAVE_PART_TIME_LIMIT
-from lagrade.judge.worker import GRACE
+from lagrade.judge.clocks import GRACE
 from tests.planted import HANG
 from tests.serve.conftest import ROSTER, post, start_server, stop_server
 

@@ -19,7 +19,7 @@ from lagrade.grading.cluster.chunks import chunk_size, cut, describe, run_chunks
 from lagrade.grading.cluster.connect import connect, threads
 from lagrade.grading.cluster.on_worker import error_outcome, grade_chunk, hold
 from lagrade.grading.rubric import Rubric
-from lagrade.grading.student import asked_questions, part_spec, question_key
+from lagrade.grading.student import asked_questions, part_spec, structure_key
 from lagrade.grading.submission import read_regular_file
 from lagrade.judge.worker import Limits, Outcome
 
@@ -70,7 +70,7 @@ def _questions_of(item: tuple[str, dict[str, Any]]) -> str:
     """The questions a student's sheet asks (their symbolic form, not the numbers): sheets
     asking the same go to the same chunks, whose worker derives them once."""
     student = item[1]["student"]
-    keys = [question_key(part_spec(entry, {"part": ""})) for entry in student["problems"]]
+    keys = [structure_key(part_spec(entry, {"part": ""})) for entry in student["problems"]]
     return json.dumps(keys)
 
 

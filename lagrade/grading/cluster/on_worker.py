@@ -22,7 +22,8 @@ from typing import TYPE_CHECKING, Any
 
 from lagrade.assign.manifest import project_version
 from lagrade.errors import ClusterError
-from lagrade.judge.check import check_pool, forget_problems, run_batch
+from lagrade.judge.check import check_pool, run_batch
+from lagrade.judge.driver import forget_problems
 from lagrade.judge.worker import Limits, Outcome, Pool
 
 if TYPE_CHECKING:

@@ -34,6 +34,7 @@ import numpy as np
 import sympy as sp
 
 from lagrade.errors import LagradeError, ParseError, RequestError
+from lagrade.judge.clocks import Budget, PreparationTimeout, set_aside
 from lagrade.judge.compiled import Compiled, to_length
 from lagrade.judge.coordinate_relation import relate
 from lagrade.judge.parts.reading import reading_notes
@@ -42,7 +43,6 @@ from lagrade.judge.problem import Problem
 from lagrade.judge.sampling import coordinate_range
 from lagrade.judge.situation import symbol_text
 from lagrade.judge.verdict import Verdict
-from lagrade.judge.worker import Budget, PreparationTimeout, set_aside
 from lagrade.mechanics.lagrange import Jet
 from lagrade.mechanics.reparametrize import (
     Reparametrized,
