@@ -4,8 +4,8 @@ that held a worker in C once existed (an exact stage multiplying multi-megabit i
 judge now bounds its own work before it starts, so the kill at limit + grace is tested with
 this plant, whatever the judge's bounds become.
 
-`install()` patches the checker `lagrade grade`, the answer page and PrairieLearn call
-(`lagrade.grading.student.run_checker`); forked workers inherit it. A server started in a process
+`install()` patches the checker the one driver calls for every entry point
+(`lagrade.judge.driver.run_checker`); forked workers inherit it. A server started in a process
 of its own installs it with `python -c "import tests.planted as p; p.install(); ..."`."""
 
 from __future__ import annotations
@@ -23,6 +23,6 @@ def spinning(real):
 
 
 def install() -> None:
-    import lagrade.grading.student as student
+    import lagrade.judge.driver as driver
 
-    student.run_checker = spinning(student.run_checker)
+    driver.run_checker = spinning(driver.run_checker)

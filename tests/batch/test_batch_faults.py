@@ -10,7 +10,7 @@ from pathlib import Path
 
 import pytest
 
-from lagrade.grading import student
+import lagrade.judge.driver as driver
 from lagrade.grading.batch import grade
 from lagrade.judge.worker import Limits
 
@@ -109,14 +109,14 @@ HANG = "zzhang"  # an answer that makes the planted checker hang
 
 
 def test_an_answer_that_hangs_a_check_in_python_times_out_that_part_only(workspace, monkeypatch):
-    real = student.run_checker
+    real = driver.run_checker
 
     def hanging(problem, part, answer, given=None):
         if HANG in str(answer):
             time.sleep(60)
         return real(problem, part, answer, given)
 
-    monkeypatch.setattr(student, "run_checker", hanging)  # children are forked: they inherit it
+    monkeypatch.setattr(driver, "run_checker", hanging)  # children are forked: they inherit it
     subs = workspace / "submissions"
     (subs / "s01.toml").write_text(f"[problem1]\ndof = '1'\neom = '{HANG}'\n")
     summary = grade(
@@ -133,14 +133,14 @@ def test_an_answer_that_hangs_a_check_in_python_times_out_that_part_only(workspa
 def test_an_answer_that_hangs_a_check_in_c_code_is_killed_and_the_batch_goes_on(
     workspace, monkeypatch
 ):
-    real = student.run_checker
+    real = driver.run_checker
 
     def spinning(problem, part, answer, given=None):
         if HANG in str(answer):
             sum(range(10**13))  # one C call: no Python signal handler runs until it returns
         return real(problem, part, answer, given)
 
-    monkeypatch.setattr(student, "run_checker", spinning)
+    monkeypatch.setattr(driver, "run_checker", spinning)
     subs = workspace / "submissions"
     (subs / "s03.toml").write_text(f"[problem2]\ncyclic = '{HANG}'\n")
     summary = grade(

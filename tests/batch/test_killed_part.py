@@ -12,10 +12,10 @@ from pathlib import Path
 
 import pytest
 
+import lagrade.judge.driver as driver
 from lagrade.assign.generate import generate
 from lagrade.cli.demo_class import ASSIGNMENT as DEMO_ASSIGNMENT
 from lagrade.cli.demo_class import write_submissions
-from lagrade.grading import student
 from lagrade.grading.batch import grade
 from lagrade.judge.worker import Limits
 from tests.planted import HANG, spinning
@@ -86,7 +86,7 @@ def demo_class(tmp_path_factory) -> Path:
 def test_a_slow_c_level_answer_costs_only_its_part(demo_class, tmp_path, monkeypatch):
     """The demo class with one answer replaced by one that holds its worker in C (the planted
     checker, `tests/planted.py`): that student keeps every other part's points."""
-    monkeypatch.setattr(student, "run_checker", spinning(student.run_checker))
+    monkeypatch.setattr(driver, "run_checker", spinning(driver.run_checker))
     subs = tmp_path / "subs"
     shutil.copytree(demo_class / "pristine", subs)
     _replace_answer(subs / "d1.toml", 1, "block_acceleration", HANG)
@@ -123,7 +123,7 @@ def test_a_part_killed_in_c_code_keeps_the_parts_before_and_after_it(
 ):
     """The planted checker spins in C whatever the judge's own bounds become: the kill at
     limit + grace is what stops it, twice in one sheet, and each kill costs only its part."""
-    monkeypatch.setattr(student, "run_checker", spinning(student.run_checker))
+    monkeypatch.setattr(driver, "run_checker", spinning(driver.run_checker))
     subs = tmp_path / "subs"
     shutil.copytree(demo_class / "pristine", subs)
     _replace_answer(subs / "d2.toml", 1, "eom", HANG)

@@ -15,6 +15,7 @@ from pathlib import Path
 
 import pytest
 
+import lagrade.judge.driver as driver
 from lagrade.cli.main import main
 
 ASSIGNMENT = """\
@@ -149,11 +150,11 @@ def test_grade_stops_a_part_held_in_c_code_and_grades_the_others(tmp_path, monke
     """PrairieLearn calls grade() in its own process: the check runs in a worker killed at the
     part's limit + grace, the held part (the planted checker spinning in C, `tests/planted.py`)
     is `timeout` and every other part is graded."""
-    from lagrade.grading import prairielearn_runtime, student
+    from lagrade.grading import prairielearn_runtime
     from lagrade.judge.clocks import GRACE
     from tests.planted import HANG, spinning
 
-    monkeypatch.setattr(student, "run_checker", spinning(student.run_checker))
+    monkeypatch.setattr(driver, "run_checker", spinning(driver.run_checker))
     (tmp_path / "a.toml").write_text(SLOW_ASSIGNMENT)
     out = tmp_path / "questions"
     assert (
