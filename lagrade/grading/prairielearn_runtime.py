@@ -38,9 +38,10 @@ from lagrade.assign.views import presentation, problem_view, symbolic_solution
 from lagrade.bank.registry import scene_reference
 from lagrade.grading.prompts import prompt_html
 from lagrade.grading.rubric import Rubric, rubric_from_table
-from lagrade.grading.student import grade_part, sheet_given, stopped_part
-from lagrade.judge.clocks import PREPARE_LIMIT
+from lagrade.grading.student import grade_part, part_spec, question, sheet_given, stopped_part
+from lagrade.judge.clocks import PREPARE_LIMIT, PartTimeout, time_limit
 from lagrade.judge.parts.reading import is_unreadable_line
+from lagrade.judge.read import read_answer
 from lagrade.judge.worker import Limits, Pool
 
 #: Seconds per part when PrairieLearn grades (its own worker limits the whole call too); a part
@@ -83,15 +84,17 @@ def parse(
     scenes: Mapping[str, str] | None = None,
 ) -> None:
     """Refuse an answer with an unreadable line as a format error (no attempt charged); say how
-    each answer was read."""
-    results = _judge_all(data, assignment, index, scenes)
+    each answer was read. Only reads (`lagrade.judge.read`): the submission is judged once, in
+    `grade`."""
+    readings = _backstop({**_task(data, assignment, index, scenes), "kind": "read"})
     errors = data.setdefault("format_errors", {})
     shown = {}
-    for key, result in results.items():
-        unread = unreadable(result)
+    for key, reading in readings.items():
+        unread = reading["unreadable"]
         if unread and key not in errors:  # an element's own format error stays
             errors[key] = format_error_html(unread)
-        shown[key] = part_feedback(result, graded=False)
+        shown[key] = {"outcome": "", "read": reading["read"], "error": "\n".join(unread)}
+        shown[key]["notes"] = []
     data.setdefault("feedback", {})["lagrade"] = shown
 
 
@@ -239,7 +242,13 @@ def _judge_all(
 ) -> dict[str, dict]:
     """Every part's result, judged in a worker process (`_backstop`): PrairieLearn's own
     process never runs the checks, so C code that no alarm stops cannot hold it."""
-    task = {
+    return _backstop({**_task(data, assignment, index, scenes), "kind": "grade"})
+
+
+def _task(
+    data: Mapping[str, Any], assignment: str, index: int, scenes: Mapping[str, str] | None
+) -> dict[str, Any]:
+    return {
         "assignment": assignment,
         "index": index,
         "scenes": dict(scenes or {}),
@@ -247,12 +256,49 @@ def _judge_all(
         "submitted": dict(data.get("submitted_answers", {}) or {}),
         "part_time_limit": PART_TIME_LIMIT,
     }
-    return _backstop(task)
+
+
+#: What a part whose reading ran out of time shows (its worker stopped at the limit + grace).
+READING_TOO_LONG = "Reading this answer took too long."
+
+
+def _read_task(task: Mapping[str, Any]) -> dict[str, dict]:
+    """How each part's answer is read, in the worker, under the part's time limit: what was
+    read (the lines' echoes) and the parser's message for each line that cannot be. Noted part
+    by part like a grading task, so that a reading stopped by a kill costs that part only."""
+    problem, _rubric = _problem(task["assignment"], task["index"], task["scenes"])
+    entry = {**scene_reference(problem.scene), "seed": task["seed"]}
+    found = {}
+    for part in problem.parts:
+        result = resume.earlier(task, part.key)
+        if result is None and resume.stopped(task, part.key):
+            result = {"read": "", "unreadable": [READING_TOO_LONG]}
+        if result is None:
+            resume.begin(part.key)
+            result = _read_part(task, entry, part)
+            resume.judged(part.key, result)
+        found[part.key] = result
+    return found
+
+
+def _read_part(task: Mapping[str, Any], entry: Mapping[str, Any], part: Any) -> dict[str, Any]:
+    spec = {"key": part.key, "part": part.part, "quantity": part.quantity}
+    answer = _answer(task["submitted"].get(part.key))
+    try:
+        with time_limit(task["part_time_limit"]):
+            reading = read_answer(question(part_spec(entry, spec)), part.part, answer)
+    except PartTimeout:
+        return {"read": "", "unreadable": [READING_TOO_LONG]}
+    read = "; ".join(line.plain for line in reading.lines if line.plain)
+    return {"read": read, "unreadable": reading.unreadable_lines}
 
 
 def _judge_task(task: Mapping[str, Any]) -> dict[str, dict]:
     """The body of `_judge_all`, in the worker: each part noted as it is judged, so that a kill
-    costs only the part it stopped (`lagrade.grading.resume`)."""
+    costs only the part it stopped (`lagrade.grading.resume`). A reading task goes to
+    `_read_task`."""
+    if task.get("kind") == "read":
+        return _read_task(task)
     problem, rubric = _problem(task["assignment"], task["index"], task["scenes"])
     submitted = task["submitted"]
     limit = task["part_time_limit"]

@@ -236,3 +236,39 @@ def test_a_pl_answer_is_read_as_check_reads_the_same_text(tmp_path, separator):
         assert notes == list(verdict.feedback), (part, text)
     assert data["partial_scores"]["eom"]["score"] == 1.0
     assert data["partial_scores"]["cyclic"]["score"] == 0.0  # every coordinate: a blind guess
+
+
+def test_parse_reads_and_never_judges(tmp_path, monkeypatch):
+    """PrairieLearn judges a submission once: `parse` only reads (a wrong answer costs it no
+    judging at all — the checker planted to fail is never called), and refuses an unreadable
+    line as a format error; `grade` then judges."""
+    calls = []
+
+    def never(*args, **kwargs):
+        calls.append(args[1])
+        raise AssertionError("parse judged an answer")
+
+    (tmp_path / "a.toml").write_text(SLOW_ASSIGNMENT)
+    out = tmp_path / "questions"
+    assert (
+        main(["export", "prairielearn", str(tmp_path / "a.toml"), "--seed", "3", "--out", str(out)])
+        == 0
+    )
+    server = load_server(next((out / "questions").iterdir()))
+    data = new_data(5)
+    server.generate(data)
+    wrong_l = "m*g*h + x_M_dot^3"
+    data["submitted_answers"] = {"dof": "2", "lagrangian": wrong_l, "block_acceleration": "g*("}
+    real = driver.run_checker
+    monkeypatch.setattr(driver, "run_checker", never)  # the forked worker inherits it
+    server.parse(data)
+    assert calls == []
+    assert set(data["format_errors"]) == {"block_acceleration"}
+    shown = data["feedback"]["lagrade"]
+    assert shown["lagrangian"]["read"] == "m*g*h + x_M_dot^3"
+    assert shown["lagrangian"]["outcome"] == "" and shown["lagrangian"]["notes"] == []
+    monkeypatch.setattr(driver, "run_checker", real)
+    data["format_errors"] = {}
+    data["submitted_answers"]["block_acceleration"] = "g"
+    server.grade(data)
+    assert data["partial_scores"]["lagrangian"]["score"] == 0.0

@@ -1,51 +1,51 @@
-"""How an answer is read, for the page's live preview: the grader's own reading (the same
-checker `lagrade grade` runs, so the preview never disagrees with the grade about what was
-read), shown as MathML, or the parser's message with its caret. Whether the answer is right
-is not shown here: that is the grade's, and only when the assignment allows it.
+"""How an answer is read, for the page's live preview: the reading step of the one door
+(`lagrade.judge.read.read_answer`, the reader the part's checker reads with, so the preview never
+disagrees with the grade about what was read), shown as MathML, or the parser's message with its
+caret. Reading judges nothing: no reference is derived and no mistake is looked for, so a preview
+of a wrong answer costs what a preview of a right one does. Whether the answer is right is the
+grade's, and only when the assignment allows it.
 
-Runs inside the server's worker processes (`judging`: the checker's time limit is a signal,
-which only a process's main thread can take, and C code that ignores it is killed)."""
+Runs inside the server's worker processes (`judging`: the time limit is a signal, which only a
+process's main thread can take, and C code that ignores it is killed)."""
 
 from __future__ import annotations
 
 from collections.abc import Mapping
 from typing import Any
 
-from lagrade.errors import LagradeError, ParseError
-from lagrade.grading.manifest import entry_spec
-from lagrade.grading.rubric import Rubric
-from lagrade.grading.student import grade_part, question
-from lagrade.judge.parts.reading import heard_notes
-from lagrade.notation.parse import parse_answer
+from lagrade.grading.student import part_spec, question
+from lagrade.judge.clocks import PartTimeout, time_limit
+from lagrade.judge.read import read_answer
 
 #: Seconds one preview may take (a preview is asked at every pause in typing).
 PREVIEW_TIME_LIMIT = 3.0
-_RUBRIC = Rubric()
 
 
 def preview(entry: Mapping[str, Any], part: Mapping[str, Any], text: str) -> dict[str, Any]:
     """{"status": "empty"|"read"|"unreadable"|"timeout", "lines": [{"plain", "mathml"}],
-    "message": the parser's error (caret included) when unreadable, "warnings": the parser's
-    notes on how it read the answer}."""
-    if not text.strip():
-        return {"status": "empty", "lines": [], "message": "", "warnings": []}
-    with heard_notes() as notes:
-        result = grade_part(entry, part, text, {}, _RUBRIC, PREVIEW_TIME_LIMIT)
-    if result["verdict"] == "timeout":
+    "message": the parser's error (caret included) when unreadable, or one per unreadable line,
+    "warnings": the parser's notes on how it read the answer}."""
+    try:
+        with time_limit(PREVIEW_TIME_LIMIT):
+            reading = read_answer(question(part_spec(entry, part)), part["part"], text)
+    except PartTimeout:
         return timed_out()
-    if result["verdict"] == "invalid":
-        message = "\n".join(result["feedback"])
-        return {"status": "unreadable", "lines": [], "message": message, "warnings": notes}
-    shown = result["interpreted"]
-    lines = [line for line in (shown if isinstance(shown, list) else [shown]) if line]
-    unread = [f for f in result["feedback"] if "could not be read" in f]
+    if reading.status == "empty":
+        return {"status": "empty", "lines": [], "message": "", "warnings": []}
+    if reading.status == "unreadable":
+        return {
+            "status": "unreadable",
+            "lines": [],
+            "message": reading.message,
+            "warnings": list(reading.notes),
+        }
     return {
         "status": "read",
         "lines": [
-            {"plain": str(line), "mathml": _mathml(entry, part, str(line))} for line in lines
+            {"plain": line.plain, "mathml": line.mathml} for line in reading.lines if line.plain
         ],
-        "message": "\n".join(unread),
-        "warnings": list(notes),
+        "message": reading.message,
+        "warnings": list(reading.notes),
     }
 
 
@@ -58,24 +58,3 @@ def timed_out() -> dict[str, Any]:
         "message": "Reading this answer took too long.",
         "warnings": [],
     }
-
-
-def _mathml(entry: Mapping[str, Any], part: Mapping[str, Any], line: str) -> str:
-    """The echo of one read line typeset in the student's order, every product shown
-    (`lagrade.notation.typeset`), or "" where it is not a formula (a list of names, a number of
-    degrees of freedom). The echo is the grader's own output in the plain grammar, parsed again
-    by the project's parser, never evaluated."""
-    if part["part"] in ("dof", "cyclic", "coordinates") or not line.strip():
-        return ""
-    spec = entry_spec(entry)
-    if part["part"] == "expression":
-        spec["quantity"] = part["quantity"]
-    try:
-        problem = question(spec)
-        labels = [f"p_{c}" for c in problem.coordinates] + (
-            [part["quantity"]] if part.get("quantity") else []
-        )
-        parsed = parse_answer(line, problem.vocabulary(labels))
-        return str(parsed.mathml(problem.coordinates))
-    except (ParseError, LagradeError, ValueError, TypeError):
-        return ""

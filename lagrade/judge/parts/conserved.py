@@ -23,6 +23,7 @@ from lagrade.judge.parts.common import (
 )
 from lagrade.judge.parts.items import list_items, without_none
 from lagrade.judge.parts.reading import (
+    Lines,
     has_acceleration,
     own_lagrangian,
     read_labelled,
@@ -71,9 +72,15 @@ def _conservation(
     return out, constant, grad[:, 1:]  # column 0 is ∂/∂t
 
 
-def check_conserved(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
+def read_conserved(problem: Problem, answer: Any) -> Lines:
+    """The quantities of a `conserved` answer, one per item, each `Q` or `name = Q`; `none`
+    for none."""
     items = without_none(list_items(answer, "conserved"))
-    lines = read_lines(items, lambda item: read_labelled(problem, item))
+    return read_lines(items, lambda item: read_labelled(problem, item))
+
+
+def check_conserved(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
+    lines = read_conserved(problem, answer)
     reads = lines.reads
     echoes = lines.echoes or ["none"]
     key = problem.system.conserved_quantities

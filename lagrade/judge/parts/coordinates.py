@@ -10,6 +10,14 @@ from lagrade.judge.parts.items import list_items
 from lagrade.judge.parts.reading import read_names
 from lagrade.judge.problem import Problem
 from lagrade.judge.verdict import Verdict
+from lagrade.notation.parse import NameRead
+
+
+def read_coordinates(problem: Problem, answer: Any) -> list[NameRead]:
+    """The names a `coordinates` answer gives, listed like any list or separated by spaces."""
+    example = ", ".join(problem.coordinates)
+    expected = f"Name the generalized coordinates, separated by commas, as in {example}."
+    return read_names(problem, list_items(answer, "coordinates"), expected)
 
 
 def check_coordinates(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
@@ -18,8 +26,7 @@ def check_coordinates(problem: Problem, answer: Any, given: Mapping | None) -> V
     an unreadable answer: another set of coordinates is a wrong answer to this question."""
     wanted = list(problem.coordinates)
     example = ", ".join(wanted)
-    expected = f"Name the generalized coordinates, separated by commas, as in {example}."
-    read = read_names(problem, list_items(answer, "coordinates"), expected)
+    read = read_coordinates(problem, answer)
     named = [name.name for name in read]
     right = [name.coordinate for name in read if name.coordinate is not None and name.order == 0]
     if len(right) == len(named) and sorted(right) == sorted(wanted):

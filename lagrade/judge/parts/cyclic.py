@@ -12,17 +12,15 @@ from lagrade.judge.parts.items import list_items, without_none
 from lagrade.judge.parts.reading import own_lagrangian, read_names
 from lagrade.judge.problem import Problem
 from lagrade.judge.verdict import Verdict
+from lagrade.notation.parse import NameRead
 from lagrade.notation.printer import plain
 
 
-def check_cyclic(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
-    """The coordinates named (in any spelling, separated as any list) against ∂L/∂q = 0; a
-    velocity named for its coordinate is half wrong, a name that is no coordinate unreadable."""
+def read_cyclic(problem: Problem, answer: Any) -> list[NameRead]:
+    """The coordinates a `cyclic` answer names, in any spelling, separated as any list; a name
+    that is no coordinate (nor its velocity) cannot be read."""
     hint = f"Name the cyclic coordinates, e.g. {problem.coordinates[0]}; or write none."
     read = read_names(problem, without_none(list_items(answer, "cyclic")), hint)
-    names: list[str] = []
-    echoes: list[str] = []
-    velocity_named = []
     for name in read:
         if name.coordinate is None or name.order > 1:
             what = f"'{name.name}' is not a coordinate of this problem"
@@ -31,6 +29,16 @@ def check_cyclic(problem: Problem, answer: Any, given: Mapping | None) -> Verdic
                 name.span,
                 name.source,
             )
+    return read
+
+
+def check_cyclic(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
+    """The coordinates named against ∂L/∂q = 0; a velocity named for its coordinate is half
+    wrong, a name that is no coordinate unreadable."""
+    names: list[str] = []
+    echoes: list[str] = []
+    velocity_named = []
+    for name in read_cyclic(problem, answer):
         echoes.append(name.name)
         names.append(name.coordinate)
         if name.order == 1:

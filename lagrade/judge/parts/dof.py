@@ -7,22 +7,32 @@ from collections.abc import Mapping
 from typing import Any
 
 import lagrade.untrusted as untrusted
+from lagrade.errors import ParseError
 from lagrade.judge.parts.items import single_text
 from lagrade.judge.problem import Problem
 from lagrade.judge.verdict import Verdict, invalid
 
 #: The longest whole number read as a count of degrees of freedom.
 MAX_DIGITS = 30
+#: What a `dof` answer that is not a whole number is told.
+WHOLE_NUMBER = "Write the number of degrees of freedom as a whole number, e.g. 2."
 
 
-def check_dof(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
+def read_dof(problem: Problem, answer: Any) -> str:
+    """The whole number a `dof` answer gives, as typed (its sign kept)."""
     if not isinstance(answer, int):
         answer = single_text(answer, "dof")
     text = str(answer).strip()
     if isinstance(answer, bool) or not (isinstance(answer, int) or re.fullmatch(r"[+-]?\d+", text)):
-        return invalid(
-            "dof", "Write the number of degrees of freedom as a whole number, e.g. 2.", text
-        )
+        raise ParseError(WHOLE_NUMBER, (0, len(text)), text)
+    return text
+
+
+def check_dof(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
+    try:
+        text = read_dof(problem, answer)
+    except ParseError as error:
+        return invalid("dof", WHOLE_NUMBER, error.source)
     if len(text.lstrip("+-")) > MAX_DIGITS:  # int() of 4,300+ digits raises; no system needs it
         return Verdict(
             "dof",
@@ -32,7 +42,7 @@ def check_dof(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
             untrusted.clip(text, 40),
             "exact",
         )
-    n = int(text if not isinstance(answer, int) else answer)
+    n = int(text)
     if n == problem.dof:
         return Verdict("dof", "correct", 1.0, (), str(n), "exact")
     feedback = [f"{n} is not the number of degrees of freedom."]

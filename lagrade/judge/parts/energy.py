@@ -34,6 +34,7 @@ from lagrade.judge.parts.common import (
     witness_point,
 )
 from lagrade.judge.parts.reading import (
+    Read,
     decided,
     has_acceleration,
     read_single,
@@ -179,8 +180,23 @@ def _same_dynamics_notes(problem: Problem, answer: Compiled, match, points: Poin
     return notes
 
 
+def read_lagrangian(problem: Problem, answer: Any) -> Read:
+    """A Lagrangian, `L = …` allowed, an arbitrary additive constant (`+ const`) dropped."""
+    return without_additive_constant(problem, read_single(problem, answer, "lagrangian", "L"))
+
+
+def read_kinetic(problem: Problem, answer: Any) -> Read:
+    """A kinetic energy, `T = …` allowed."""
+    return read_single(problem, answer, "T", "T")
+
+
+def read_potential(problem: Problem, answer: Any) -> Read:
+    """A potential energy, `V = …` allowed, an arbitrary additive constant dropped."""
+    return without_additive_constant(problem, read_single(problem, answer, "V", "V"))
+
+
 def check_lagrangian(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
-    got = without_additive_constant(problem, read_single(problem, answer, "lagrangian", "L"))
+    got = read_lagrangian(problem, answer)
     tree = got.from_tree
     judged = judge_lagrangian(problem, got.compiled, diagnose=not tree)
     if judged[0] != "correct" and tree:  # a wrong answer's feedback reads its sympy form
@@ -204,7 +220,7 @@ def check_lagrangian(problem: Problem, answer: Any, given: Mapping | None) -> Ve
 
 
 def check_kinetic(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
-    got = read_single(problem, answer, "T", "T")
+    got = read_kinetic(problem, answer)
     points = problem.points("T")
     out, answer_c = decided(got, lambda a: expressions_equal(a, problem.kinetic, points))
     if out.equal:
@@ -224,7 +240,7 @@ def check_kinetic(problem: Problem, answer: Any, given: Mapping | None) -> Verdi
 
 
 def check_potential(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
-    got = without_additive_constant(problem, read_single(problem, answer, "V", "V"))
+    got = read_potential(problem, answer)
     reference = problem.potential
     points = problem.points("V")
     out, answer_c = decided(got, lambda a: differ_by_constant(a, reference, points))

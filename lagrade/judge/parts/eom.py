@@ -19,7 +19,7 @@ from lagrade.judge.parts.common import (
     witness_point,
 )
 from lagrade.judge.parts.items import list_items
-from lagrade.judge.parts.reading import Read, own_lagrangian, read, read_lines
+from lagrade.judge.parts.reading import Lines, Read, own_lagrangian, read, read_lines
 from lagrade.judge.problem import Problem
 from lagrade.judge.rows import (
     equation_rows,
@@ -32,11 +32,17 @@ from lagrade.judge.rows import (
 from lagrade.judge.verdict import Verdict, invalid
 
 
-def check_eom(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
+def read_eom(problem: Problem, answer: Any) -> Lines:
+    """The equations of an `eom` answer, one per item (a bare expression is `= 0`)."""
+
     def read_line(item: Any) -> Read:
         return read(problem, item, (), "equation" if isinstance(item, str) else "answer")
 
-    lines = read_lines(list_items(answer, "eom"), read_line)
+    return read_lines(list_items(answer, "eom"), read_line)
+
+
+def check_eom(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
+    lines = read_eom(problem, answer)
     if not lines.reads:
         return invalid("eom", "Give one equation of motion per coordinate.")
     tree = any(r.from_tree for r in lines.reads)

@@ -30,7 +30,7 @@ from lagrade.judge.parts.common import (
     witness_point,
 )
 from lagrade.judge.parts.items import single_text
-from lagrade.judge.parts.reading import read_single
+from lagrade.judge.parts.reading import Read, read_single
 from lagrade.judge.problem import Problem
 from lagrade.judge.sampling import coordinate_range
 from lagrade.judge.situation import unit_text
@@ -193,6 +193,32 @@ def _judge_number(
         )
         mistakes = ("degrees_for_radians",)
     return Verdict("expression", "incorrect", 0.0, feedback, echo, "numeric", mistakes=mistakes)
+
+
+def read_expression(problem: Problem, answer: Any) -> list[Read]:
+    """What an `expression` answer gives: a closed form, a number (its unit or degree sign read
+    as `_check_one` reads them), or both as `closed form = value`."""
+    text = single_text(answer, "expression")
+    if isinstance(text, str) and text.count("=") == 1:
+        sides = [side.strip() for side in text.split("=")]
+        try:
+            return [read_single(problem, _bare(problem, side), "expression", "x") for side in sides]
+        except (ParseError, RequestError):
+            pass  # read as one answer (`x = …`), and its error is that reading's
+    return [read_single(problem, _as_read(problem, text), "expression", "x")]
+
+
+def _as_read(problem: Problem, answer: Any) -> Any:
+    """The text `_check_one` reads of an answer: a number with its unit converted to the
+    quantity's, an angle in degrees as a multiple of π/180, the quantity's own unit dropped."""
+    with_unit = _with_unit(problem, answer)
+    if with_unit is not None:
+        converted = _number_in_unit(problem, *with_unit)
+        return with_unit[0] if isinstance(converted, Verdict) else converted
+    degrees = _angle_in_degrees(problem, answer)
+    if degrees is not None:
+        return f"({degrees[0]})*pi/180"
+    return strip_unit(answer, problem.unit) if isinstance(answer, str) else answer
 
 
 def check_expression(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:

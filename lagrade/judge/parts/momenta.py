@@ -20,6 +20,7 @@ from lagrade.judge.parts.common import (
 )
 from lagrade.judge.parts.items import list_items
 from lagrade.judge.parts.reading import (
+    Lines,
     Read,
     Unreadable,
     decided,
@@ -32,10 +33,11 @@ from lagrade.judge.problem import Problem
 from lagrade.judge.verdict import Verdict, invalid
 
 
-def check_momenta(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
+def read_momenta(problem: Problem, answer: Any) -> Lines:
+    """The momenta of a `momenta` answer, one per item, each `p_q = …` or bare (in the order
+    of the coordinates)."""
     jets = problem.jets
     labels = [f"p_{j.name}" for j in jets]
-    items = list_items(answer, "momenta")
 
     def read_line(item: Any) -> Read:
         got = read(problem, item, labels)
@@ -49,7 +51,13 @@ def check_momenta(problem: Problem, answer: Any, given: Mapping | None) -> Verdi
             )
         return got
 
-    lines = read_lines(items, read_line)
+    return read_lines(list_items(answer, "momenta"), read_line)
+
+
+def check_momenta(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
+    jets = problem.jets
+    labels = [f"p_{j.name}" for j in jets]
+    lines = read_momenta(problem, answer)
     echoes = lines.echoes
     # An unreadable line keeps its place: the coordinate its label names, or the next free slot.
     by_coordinate: dict[int, Read | Unreadable] = {}
@@ -74,7 +82,7 @@ def check_momenta(problem: Problem, answer: Any, given: Mapping | None) -> Verdi
     free_slots = [k for k in range(len(jets)) if k not in by_coordinate]
     if len(unlabelled) > len(free_slots):
         return invalid(
-            "momenta", f"{len(items)} momenta given for {len(jets)} coordinates.", echoes
+            "momenta", f"{len(lines.entries)} momenta given for {len(jets)} coordinates.", echoes
         )
     for k, got in zip(free_slots, unlabelled, strict=False):
         by_coordinate[k] = got

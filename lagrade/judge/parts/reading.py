@@ -56,11 +56,16 @@ class Read:
     diagnosis, a hint, a number worked out exactly."""
 
     __slots__ = ("_lhs", "_rhs", "echo", "_rename", "_compiled", "_sympy_compiled", "_expr")
-    __slots__ += ("_symbols",)
+    __slots__ += ("_symbols", "parsed")
 
-    def __init__(self, lhs: Any, rhs: Any, echo: Any, rename: Mapping | None = None):
+    def __init__(
+        self, lhs: Any, rhs: Any, echo: Any, rename: Mapping | None = None, parsed: Any = None
+    ):
         self._lhs, self._rhs, self.echo = lhs, rhs, echo
         self._rename = rename or {}
+        #: The parser's reading of the whole item (`lagrade.notation.Parsed`), whose typeset
+        #: form a preview shows; None for sympy objects from Python callers.
+        self.parsed = parsed
         self._compiled: Compiled | None = None
         self._sympy_compiled: Compiled | None = None
         self._expr: sp.Expr | None = None
@@ -107,11 +112,11 @@ class Read:
 
     def only_lhs(self) -> Read:
         """The left side alone, with this item's echo."""
-        return Read(self._lhs, None, self.echo, self._rename)
+        return Read(self._lhs, None, self.echo, self._rename, self.parsed)
 
     def only_rhs(self) -> Read:
         """The right side alone, with this item's echo."""
-        return Read(self._rhs, None, self.echo, self._rename)
+        return Read(self._rhs, None, self.echo, self._rename, self.parsed)
 
     def _sides(self) -> list[tuple[Any, int]] | None:
         """(node, sign) of each side read from the tree; None when a side is sympy's."""
@@ -367,11 +372,11 @@ def read_parsed(problem: Problem, parsed) -> Read:
             if tree.rhs is not None
             else (_ZERO_SIDE if tree.equation else None)
         )
-        return Read(lhs, rhs, parsed.plain(), None if mine else problem.renaming)
+        return Read(lhs, rhs, parsed.plain(), None if mine else problem.renaming, parsed)
     if mine:
-        return Read(parsed.lhs, parsed.rhs, parsed.plain())
+        return Read(parsed.lhs, parsed.rhs, parsed.plain(), parsed=parsed)
     rhs = None if parsed.rhs is None else problem.canonical(parsed.rhs)
-    return Read(problem.canonical(parsed.lhs), rhs, parsed.plain())
+    return Read(problem.canonical(parsed.lhs), rhs, parsed.plain(), parsed=parsed)
 
 
 _LABEL = re.compile(r"^\s*([A-Za-z][A-Za-z0-9_]*)\s*=")
@@ -423,7 +428,7 @@ def without_additive_constant(problem: Problem, got: Read) -> Read:
         slope = expr.diff(symbol)
         if slope != 0 and not slope.free_symbols:
             expr = expr.subs(symbol, 0)
-    return got if expr is got.expr else Read(expr, None, got.echo)
+    return got if expr is got.expr else Read(expr, None, got.echo, parsed=got.parsed)
 
 
 def not_labelled(item: Any) -> ParseError:

@@ -20,7 +20,7 @@ from lagrade.judge.parts.common import (
     witness_point,
 )
 from lagrade.judge.parts.items import list_items
-from lagrade.judge.parts.reading import Read, read, read_lines
+from lagrade.judge.parts.reading import Lines, Read, read, read_lines
 from lagrade.judge.problem import NEEDS_BODIES, Problem
 from lagrade.judge.rows import row_rank
 from lagrade.judge.sampling import Points
@@ -41,13 +41,20 @@ def transformation_positions(problem: Problem, answer: Any) -> tuple[Verdict, di
     return verdict, (positions if verdict.status == "correct" else {})
 
 
-def _judged(problem: Problem, answer: Any, given_pos: dict[str, sp.Expr]) -> Verdict:
-    """The transformation check; fills `given_pos` with the positions the answer gives."""
+def _labels(problem: Problem) -> tuple[list[str], list[str]]:
+    """The Cartesian coordinates a transformation answer gives: the required (each body's x, y
+    and a rigid body's angle) and the optional (z of a planar body)."""
     v = problem.variant
     if v is None:
         raise RequestError(NEEDS_BODIES)
     required = list(v.transformation)
     optional = [f"z_{b.name}" for b in v.bodies if b.planar and f"z_{b.name}" not in required]
+    return required, optional
+
+
+def read_transformation(problem: Problem, answer: Any) -> Lines:
+    """The lines of a transformation answer, each `x_body = expression`."""
+    required, optional = _labels(problem)
     labels = required + optional
 
     def read_line(item: Any) -> Read:
@@ -62,7 +69,14 @@ def _judged(problem: Problem, answer: Any, given_pos: dict[str, sp.Expr]) -> Ver
             )
         return got
 
-    lines = read_lines(list_items(answer, "transformation"), read_line)
+    return read_lines(list_items(answer, "transformation"), read_line)
+
+
+def _judged(problem: Problem, answer: Any, given_pos: dict[str, sp.Expr]) -> Verdict:
+    """The transformation check; fills `given_pos` with the positions the answer gives."""
+    v = problem.variant
+    required = list(v.transformation) if v is not None else []
+    lines = read_transformation(problem, answer)
     echoes = lines.echoes
     unread = lines.feedback()  # an unreadable line counts as wrong: its coordinate is not given
     for got in lines.reads:
