@@ -98,15 +98,42 @@ def compare_demo(trees: dict[str, Path], work: Path) -> int:
     if set(files["new"]) != set(files["baseline"]):
         print(f"  demo: different result files: {set(files['new']) ^ set(files['baseline'])}")
         differ += 1
+    verdicts, changed, only = 0, [], set()
     for rel in sorted(set(files["new"]) & set(files["baseline"])):
         a = _strip(json.loads(files["new"][rel].read_text()))
         b = _strip(json.loads(files["baseline"][rel].read_text()))
-        if a != b:
-            differ += 1
-            if differ <= 5:
-                print(f"  demo: {rel} differs")
-    print(f"  demo: {differ} of {len(files['new'])} result files differ")
-    return differ
+        parts_a, parts_b = _parts(a), _parts(b)
+        for key in sorted(set(parts_a) & set(parts_b)):
+            pa, pb = parts_a[key], parts_b[key]
+            only |= set(pa) ^ set(pb)  # a field one version writes and the other does not
+            verdicts += pa.get("verdict") != pb.get("verdict")
+            if any(pa.get(k) != pb.get(k) for k in set(pa) & set(pb)):
+                changed.append((rel, key, pa, pb))
+        rest_a = {k: v for k, v in a.items() if k != "problems"}
+        rest_b = {k: v for k, v in b.items() if k != "problems"}
+        if rest_a != rest_b or set(parts_a) != set(parts_b):
+            changed.append((rel, "(sheet)", rest_a, rest_b))
+    if only:
+        print(f"  demo: fields written by one version only: {sorted(only)}")
+    for rel, key, pa, pb in changed[:8]:
+        keys = sorted(k for k in set(pa) & set(pb) if pa.get(k) != pb.get(k))
+        print(f"  demo: {rel} {key}: {keys}")
+        for k in keys:
+            print(f"      new:      {pa.get(k)!r}\n      baseline: {pb.get(k)!r}")
+    print(
+        f"  demo: {len(files['new'])} result files; verdict changes {verdicts}; "
+        f"parts with a field changed {len(changed)}"
+    )
+    return differ + verdicts + len(changed)
+
+
+def _parts(result: dict) -> dict[str, dict]:
+    """A student's graded parts by "problem/part key"."""
+    return {
+        f"{p.get('index')}/{part.get('key')}": part
+        for p in result.get("problems", [])
+        for part in p.get("parts", [])
+    }
 
 
 def _report(name: str, new: list[dict], old: list[dict], requests: list[dict]) -> int:

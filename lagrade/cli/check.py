@@ -278,13 +278,13 @@ def run_check_command(args: argparse.Namespace) -> tuple[int, str]:
     """`lagrade check`: (exit status, text to print). Exit 0 when the answer is correct (or a
     batch ran to its end), 1 when it is not; a malformed request raises RequestError (the CLI
     prints it and exits 2)."""
-    from lagrade.judge.check import check
-    from lagrade.judge.problem import build_problem
-
-    if args.batch:
+    if args.batch:  # the judging modules load only where a request is judged
         return check_batch_file(
             args.batch, args.out, time_limit=args.time_limit, jobs=args.jobs, dask=args.dask
         )
+    from lagrade.judge.check import check
+    from lagrade.judge.problem import build_problem
+
     if args.dask is not None:
         raise RequestError("--dask is for --batch REQUESTS.jsonl; one answer is checked here")
     if not args.part or args.answer is None:

@@ -1,13 +1,28 @@
 """Layer 2: judging answers by their physics. One checker per part (`lagrade.judge.parts`), the
-question a request is about (`Problem`), numeric equivalence, the mistake catalogue, and the
-killable workers that run untrusted work under one time-limit rule (`lagrade.judge.worker`)."""
+question a request is about (`Problem`), the one driver every entry point judges through
+(`judge`), reading as a step of its own (`read_answer`), numeric equivalence, the mistake
+catalogue, the clocks (`lagrade.judge.clocks`) and the killable workers that run untrusted work
+(`lagrade.judge.worker`).
 
-from lagrade.judge.check import check
-from lagrade.judge.key import key_answer
-from lagrade.judge.parts import PARTS, run_checker
-from lagrade.judge.problem import Problem, build_problem
-from lagrade.judge.verdict import Verdict
-from lagrade.judge.verify import verify_variant
+Names are loaded on first use (as `lagrade`'s own are), so that a command that needs only the
+pool and the request reader (`check --batch` on its way to its workers) does not import sympy."""
+
+from __future__ import annotations
+
+from importlib import import_module
+from typing import Any
+
+#: Each exported name, by the module that defines it.
+_EXPORTS = {
+    "PARTS": "lagrade.judge.parts",
+    "Problem": "lagrade.judge.problem",
+    "Verdict": "lagrade.judge.verdict",
+    "build_problem": "lagrade.judge.problem",
+    "check": "lagrade.judge.check",
+    "key_answer": "lagrade.judge.key",
+    "run_checker": "lagrade.judge.parts",
+    "verify_variant": "lagrade.judge.verify",
+}
 
 __all__ = [
     "PARTS",
@@ -19,3 +34,11 @@ __all__ = [
     "run_checker",
     "verify_variant",
 ]
+
+
+def __getattr__(name: str) -> Any:
+    if name in _EXPORTS:
+        value = getattr(import_module(_EXPORTS[name]), name)
+        globals()[name] = value
+        return value
+    raise AttributeError(f"module 'lagrade.judge' has no attribute {name!r}")

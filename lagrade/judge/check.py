@@ -19,16 +19,16 @@ from __future__ import annotations
 import json
 import sys
 from collections.abc import Iterable, Iterator, Mapping
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import lagrade.untrusted as untrusted
 from lagrade.errors import LagradeError, RequestError, UnreadableInput
 from lagrade.judge.clocks import GRACE, PREPARE_LIMIT
-from lagrade.judge.driver import judge, timeout_verdict
-from lagrade.judge.parts import PARTS
-from lagrade.judge.problem import Problem
-from lagrade.judge.verdict import Verdict
+from lagrade.judge.verdict import Verdict, timeout_verdict
 from lagrade.judge.worker import Limits, Outcome, Pool
+
+if TYPE_CHECKING:
+    from lagrade.judge.problem import Problem
 
 DEFAULT_TIME_LIMIT = 2.0
 MAX_TIME_LIMIT = 120.0
@@ -38,6 +38,7 @@ MAX_TIME_LIMIT = 120.0
 
 
 def _validate(request: Any) -> tuple[Any, str, Any, Mapping | None]:
+    from lagrade.judge.parts import PARTS
     if not isinstance(request, Mapping):
         raise RequestError("a request must be a JSON object")
     for name in ("problem", "part", "answer"):
@@ -70,6 +71,8 @@ def check_request(
     """Judge one request in this process (the body of a worker, and of `check` without a time
     limit): its fields checked, then the one driver (`lagrade.judge.driver.judge`). A malformed
     request or problem raises RequestError (or another LagradeError)."""
+    from lagrade.judge.driver import judge  # the judging modules, only where one judges
+
     spec, part, answer, given = _validate(request)
     return judge(spec, part, answer, given, limit=limit, diagnosis=diagnosis)
 
@@ -117,7 +120,7 @@ def check(
     limit passes (verdict `timeout`); `time_limit=None`, or a Problem object, checks in this
     process. A malformed problem or part raises RequestError."""
     request = {"problem": problem, "part": part, "answer": answer, "given": given}
-    if time_limit is None or isinstance(problem, Problem):
+    if time_limit is None or not isinstance(problem, Mapping):  # a Problem: in this process
         return check_request(request)
     global _shared
     if _shared is None:
@@ -246,6 +249,8 @@ def run_batch(
         work.append((position, (request, limit)))
     limits = {position: item[1] for position, item in work}
     work = _diagnose_early(work)
+    if work:  # the judging modules, loaded once here so that the forked workers share them
+        import lagrade.judge.driver  # noqa: F401
     own = pool is None
     pool = pool or check_pool(jobs)
     try:

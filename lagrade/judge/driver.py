@@ -36,7 +36,7 @@ from lagrade.judge.clocks import (
 )
 from lagrade.judge.parts import PARTS, run_checker
 from lagrade.judge.problem import Problem, build_problem, problem_key
-from lagrade.judge.verdict import Verdict
+from lagrade.judge.verdict import Verdict, timeout_verdict
 
 #: Questions kept per process (most recently used last).
 _CACHE_SIZE = 256
@@ -148,18 +148,6 @@ def _remember(key, verdict: Verdict) -> None:
 
 
 # --- one part ------------------------------------------------------------------------------------
-
-
-def timeout_verdict(part: str, seconds: float, what: str = "judging the answer") -> Verdict:
-    """The verdict of a part whose time ran out: one wording wherever the limit struck."""
-    return Verdict(
-        part,
-        "timeout",
-        0.0,
-        (f"The check ran out of time ({what} took longer than {seconds:g} s).",),
-        "",
-        "timeout",
-    )
 
 
 def judge(

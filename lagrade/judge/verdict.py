@@ -75,3 +75,15 @@ def _bounded(texts) -> tuple[str, ...]:
 
 def invalid(part: str, message: str, interpreted: str | list[str] = "") -> Verdict:
     return Verdict(part, "invalid", 0.0, (message,), interpreted, "parse")
+
+
+def timeout_verdict(part: str, seconds: float, what: str = "judging the answer") -> Verdict:
+    """The verdict of a part whose time ran out: one wording wherever the limit struck."""
+    return Verdict(
+        part,
+        "timeout",
+        0.0,
+        (f"The check ran out of time ({what} took longer than {seconds:g} s).",),
+        "",
+        "timeout",
+    )

@@ -79,3 +79,22 @@ def test_check_batch_loads_the_judge_but_not_the_reports(tmp_path):
     out = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, check=True)
     assert out.stdout.strip().splitlines()[-1] == "[]", out.stdout + out.stderr
     assert '"verdict": "correct"' in (tmp_path / "out.jsonl").read_text()
+
+
+def test_check_batch_on_an_empty_file_loads_nothing_heavy(tmp_path):
+    """`check --batch` loads the judging modules (sympy, numpy) only when it has a request to
+    judge, and then once, before its workers fork (issue 35's start-up target: an empty batch
+    at the cost of a small Python program)."""
+    empty = tmp_path / "empty.jsonl"
+    empty.write_text("")
+    out = tmp_path / "out.jsonl"
+    assert _loaded_by(["check", "--batch", str(empty), "--out", str(out)]) == []
+    assert out.read_text() == ""
+
+
+def test_check_batch_with_a_request_loads_the_judge_before_its_workers_fork(tmp_path):
+    requests = tmp_path / "one.jsonl"
+    requests.write_text('{"problem": {"scene": "hoop"}, "part": "dof", "answer": "1"}\n')
+    out = tmp_path / "out.jsonl"
+    assert "sympy" in _loaded_by(["check", "--batch", str(requests), "--out", str(out)])
+    assert '"verdict": "correct"' in out.read_text()
