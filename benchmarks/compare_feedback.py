@@ -22,6 +22,7 @@ from __future__ import annotations
 import argparse
 import json
 import os
+import re
 import subprocess
 import sys
 import tempfile
@@ -86,19 +87,21 @@ def compare_batch(name: str, requests: list[dict], trees: dict[str, Path], work:
 
 
 def compare_demo(trees: dict[str, Path], work: Path) -> int:
-    """Both trees' `lagrade demo` per-student results; the number of differing students."""
+    """Both trees' `lagrade demo` per-student results, part by part; the number of parts that
+    changed. A part whose feedback differs only in the numbers it quotes (another point, other
+    values) is counted apart from one whose words changed."""
     files = {}
     for label, tree in trees.items():
         folder = work / f"demo-{label}"
         seconds = _run(tree, ["demo", str(folder), "--jobs", "2"], work)
-        grades = folder / "grades"
-        files[label] = {p.relative_to(grades).as_posix(): p for p in sorted(grades.rglob("*.json"))}
-        print(f"  demo: {label} ran in {seconds:.1f} s ({len(files[label])} result files)")
+        grades = folder / "grades" / "students"
+        files[label] = {p.name: p for p in sorted(grades.glob("*.json"))}
+        print(f"  demo: {label} ran in {seconds:.1f} s ({len(files[label])} students' results)")
     differ = 0
     if set(files["new"]) != set(files["baseline"]):
         print(f"  demo: different result files: {set(files['new']) ^ set(files['baseline'])}")
         differ += 1
-    verdicts, changed, only = 0, [], set()
+    verdicts, changed, numbers_only, only = 0, [], [], set()
     for rel in sorted(set(files["new"]) & set(files["baseline"])):
         a = _strip(json.loads(files["new"][rel].read_text()))
         b = _strip(json.loads(files["baseline"][rel].read_text()))
@@ -107,7 +110,14 @@ def compare_demo(trees: dict[str, Path], work: Path) -> int:
             pa, pb = parts_a[key], parts_b[key]
             only |= set(pa) ^ set(pb)  # a field one version writes and the other does not
             verdicts += pa.get("verdict") != pb.get("verdict")
-            if any(pa.get(k) != pb.get(k) for k in set(pa) & set(pb)):
+            keys = sorted(k for k in set(pa) & set(pb) if pa.get(k) != pb.get(k))
+            if not keys:
+                continue
+            if keys == ["feedback"] and _numbers_out(pa["feedback"]) == _numbers_out(
+                pb["feedback"]
+            ):
+                numbers_only.append((rel, key, pa, pb))
+            else:
                 changed.append((rel, key, pa, pb))
         rest_a = {k: v for k, v in a.items() if k != "problems"}
         rest_b = {k: v for k, v in b.items() if k != "problems"}
@@ -115,16 +125,25 @@ def compare_demo(trees: dict[str, Path], work: Path) -> int:
             changed.append((rel, "(sheet)", rest_a, rest_b))
     if only:
         print(f"  demo: fields written by one version only: {sorted(only)}")
+    for rel, key, pa, pb in numbers_only:
+        print(f"  demo: {rel} {key}: quoted numbers only")
+        print(f"      new:      {pa['feedback']!r}\n      baseline: {pb['feedback']!r}")
     for rel, key, pa, pb in changed[:8]:
         keys = sorted(k for k in set(pa) & set(pb) if pa.get(k) != pb.get(k))
         print(f"  demo: {rel} {key}: {keys}")
         for k in keys:
             print(f"      new:      {pa.get(k)!r}\n      baseline: {pb.get(k)!r}")
     print(
-        f"  demo: {len(files['new'])} result files; verdict changes {verdicts}; "
-        f"parts with a field changed {len(changed)}"
+        f"  demo: {len(files['new'])} students' results; verdict changes {verdicts}; parts "
+        f"whose feedback quotes other numbers {len(numbers_only)}; other parts changed "
+        f"{len(changed)}"
     )
-    return differ + verdicts + len(changed)
+    return differ + verdicts + len(changed) + len(numbers_only)
+
+
+def _numbers_out(feedback: list[str]) -> list[str]:
+    """Feedback with every number (and a sign before it) replaced by #."""
+    return [re.sub(r"[−-]?\d+(?:\.\d+)?(?:e[−-]?\d+)?", "#", f) for f in feedback]
 
 
 def _parts(result: dict) -> dict[str, dict]:
