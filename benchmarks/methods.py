@@ -35,18 +35,20 @@ import numpy as np
 import sympy as sp
 
 import lagrade.judge.evaluate as ev
+from benchmarks.exact_rational import ExactRational
 from lagrade.errors import ReferenceUndefined
 from lagrade.judge.adaptive import (
+    Domains,
     ExactThenAdaptive,
     compile_pair,
     draw,
     evaluate_float,
     sample_ranges,
     sampled_pair,
+    sorted_symbols,
 )
 from lagrade.judge.compiled import Compiled, finite_mask
 from lagrade.judge.equivalence import expressions_equal
-from lagrade.judge.exact import Domains, ExactRational, sorted_symbols
 from lagrade.judge.sampling import Space
 from lagrade.mechanics.domains import Domain
 

@@ -1,7 +1,7 @@
 """The default equivalence of expressions, chosen from the speed-against-accuracy study
 (docs/methods.csv: zero wrong verdicts, on the Pareto front): exact where the expressions allow
-it (`lagrade.judge.exact`), otherwise float64 values carrying a running error bound, with the
-precision raised in mpmath only where the bound cannot decide.
+it (modular arithmetic, `lagrade.judge.modular`), otherwise float64 values carrying a running
+error bound, with the precision raised in mpmath only where the bound cannot decide.
 
 Expressions may come from student text, so nothing here calls `lambdify`, `sympify` or `eval`:
 numbers come from the whitelist compiler of `lagrade.judge.evaluate`.
@@ -19,9 +19,20 @@ import sympy as sp
 import lagrade.judge.evaluate as ev
 import lagrade.judge.modular as modular
 from lagrade.judge.evaluate.program import is_integer
-from lagrade.judge.exact import Domains, sorted_symbols
 from lagrade.judge.sampling import WIDEN
-from lagrade.mechanics.domains import REAL
+from lagrade.mechanics.domains import REAL, Domain
+
+#: The domain of each symbol an expression holds.
+Domains = Mapping[sp.Symbol, Domain]
+
+
+def sorted_symbols(*exprs: sp.Expr) -> list[sp.Symbol]:
+    """Free symbols of all exprs in a stable order (by name), so that seeded draws repeat."""
+    found: set[sp.Symbol] = set()
+    for e in exprs:
+        found |= e.free_symbols
+    return sorted(found, key=lambda s: s.name)
+
 
 # --- sampling ---------------------------------------------------------------------------------
 

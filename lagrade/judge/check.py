@@ -39,6 +39,7 @@ MAX_TIME_LIMIT = 120.0
 
 def _validate(request: Any) -> tuple[Any, str, Any, Mapping | None]:
     from lagrade.judge.parts import PARTS
+
     if not isinstance(request, Mapping):
         raise RequestError("a request must be a JSON object")
     for name in ("problem", "part", "answer"):

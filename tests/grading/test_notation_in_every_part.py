@@ -220,7 +220,7 @@ def test_max_and_min_have_one_value_in_every_evaluator():
     import mpmath
 
     import lagrade.judge.evaluate as ev
-    from lagrade.judge.exact import _FractionBackend
+    from benchmarks.exact_rational import _FractionBackend
 
     a, b, c = sp.symbols("a b c", real=True)
     expr = sp.Max(a, b * c, evaluate=False) - 2 * sp.Min(a**2, c, evaluate=False)

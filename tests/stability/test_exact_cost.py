@@ -14,8 +14,8 @@ import numpy as np
 import pytest
 import sympy as sp
 
+import benchmarks.exact_rational as exact
 import lagrade.judge.evaluate as ev
-from lagrade.judge import exact
 from lagrade.judge.check import check
 
 #: Far above what these pairs take now; far below what the unbounded exact stage took.

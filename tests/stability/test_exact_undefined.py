@@ -7,7 +7,7 @@ from fractions import Fraction
 import numpy as np
 import sympy as sp
 
-import lagrade.judge.exact as exact
+import benchmarks.exact_rational as exact
 
 x, y = sp.symbols("x y", real=True)
 ZERO_AT_MINUS_ONE = 2 * y * (2 * x + 2) / (x + 1)  # 4y, but undefined at x = −1

@@ -1,10 +1,13 @@
 """Exact equivalence of expressions that are rational functions of their symbols and of sin, cos,
 tan (and cot, sec, csc) of integer combinations of them: exact rational arithmetic at random
-rational points, no rounding anywhere. The first stage of the default method
-(`lagrade.judge.adaptive.ExactThenAdaptive`); None for anything outside that class, and for a
-pair whose exact evaluation would cost too much (`MAX_TRIG_DEGREE`, `MAX_EXACT_WORK`): exact
-numbers grow with every power and every multiple of a trig argument, and a right answer must
-never run out of time here; the high-precision stage decides such pairs as surely.
+rational points, no rounding anywhere. A method of the speed-versus-accuracy chart
+(`benchmarks/methods.py`), no longer the judge's (its exact stage is modular arithmetic,
+`lagrade.judge.modular`): kept here, beside the chart that still draws it, since only the
+chart and the stability tests that pin where it fails use it. None for anything outside that
+class, and for a pair whose exact evaluation would cost too much (`MAX_TRIG_DEGREE`,
+`MAX_EXACT_WORK`): exact numbers grow with every power and every multiple of a trig argument,
+and a right answer must never run out of time here; the high-precision stage decides such pairs
+as surely.
 """
 
 from __future__ import annotations
@@ -18,18 +21,8 @@ import numpy as np
 import sympy as sp
 
 import lagrade.judge.evaluate as ev
+from lagrade.judge.adaptive import Domains, sorted_symbols
 from lagrade.mechanics.domains import REAL, Domain
-
-Domains = Mapping[sp.Symbol, Domain]
-
-
-def sorted_symbols(*exprs: sp.Expr) -> list[sp.Symbol]:
-    """Free symbols of all exprs in a stable order (by name), so that seeded draws repeat."""
-    found: set[sp.Symbol] = set()
-    for e in exprs:
-        found |= e.free_symbols
-    return sorted(found, key=lambda s: s.name)
-
 
 _TRIG = (sp.sin, sp.cos, sp.tan, sp.cot, sp.sec, sp.csc)
 
