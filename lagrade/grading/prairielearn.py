@@ -36,9 +36,11 @@ from lagrade.assign.views import MULTILINE
 from lagrade.errors import AssignmentError
 
 # Questions exported before the runtime had a module of its own call these names here.
-from lagrade.grading.prairielearn_runtime import generate, grade, parse, test
+from lagrade.grading.prairielearn_runtime import generate, grade, parse, render_pool, test
 from lagrade.grading.wheel import vendor
 
+#: Each question's variants rendered at export (statement, prompts, key), beside server.py.
+VARIANTS = "variants.json"
 #: Variants in a problem's pool when the assignment does not say (`variants = N`).
 DEFAULT_POOL = 50
 #: Where the question folders go, and the vendored lagrade, in a course's layout.
@@ -77,6 +79,8 @@ def export_prairielearn(
         atomic.write_json(folder / "info.json", _info(assignment, problem))
         atomic.write_text(folder / "question.html", _question_html(problem))
         server = _server_py(text, scenes, problem, pools[problem.index], vendored)
+        seeds = [int(c.seed) for c in pools[problem.index]]
+        atomic.write_json(folder / VARIANTS, render_pool(text, problem.index, seeds, scenes))
         atomic.write_text(folder / "server.py", server)
         folders.append(folder)
     return folders
@@ -152,6 +156,7 @@ _SERVER = '''"""PrairieLearn server for one lagrade problem (its title is TITLE 
 `lagrade export prairielearn`. It runs the lagrade in serverFilesCourse/VENDORED (copied there
 with this question), or an installed one where that folder is absent."""
 
+import json
 import os
 import sys
 
@@ -161,6 +166,8 @@ SCENES = {scenes}
 PROBLEM = {index}
 SEEDS = {seeds}
 VENDORED = {vendored}
+#: The pool's variants rendered at export (data: statement, prompts, key), beside this file.
+VARIANTS = {variants}
 
 
 def _use_vendored_lagrade():
@@ -178,8 +185,16 @@ _use_vendored_lagrade()
 from lagrade.grading import prairielearn_runtime as lagrade_pl  # noqa: E402
 
 
+def _rendered():
+    try:
+        with open(os.path.join(os.path.dirname(os.path.abspath(__file__)), VARIANTS)) as f:
+            return json.load(f)
+    except (OSError, ValueError):
+        return None  # rendered here instead
+
+
 def generate(data):
-    lagrade_pl.generate(data, ASSIGNMENT, PROBLEM, SEEDS, SCENES)
+    lagrade_pl.generate(data, ASSIGNMENT, PROBLEM, SEEDS, SCENES, _rendered())
 
 
 def parse(data):
@@ -212,6 +227,7 @@ def _server_py(
         "index": int(problem.index),
         "seeds": [int(c.seed) for c in pool],
         "vendored": str(vendored),
+        "variants": VARIANTS,
     }
     source = _SERVER.format(**{name: repr(value) for name, value in values.items()})
     compile(source, "server.py", "exec")  # a SyntaxError here is our bug, never shipped

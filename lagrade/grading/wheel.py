@@ -13,9 +13,11 @@ entries are sorted and dated 1980-01-01.
 from __future__ import annotations
 
 import base64
+import compileall
 import hashlib
 import importlib.metadata
 import io
+import py_compile
 import shutil
 import tempfile
 import zipfile
@@ -75,11 +77,25 @@ def vendor(folder: Path) -> str:
         try:
             with zipfile.ZipFile(wheel) as archive:  # our own archive: no hostile member names
                 archive.extractall(staging)
+            _compiled(staging)
             shutil.rmtree(target, ignore_errors=True)  # a partial copy left by an interrupted run
             staging.rename(target)
         finally:
             shutil.rmtree(staging, ignore_errors=True)
     return name
+
+
+def _compiled(folder: Path) -> None:
+    """Ship bytecode beside the sources, so that a system that runs each call in a fresh process
+    and writes nothing (PrairieLearn) does not compile lagrade at every call (measured: import
+    0.51 s CPU without, 0.37 s with). Checked against the sources' hashes, not their times: the
+    copy is valid wherever and whenever it is unpacked; an interpreter of another version keeps
+    its own tag's files apart and compiles for itself."""
+    compileall.compile_dir(
+        str(folder),
+        quiet=1,
+        invalidation_mode=py_compile.PycInvalidationMode.CHECKED_HASH,
+    )
 
 
 def _package_files() -> list[tuple[str, bytes]]:

@@ -33,6 +33,7 @@ from lagrade.judge.parts.momenta import read_momenta
 from lagrade.judge.parts.reading import Lines, Read, Unreadable, reading_notes
 from lagrade.judge.parts.transformation import read_transformation
 from lagrade.judge.problem import Problem
+from lagrade.judge.verdict import unreadable_line
 
 #: Each part's reader: the function its checker reads the raw answer with.
 READERS: dict[str, Callable[[Problem, Any], Any]] = {
@@ -114,7 +115,7 @@ def _lines(problem: Problem, part: str, got: Any):
     if isinstance(got, Lines):
         for k, entry in enumerate(got.entries):
             if isinstance(entry, Unreadable):
-                yield ReadLine("", error=f"Line {k + 1} could not be read: {entry.error}")
+                yield ReadLine("", error=unreadable_line(k + 1, entry.error))
             else:
                 yield _formula(problem, entry)
     elif isinstance(got, Read):

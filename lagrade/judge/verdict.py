@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import re
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import Any
@@ -87,3 +88,19 @@ def timeout_verdict(part: str, seconds: float, what: str = "judging the answer")
         "",
         "timeout",
     )
+
+
+def unreadable_line(number: int, error: object) -> str:
+    """The feedback sentence on line `number` (1-based) of an answer, which does not parse:
+    named, with the parser's message and its caret."""
+    return f"Line {number} could not be read: {error}"
+
+
+#: How `unreadable_line` begins its sentence.
+_UNREADABLE_LINE = re.compile(r"Line \d+ could not be read: ")
+
+
+def is_unreadable_line(sentence: str) -> bool:
+    """Whether a verdict's feedback sentence is `unreadable_line`'s: for a caller that must
+    refuse such an answer rather than grade it (PrairieLearn's format errors)."""
+    return _UNREADABLE_LINE.match(sentence) is not None

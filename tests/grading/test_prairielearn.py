@@ -272,3 +272,38 @@ def test_parse_reads_and_never_judges(tmp_path, monkeypatch):
     data["submitted_answers"]["block_acceleration"] = "g"
     server.grade(data)
     assert data["partial_scores"]["lagrangian"]["score"] == 0.0
+
+
+def test_the_vendored_lagrade_ships_its_bytecode(questions):
+    """PrairieLearn runs each call in a fresh process that writes nothing: the copy of lagrade
+    it runs carries its bytecode (checked against the sources' hashes), so no call compiles."""
+    import importlib.util as util
+
+    course = questions[0].parent.parent
+    (vendored,) = (course / "serverFilesCourse").glob("lagrade-*")
+    sources = sorted((vendored / "lagrade").rglob("*.py"))
+    assert len(sources) > 100
+    missing = [s for s in sources if not Path(util.cache_from_source(str(s))).is_file()]
+    assert missing == []
+    data = Path(util.cache_from_source(str(vendored / "lagrade" / "__init__.py"))).read_bytes()
+    assert int.from_bytes(data[4:8], "little") & 0b11 == 0b11  # hash-based, source checked
+
+
+def test_generate_reads_the_variants_rendered_at_export(questions):
+    """Each variant of the pool is rendered once, at export, into variants.json (data): a
+    generate call reads it instead of deriving the variant and drawing its figure, and gives
+    exactly what rendering it in the call gives."""
+    from lagrade.grading import prairielearn_runtime
+
+    (folder,) = questions
+    rendered = json.loads((folder / "variants.json").read_text())
+    server = load_server(folder)
+    assert sorted(rendered["variants"]) == sorted(str(s) for s in server.SEEDS)
+    for seed in (0, 1, 7):
+        from_file, live = new_data(seed), new_data(seed)
+        server.generate(from_file)
+        prairielearn_runtime.generate(
+            live, server.ASSIGNMENT, server.PROBLEM, server.SEEDS, server.SCENES
+        )
+        assert from_file == live
+        assert "<svg" in from_file["params"]["statement_html"]

@@ -18,6 +18,7 @@ from lagrade.judge.compiled import Compiled
 from lagrade.judge.evaluate import compile_tree
 from lagrade.judge.parts.items import single_text
 from lagrade.judge.problem import Problem, parser
+from lagrade.judge.verdict import unreadable_line
 from lagrade.notation.parse import NameRead
 from lagrade.notation.printer import plain
 
@@ -237,20 +238,10 @@ class Lines:
         """One sentence per unreadable line, naming it (1-based, as in `interpreted`) and
         carrying the parser's message with its caret."""
         return [
-            f"Line {k + 1} could not be read: {e.error}"
+            unreadable_line(k + 1, e.error)
             for k, e in enumerate(self.entries)
             if isinstance(e, Unreadable)
         ]
-
-
-#: How `Lines.feedback` begins its sentence on a line that does not parse.
-_UNREADABLE_LINE = re.compile(r"Line \d+ could not be read: ")
-
-
-def is_unreadable_line(sentence: str) -> bool:
-    """Whether a verdict's feedback sentence is `Lines.feedback`'s on an unreadable line: for a
-    caller that must refuse such an answer rather than grade it (PrairieLearn's format errors)."""
-    return _UNREADABLE_LINE.match(sentence) is not None
 
 
 def read_lines(items: Sequence[Any], reader: Callable[[Any], Read | list[Read]]) -> Lines:
