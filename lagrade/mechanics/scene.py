@@ -474,9 +474,20 @@ class SceneVariant:
 
     # --- step 4: T, V, L -----------------------------------------------------------------------
     @cached_property
+    def _presented(self) -> SceneVariant:
+        """The first variant of this scene with this presentation (names and options): T, V and
+        L depend on nothing else (the values are numbers for the handout, never in them), so the
+        variants of a class that share a presentation derive them once."""
+        key = (tuple(sorted(self.names.items())), tuple(sorted(self.options.items())))
+        shared = self.scene.__dict__.setdefault("_presentations", {})
+        return shared.setdefault(key, self)
+
+    @cached_property
     def kinetic_energy(self) -> sp.Expr:
         """T = Σ ½ m |ṙ|² (+ ½ I φ̇² for rigid bodies), expanded and trig-simplified."""
         self._needs_bodies("T")
+        if self._presented is not self:
+            return self._presented.kinetic_energy
         T = sum((b.kinetic_energy(self.jets) for b in self.bodies), sp.S.Zero)
         return _tidy(T)
 
@@ -484,6 +495,8 @@ class SceneVariant:
     def potential_energy(self) -> sp.Expr:
         """V as declared (a generalized potential may depend on velocities)."""
         self._needs_bodies("V")
+        if self._presented is not self:
+            return self._presented.potential_energy
         return sp.expand(as_expr(self.scene.potential(self.namespace, self.bodies)))
 
     @cached_property
