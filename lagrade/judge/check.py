@@ -23,7 +23,7 @@ from typing import TYPE_CHECKING, Any
 
 import lagrade.untrusted as untrusted
 from lagrade.errors import LagradeError, RequestError, UnreadableInput
-from lagrade.judge.clocks import GRACE, PREPARE_LIMIT
+from lagrade.judge.clocks import GRACE, PREPARE_LIMIT, deadline, note
 from lagrade.judge.verdict import Verdict, timeout_verdict
 from lagrade.judge.worker import Limits, Outcome, Pool
 
@@ -78,14 +78,56 @@ def check_request(
     return judge(spec, part, answer, given, limit=limit, diagnosis=diagnosis)
 
 
-def _limited(item: tuple) -> Verdict:
-    """A worker's item: (request, time limit) or (request, time limit, diagnosis)."""
-    return check_request(*item)
+#: Requests to one question that go to a worker in one message (a chunk): one pipe round trip
+#: for them all instead of one each (about 0.6 ms a request, measured), each still under its
+#: own deadline, and a kill still costs only the request in hand.
+CHUNK = 16
+
+
+def _judge_chunk(entries: list[tuple[int, tuple]]) -> list[tuple[int, str, Any]]:
+    """A worker's item: a chunk of (position, (request, time limit[, diagnosis])), judged in
+    order. Each request gets a fresh deadline, as a request of its own would, and its result is
+    noted as soon as it is known, so that a worker killed later in the chunk loses none of it
+    (`_settle`)."""
+    results = []
+    for position, item in entries:
+        deadline(PREPARE_LIMIT + GRACE)
+        try:
+            result: tuple[int, str, Any] = (position, "ok", check_request(*item))
+        except LagradeError as error:
+            result = (position, "refused", error)
+        except Exception as error:  # noqa: BLE001 - a bug of ours costs its request only
+            result = (position, "error", f"{type(error).__name__}: {error}")
+        note(result)
+        results.append(result)
+    return results
+
+
+def _settle(outcome: Outcome, entries: list[tuple[int, tuple]]):
+    """(each settled request's Outcome by position, the entries still to judge) from a chunk's
+    Outcome: all of them when it finished; when its worker was killed or died, those it noted,
+    the request in hand with the chunk's outcome (`timeout`, or `error`), the rest again."""
+    if outcome.status == "ok":
+        noted = outcome.value
+    else:
+        noted = outcome.value if isinstance(outcome.value, tuple) else ()
+    settled = {
+        position: Outcome(position, status, value=value, reason=str(value))
+        for position, status, value in noted
+    }
+    rest = [entry for entry in entries if entry[0] not in settled]
+    if outcome.status == "ok" or not rest:
+        return settled, []
+    in_hand, *after = rest
+    settled[in_hand[0]] = Outcome(in_hand[0], outcome.status, reason=outcome.reason)
+    return settled, after
 
 
 def _question_of(item: Any) -> str:
-    """A request's question, for sending all answers to one question to one worker (which
-    derives it once) and distinct questions to distinct workers."""
+    """A request's (or a chunk's first request's) question, for sending all answers to one
+    question to one worker (which derives it once) and distinct questions to distinct workers."""
+    if isinstance(item, list):
+        item = item[0][1]
     request = item[0]
     problem = request.get("problem") if isinstance(request, Mapping) else None
     try:
@@ -97,7 +139,7 @@ def _question_of(item: Any) -> str:
 def check_pool(jobs: int = 1) -> Pool:
     """Workers for checking requests (what `run_batch` uses when it is given none)."""
     return Pool(
-        _limited,
+        _judge_chunk,
         jobs=jobs,
         limits=Limits(seconds=PREPARE_LIMIT + GRACE),
         affinity=_question_of,
@@ -126,8 +168,10 @@ def check(
     global _shared
     if _shared is None:
         _shared = check_pool()
-    (outcome,) = _shared.run([(0, (request, float(time_limit)))])
-    return _verdict(outcome, part, float(time_limit))
+    entries = [(0, (request, float(time_limit)))]
+    (outcome,) = _shared.run([(0, entries)])
+    settled, _rest = _settle(outcome, entries)
+    return _verdict(settled[0], part, float(time_limit))
 
 
 def _verdict(outcome: Outcome, part: Any, limit: float) -> Verdict:
@@ -209,6 +253,43 @@ def _request(number: int, record: str | bytes) -> Any:
     return request
 
 
+def _chunked(work: list[tuple[int, tuple]]) -> list[list[tuple[int, tuple]]]:
+    """The requests in chunks of at most CHUNK, each of one question, in order of each
+    question's first request."""
+    by_question: dict[str, list[tuple[int, tuple]]] = {}
+    for entry in work:
+        by_question.setdefault(_question_of(entry[1]), []).append(entry)
+    return [
+        entries[k : k + CHUNK]
+        for entries in by_question.values()
+        for k in range(0, len(entries), CHUNK)
+    ]
+
+
+def _judged_chunks(pool: Pool, work: list[tuple[int, tuple]]):
+    """The Outcomes settled (by position) as each chunk comes back, until every request is
+    settled: the rest of a chunk whose worker was killed goes round again, to a fresh worker."""
+    chunks = _chunked(work)
+    while chunks:
+        by_key = dict(enumerate(chunks))
+        chunks = []
+        for outcome in pool.run(list(by_key.items())):
+            settled, rest = _settle(outcome, by_key[outcome.key])
+            if rest:
+                chunks.append(rest)
+            yield settled
+
+
+def _result(identity: tuple[Any, Any], outcome: Outcome, limit: float) -> dict[str, Any]:
+    """A request's result line from its Outcome."""
+    request_id, part = identity
+    try:
+        verdict = _verdict(outcome, part, limit)
+    except LagradeError as error:
+        return refused(request_id, part, str(error))
+    return {"id": request_id, **verdict.to_dict()}
+
+
 def run_batch(
     lines: Iterable[str | bytes],
     *,
@@ -255,19 +336,19 @@ def run_batch(
     own = pool is None
     pool = pool or check_pool(jobs)
     try:
-        outcomes = pool.run(work, in_order=True)
-        for position in range(len(ids)):
-            if position in answers:
-                yield answers.pop(position)
-                continue
-            outcome = next(outcomes)
-            request_id, part = ids[position]
-            try:
-                verdict = _verdict(outcome, part, limits[position])
-            except LagradeError as error:
-                yield refused(request_id, part, str(error))
-                continue
-            yield {"id": request_id, **verdict.to_dict()}
+        settled: dict[int, Outcome] = {}
+        waiting = 0  # the next position to yield
+        for outcome_of in _judged_chunks(pool, work):
+            settled.update(outcome_of)
+            while waiting < len(ids) and (waiting in answers or waiting in settled):
+                if waiting in answers:
+                    yield answers.pop(waiting)
+                else:
+                    yield _result(ids[waiting], settled.pop(waiting), limits[waiting])
+                waiting += 1
+        while waiting < len(ids):  # what follows the last judged request
+            yield answers.pop(waiting)
+            waiting += 1
     finally:
         if own:
             pool.close()

@@ -57,8 +57,9 @@ class Limits:
 class Outcome:
     """What became of one item: `ok` with its value; `refused` with the LagradeError the work
     raised (a user's error, to be reported as such); `timeout` or `error` (a bug of ours, or a
-    worker that died) with a reason. A `timeout` whose worker was killed has as value the
-    notes the item sent before (`note`), a tuple, empty when it sent none."""
+    worker that died) with a reason. A `timeout` whose worker was killed, and an `error` whose
+    worker died or reported one, has as value the notes the item sent before (`note`), a
+    tuple, empty when it sent none."""
 
     key: Any
     status: str  # "ok" | "refused" | "timeout" | "error"
@@ -322,7 +323,10 @@ class Pool:
             code = worker.process.exitcode
             died = "was killed" if code == -signal.SIGKILL else f"died (exit code {code})"
             elapsed = time.monotonic() - worker.since
-            return Outcome(key, "error", reason=f"the worker process {died}", seconds=elapsed)
+            notes = tuple(worker.notes)  # what the item had noted before its worker died
+            return Outcome(
+                key, "error", notes, reason=f"the worker process {died}", seconds=elapsed
+            )
         if message[0] == "deadline":
             worker.until = time.monotonic() + message[1]
             return None
@@ -340,7 +344,7 @@ class Pool:
             return Outcome(key, "ok", value=value, seconds=elapsed)
         if status == "refused":
             return Outcome(key, "refused", value=value, reason=str(value), seconds=elapsed)
-        return Outcome(key, "error", reason=str(value), seconds=elapsed)
+        return Outcome(key, "error", tuple(worker.notes), reason=str(value), seconds=elapsed)
 
     def close(self) -> None:
         while self._idle:

@@ -180,3 +180,28 @@ def test_batch_in_chunks_keeps_order_and_line_numbers(tmp_path, monkeypatch):
     assert [r["id"] for r in results] == [1, 2, 3, 4, None, 6, 7]
     assert results[4]["verdict"] == "invalid" and "line 5 " in results[4]["feedback"][0]
     assert all(r["verdict"] == "correct" for k, r in enumerate(results) if k != 4)
+
+
+def test_a_request_held_in_c_code_costs_only_itself_inside_its_chunk(monkeypatch):
+    """Requests to one question travel to a worker together (one message per chunk): a request
+    the planted checker holds in one C call is killed at its limit + grace and gets `timeout`,
+    the requests judged before it in the chunk keep their verdicts, and those after it are
+    judged by a fresh worker — in order, each once."""
+    import lagrade.judge.check as check_module
+    import lagrade.judge.driver as driver
+    from tests.planted import HANG, spinning
+
+    monkeypatch.setattr(driver, "run_checker", spinning(driver.run_checker))
+    answers = ["1", "2", HANG, "1", "3", "1"]
+    lines = [
+        json.dumps(
+            {"id": k, "problem": {"scene": "hoop"}, "part": "dof", "answer": a, "time_limit": 0.5}
+        )
+        for k, a in enumerate(answers)
+    ]
+    assert len(lines) <= check_module.CHUNK  # one chunk
+    with check_pool() as pool:
+        results = list(run_batch(lines, pool=pool))
+    assert [r["id"] for r in results] == list(range(len(answers)))
+    verdicts = [r["verdict"] for r in results]
+    assert verdicts == ["correct", "incorrect", "timeout", "correct", "incorrect", "correct"]
