@@ -10,6 +10,7 @@ the student wrote, so errors point into the original.
 from __future__ import annotations
 
 import re
+from collections.abc import Container
 
 from lagrade.notation.lexer import DDOT_MARK, DOT_MARK, Source
 
@@ -36,6 +37,7 @@ COMMANDS = frozenset(
 _TOKEN = re.compile(r"\\[A-Za-z]+|\\.|\\$|\s+|.", re.DOTALL)
 _NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*\Z")
 _SUBSCRIPT = re.compile(r"[A-Za-z0-9_]+\Z")
+_TRAILING_NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*\Z")
 #: What a fraction's numerator or denominator may be without brackets: a whole number, or one
 #: letter with its subscript. Anything longer is bracketed, whatever it looks like: `2l` is a
 #: product (the grammar would read `mg/2l` as (mg/2)*l), and a run of letters may be one too.
@@ -49,9 +51,10 @@ _TIME_OPERATOR = {"d": 1, "d^2": 2, "d^(2)": 2}
 class _Translator:
     """Recursive descent over LaTeX tokens; `out` collects (text, start, end) pieces."""
 
-    def __init__(self, src: Source, keep_e: bool):
+    def __init__(self, src: Source, keep_e: bool, names: Container[str] = ()):
         self.src = src
         self.keep_e = keep_e
+        self.names = names
         self.tokens = [(m.group(), m.start(), m.end()) for m in _TOKEN.finditer(src.text)]
         self.i = 0
         self.out: list[tuple[str, int, int]] = []
@@ -218,6 +221,8 @@ class _Translator:
         self.separate = True
 
     def subscript(self, start: int, end: int) -> None:
+        if self.declared_subscript(start):
+            return
         first, last = self.argument("_", start)
         pieces = self.sub(first, last)
         text = self.flat(pieces).replace(" ", "")
@@ -226,6 +231,31 @@ class _Translator:
             self.fail("A subscript may hold only letters and digits, as in x_{M}.", start, b)
         self.out.append(("_" + text, start, b))
         self.separate = True
+
+    def declared_subscript(self, start: int) -> bool:
+        """An unbraced subscript that spells one of the question's own names with the letters
+        before it (`x_dot`, `theta_ddot`, `x_Mdot` where the question declares them): the
+        student wrote the name the sheet gives, not x_{d}·o·t, so it is read whole. The longest
+        declared name wins; a letter or digit run must follow `_` without a space."""
+        before = _TRAILING_NAME.search(self.flat(self.out))
+        if before is None or not self.names:
+            return False
+        run = []
+        for text, _a, _b in self.tokens[self.i :]:
+            if len(text) != 1 or not (text.isalnum() or text == "_") or not text.isascii():
+                break
+            run.append(text)
+        stem = before.group()
+        for k in range(len(run), 1, -1):
+            suffix = "".join(run[:k])
+            # in LaTeX `mx_dot` is m·x_dot: the name may start at any letter of the stem
+            if any(stem[s:] + "_" + suffix in self.names for s in range(len(stem))):
+                end = self.tokens[self.i + k - 1][2]
+                self.i += k
+                self.out.append(("_" + suffix, start, end))
+                self.separate = True
+                return True
+        return False
 
     def command(self, name: str, start: int, end: int) -> None:
         if name in _WORDS:
@@ -384,9 +414,10 @@ def _is_bracketed(text: str) -> bool:
     return depth == 0
 
 
-def translate(src: Source, keep_e: bool = False) -> Source:
+def translate(src: Source, keep_e: bool = False, names: Container[str] = ()) -> Source:
     """The plain-grammar text of a LaTeX answer. `keep_e`: the question declares a symbol `e`, so
-    e^{x} is that symbol to a power rather than the exponential."""
-    translator = _Translator(src, keep_e)
+    e^{x} is that symbol to a power rather than the exponential. `names`: every spelling the
+    question accepts, so that its own plain names (`x_dot`) read whole in a LaTeX line."""
+    translator = _Translator(src, keep_e, names)
     translator.sequence()
     return src.derive(translator.out)
