@@ -28,6 +28,12 @@ _WORDS = {name: name for name in _GREEK} | {
 _TIMES = {"cdot": "*", "times": "*", "ast": "*"}
 _SPACES = frozenset((",", ";", ":", "!", " ", "quad", "qquad", "(", ")", "[", "]", "displaystyle"))
 _FRACS = frozenset(("frac", "dfrac", "tfrac"))
+_FUNCTIONS = frozenset(
+    "sin cos tan sec csc cot sinh cosh tanh arcsin arccos arctan exp ln log".split()
+)
+#: Spacing commands that end a bracket-less function's argument (\! is a negative space, kept
+#: inside the argument's reach only by the grammar's own rule).
+_ENDING_SPACES = frozenset((",", ";", ":", " ", "quad", "qquad"))
 _DOTS = {"dot": DOT_MARK, "ddot": DDOT_MARK}
 #: Every command (by name, without its backslash) the translator reads.
 COMMANDS = frozenset(
@@ -232,6 +238,60 @@ class _Translator:
         self.out.append(("_" + text, start, b))
         self.separate = True
 
+    def argument_to_spacing(self, name: str, start: int, end: int) -> bool:
+        """`\\cos\\theta \\, \\dot{\\theta}`: a function without brackets whose argument a
+        spacing command ends is read as that function of what stands before the spacing, by
+        LaTeX's own convention (the thin space is how a typesetter ends the argument). Only names,
+        Greek letters, dots, subscripts and digits may form that argument; anything else (a
+        power, an operator, a bracket) leaves the function to the grammar's rule. Returns whether
+        the function was read here."""
+        k = self.i
+        while k < len(self.tokens) and self.tokens[k][0].isspace():
+            k += 1
+        power = None
+        if k < len(self.tokens) and self.tokens[k][0] == "^":  # \cos^2\theta \, x
+            saved = self.i
+            self.i = k + 1
+            power = self.argument("^", start)
+            k, self.i = self.i, saved
+            if not _INTEGER.match(self.flat(self.sub(*power)).strip()):
+                return False  # the grammar says what sin^-1 or sin^x would mean
+        first, depth, letters = k, 0, False
+        while k < len(self.tokens):
+            text = self.tokens[k][0]
+            if depth == 0 and text[1:] in _ENDING_SPACES and text.startswith("\\"):
+                break
+            if text == "{":
+                depth += 1
+            elif text == "}":
+                depth -= 1
+                if depth < 0:
+                    return False
+            elif depth == 0 and not (
+                text.isspace()
+                or (len(text) == 1 and text.isascii() and (text.isalnum() or text == "_"))
+                or (text.startswith("\\") and (text[1:] in _GREEK or text[1:] in _DOTS))
+                or text[1:] in ("varphi", "vartheta", "varepsilon", "varrho")
+            ):
+                return False
+            letters = letters or not text.isspace()
+            k += 1
+        if k == len(self.tokens) or depth or not letters:
+            return False
+        self.word(_WORDS[name], start, end)
+        self.separate = False
+        if power is not None:
+            a, b = self.span_of(*power)
+            self.emit("^", a, a)
+            self.out.extend(self.sub(*power))
+        a, b = self.span_of(first, k)
+        pieces = self.sub(first, k)
+        self.emit("(", a, a)
+        self.out.extend(pieces)
+        self.emit(")", b, b)
+        self.i = k
+        return True
+
     def declared_subscript(self, start: int) -> bool:
         """An unbraced subscript that spells one of the question's own names with the letters
         before it (`x_dot`, `theta_ddot`, `x_Mdot` where the question declares them): the
@@ -258,6 +318,8 @@ class _Translator:
         return False
 
     def command(self, name: str, start: int, end: int) -> None:
+        if name in _FUNCTIONS and self.argument_to_spacing(name, start, end):
+            return
         if name in _WORDS:
             self.word(_WORDS[name], start, end)
         elif name in _TIMES:
