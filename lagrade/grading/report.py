@@ -120,9 +120,20 @@ def gradebook_csv(manifest: Mapping[str, Any], results: Sequence[Mapping[str, An
                 f"{percent:.1f}",
             ]
             + [format_number(per_problem.get(p["index"], 0.0)) for p in problems]
-            + [csv_cell(r["reason"])]
+            + [csv_cell(result_reason(r))]
         )
     return buffer.getvalue()
+
+
+def result_reason(result: Mapping[str, Any]) -> str:
+    """The reason a result's row gives: why it was not graded, and a sheet that names another
+    student than its file's (graded as the file's student, but the instructor's to look at)."""
+    reason = result["reason"]
+    other = result.get("sheet_student_id")
+    if not other:
+        return reason
+    said = f"the sheet says student_id {other!r}; graded as the file's student"
+    return f"{said}; {reason}" if reason else said
 
 
 def roster_columns(manifest: Mapping[str, Any]) -> list[str]:
