@@ -98,7 +98,6 @@ def warning(where: str, restored: list[str], kept: list[str], unknown: list[str]
     )
 
 
-
 #: The backslash sequences each format reads in a double-quoted string (TOML 1.0, JSON).
 _KNOWN = {
     "toml": re.compile(r'\\(?:[btnfr"\\]|u[0-9A-Fa-f]{4}|U[0-9A-Fa-f]{8}|[ \t]*\r?\n)'),

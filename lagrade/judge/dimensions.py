@@ -374,7 +374,8 @@ _FORMULA_NUMBERS = frozenset(
 
 def _typed_number(term: sp.Expr, handout: list[float]) -> bool:
     """Whether the term's number stands for a quantity: a decimal-born fraction (981/100), a
-    large whole number, or a handout value or its square (k = 5 typed as `5 q^2`). Such a
+    large whole number, or a handout value or its square, perhaps times a formula's number
+    (k = 5 typed as `5 q^2`, ½k as `2.5 q^2`). Such a
     number carries units the hint cannot see, so "981*q/100 has units of m" would be false."""
     coefficient = abs(term.as_coeff_Mul()[0])
     if not isinstance(coefficient, sp.Rational) or coefficient in (0, 1):
@@ -384,7 +385,8 @@ def _typed_number(term: sp.Expr, handout: list[float]) -> bool:
     if coefficient in _FORMULA_NUMBERS:  # ½ m v² is ½, even where some length is 0.5 m
         return False
     c = float(coefficient)
-    return any(abs(c - v) <= 1e-9 * v or abs(c - v * v) <= 1e-9 * v * v for v in handout)
+    factors = [1.0, *(float(f) for f in _FORMULA_NUMBERS)]  # ½k typed as 2.5 for k = 5
+    return any(abs(c - f * w) <= 1e-9 * c for v in handout for w in (v, v * v) for f in factors)
 
 
 def _right_equation(problem, expr: sp.Expr) -> bool:

@@ -89,7 +89,9 @@ class NameRules(TokenStream):
                 read = (entry.jet.q, entry.jet.dot, entry.jet.ddot)[
                     min(2, entry.order + tok.marks + tok.primes)
                 ]
-                self.warn(f"{tok.text}{chr(39) * tok.primes} is read as {read.name} (a prime as d/dt).")
+                self.warn(
+                    f"{tok.text}{chr(39) * tok.primes} is read as {read.name} (a prime as d/dt)."
+                )
                 return entry
             base = entry.jet.name
             if entry.order + tok.marks + tok.primes == 1:

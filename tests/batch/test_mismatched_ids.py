@@ -38,7 +38,9 @@ def test_grade_lists_sheets_naming_another_student(workspace, capsys):
     assert result["sheet_student_id"] == "s05" and result["status"] == "graded"
     assert "sheet_student_id" not in json.loads((out / "students" / "s03.json").read_text())
     # the gradebook's reason column says it too (issue 38: it was empty)
-    rows = {row["id"]: row for row in csv.DictReader(io.StringIO((out / "gradebook.csv").read_text()))}
+    rows = {
+        row["id"]: row for row in csv.DictReader(io.StringIO((out / "gradebook.csv").read_text()))
+    }
     assert rows["s02"]["reason"] == "the sheet says student_id 's05'; graded as the file's student"
     assert rows["s03"]["reason"] == ""
 

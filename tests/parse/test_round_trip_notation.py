@@ -16,7 +16,9 @@ from lagrade.notation.parse import Vocabulary, parse_answer, parse_equation
 
 VOCAB = Vocabulary.from_names(["x", "theta", "x_M"], ["m", "k", "g", "l", "G", "M", "omega"])
 x, theta, x_M = jet("x"), jet("theta"), jet("x_M")
-m, k, g, l, G, M, omega = (sp.Symbol(n, positive=True) for n in ("m", "k", "g", "l", "G", "M", "omega"))
+m, k, g, l, G, M, omega = (
+    sp.Symbol(n, positive=True) for n in ("m", "k", "g", "l", "G", "M", "omega")
+)
 
 
 def _read(text: str, vocab: Vocabulary = VOCAB):
