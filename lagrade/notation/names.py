@@ -86,12 +86,10 @@ class NameRules(TokenStream):
         if tok.primes and not self.lexicon.allow_primes:
             if self.lexicon.table["t"].value == mechanics.t:
                 # t is the only independent variable: a prime can only be d/dt (issue 38)
-                read = (entry.jet.q, entry.jet.dot, entry.jet.ddot)[
-                    min(2, entry.order + tok.marks + tok.primes)
-                ]
-                self.warn(
-                    f"{tok.text}{chr(39) * tok.primes} is read as {read.name} (a prime as d/dt)."
-                )
+                jets = (entry.jet.q, entry.jet.dot, entry.jet.ddot)
+                typed = jets[min(2, entry.order + tok.marks)].name + "'" * tok.primes
+                read = jets[min(2, entry.order + tok.marks + tok.primes)].name
+                self.warn(f"{typed} is read as {read} (a prime as d/dt).")
                 return entry
             base = entry.jet.name
             if entry.order + tok.marks + tok.primes == 1:

@@ -96,6 +96,8 @@ def test_a_run_with_a_longer_declared_name_inside_still_asks() -> None:
         ("θ'' + g/l sin(θ)", theta.ddot + g / l * sp.sin(theta.q), "theta'' is read as theta_ddot"),
         ("m l^2 theta'", m * l**2 * theta.dot, "theta' is read as theta_dot"),
         ("M x_M''", M * x_M.ddot, "x_M'' is read as x_M_ddot"),
+        ("m θ′", m * theta.dot, "theta' is read as theta_dot"),  # U+2032, the prime sign
+        (r"\dot{\theta}'", theta.ddot, "theta_dot' is read as theta_ddot"),
         (r"\ddot{x} + \omega^2 x'", x.ddot + omega**2 * x.dot, "x' is read as x_dot"),
     ],
 )
