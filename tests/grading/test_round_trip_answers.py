@@ -128,3 +128,28 @@ def test_a_named_mistake_is_one_sentence_with_where_it_shows(problem, part, answ
     assert verdict.status == "incorrect"
     (sentence,) = verdict.feedback
     assert named in sentence and "for example" in sentence
+
+
+@pytest.mark.parametrize(
+    ("part", "text", "note"),
+    [
+        (
+            "lagrangian",
+            "1/2 m (rho_dot^2 + rho^2 theta_dot^2) + GMm/rho",
+            "GMm is read as G*M*m: separate names with * or a space.",
+        ),  # fmt: skip
+        (
+            "eom",
+            "m rho'' - m rho theta_dot^2 + G M m/rho^2 = 0",
+            "rho'' is read as rho_ddot (a prime as d/dt).",
+        ),  # fmt: skip
+    ],
+)
+def test_the_answer_pages_preview_shows_the_note(part, text, note):
+    """The page's live preview reads through the grader's door and lists the parser's notes,
+    right answer or not: the student sees how the answer was read before it is graded."""
+    from lagrade.grading.answer_page.preview import preview
+
+    row = {"key": part, "part": part, "points": 1, "quantity": None}
+    shown = preview({"scene": "kepler", "seed": 1}, row, text)
+    assert shown["status"] == "read" and note in shown["warnings"]
