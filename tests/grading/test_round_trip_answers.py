@@ -153,3 +153,48 @@ def test_the_answer_pages_preview_shows_the_note(part, text, note):
     row = {"key": part, "part": part, "points": 1, "quantity": None}
     shown = preview({"scene": "kepler", "seed": 1}, row, text)
     assert shown["status"] == "read" and note in shown["warnings"]
+
+
+# --- an ambiguity alone never zeroes a list part ----------------------------------------------
+# Wikipedia's "Inverted pendulum" (the cart and pendulum, Lagrange's equations) prints the terms
+# as "m ℓ v θ̇ cos θ", a function without brackets; a student who types "m l cos psi psi_dot" in
+# a sheet cannot add the brackets after the deadline.
+
+BRACKETLESS = [
+    "p_s = (M+m) s_dot + m l cos psi psi_dot",
+    "p_psi = m l^2 psi_dot + m l cos psi s_dot",
+]
+
+
+@pytest.mark.parametrize(
+    ("answer", "status", "score"),
+    [
+        (BRACKETLESS, "correct", 1.0),  # every line ambiguous: was invalid, 0
+        ([BRACKETLESS[0], "p_psi = m l^2 psi_dot + m l cos(psi) s_dot"], "correct", 1.0),
+        ([BRACKETLESS[0], "p_psi = m l^2 psi_dot + m l cos(psi) s_dot + ("], "incorrect", 0.5),
+    ],
+)
+def test_an_ambiguous_line_is_judged_under_the_reading_that_scores_best(answer, status, score):
+    verdict = judge(CART, "momenta", answer)
+    assert (verdict.status, verdict.score) == (status, score), verdict.feedback
+    notes = [f for f in verdict.feedback if "write the brackets" in f]
+    assert notes and all("it was read as cos(psi)*" in f for f in notes)
+
+
+def test_an_ambiguous_line_wrong_under_every_reading_still_counts_as_wrong():
+    """No reading is right: the line stays unread, with the parser's message, and costs its
+    share; nothing is credited for the ambiguity itself."""
+    wrong = [
+        "p_s = (M+m) s_dot - m l cos psi psi_dot",
+        "p_psi = m l^2 psi_dot + m l cos(psi) s_dot",
+    ]
+    verdict = judge(CART, "momenta", wrong)
+    assert (verdict.status, verdict.score) == ("incorrect", 0.5)
+    assert verdict.feedback[0].startswith("Line 1 could not be read: Ambiguous 'cos'")
+
+
+def test_a_one_line_part_keeps_its_ambiguity_as_a_message():
+    """A single-expression part is not a list: its ambiguity is a message the student can act
+    on (invalid, no attempt spent), as before."""
+    verdict = judge(CART, "lagrangian", "1/2 (M+m) s_dot^2 + m l cos psi s_dot psi_dot")
+    assert verdict.status == "invalid" and "Ambiguous 'cos'" in verdict.feedback[0]

@@ -16,6 +16,7 @@ import sympy as sp
 from lagrade.errors import ParseError, RequestError, UnsupportedExpression
 from lagrade.judge.compiled import Compiled
 from lagrade.judge.evaluate import compile_tree
+from lagrade.judge.parts.ambiguity import note_ambiguous
 from lagrade.judge.parts.items import single_text
 from lagrade.judge.problem import Problem, parser
 from lagrade.notation.parse import NameRead
@@ -264,6 +265,7 @@ def read_lines(items: Sequence[Any], reader: Callable[[Any], Read | list[Read]])
             got = reader(item)
         except ParseError as error:
             entries.append(Unreadable(item if isinstance(item, str) else str(item), error))
+            note_ambiguous(item, error)  # judged under its readings by `run_checker`
             continue
         entries.extend(got if isinstance(got, list) else [got])
     lines = Lines(tuple(entries))
