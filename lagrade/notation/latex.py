@@ -25,6 +25,8 @@ _WORDS = {name: name for name in _GREEK} | {
     "sinh": "sinh", "cosh": "cosh", "tanh": "tanh", "arcsin": "asin", "arccos": "acos",
     "arctan": "atan", "exp": "exp", "ln": "ln", "log": "log", "max": "Max", "min": "Min",
 }  # fmt: skip
+#: The commands that are letters (a function's bare argument may be one).
+_LETTERS = frozenset(name for name in _WORDS if _WORDS[name] in _GREEK or name.startswith("var"))
 _TIMES = {"cdot": "*", "times": "*", "ast": "*"}
 _SPACES = frozenset((",", ";", ":", "!", " ", "quad", "qquad", "(", ")", "[", "]", "displaystyle"))
 _FRACS = frozenset(("frac", "dfrac", "tfrac"))
@@ -43,7 +45,6 @@ COMMANDS = frozenset(
 _TOKEN = re.compile(r"\\[A-Za-z]+|\\.|\\$|\s+|.", re.DOTALL)
 _NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*\Z")
 _SUBSCRIPT = re.compile(r"[A-Za-z0-9_]+\Z")
-_TRAILING_NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*\Z")
 #: What a fraction's numerator or denominator may be without brackets: a whole number, or one
 #: letter with its subscript. Anything longer is bracketed, whatever it looks like: `2l` is a
 #: product (the grammar would read `mg/2l` as (mg/2)*l), and a run of letters may be one too.
@@ -270,8 +271,7 @@ class _Translator:
             elif depth == 0 and not (
                 text.isspace()
                 or (len(text) == 1 and text.isascii() and (text.isalnum() or text == "_"))
-                or (text.startswith("\\") and (text[1:] in _GREEK or text[1:] in _DOTS))
-                or text[1:] in ("varphi", "vartheta", "varepsilon", "varrho")
+                or (text.startswith("\\") and (text[1:] in _LETTERS or text[1:] in _DOTS))
             ):
                 return False
             letters = letters or not text.isspace()
@@ -297,7 +297,7 @@ class _Translator:
         before it (`x_dot`, `theta_ddot`, `x_Mdot` where the question declares them): the
         student wrote the name the sheet gives, not x_{d}·o·t, so it is read whole. The longest
         declared name wins; a letter or digit run must follow `_` without a space."""
-        before = _TRAILING_NAME.search(self.flat(self.out))
+        before = _NAME.search(self.flat(self.out))  # the name the output ends with
         if before is None or not self.names:
             return False
         run = []
