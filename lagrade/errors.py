@@ -135,12 +135,16 @@ class ParseError(GraderError):
         span: tuple[int, int] = (0, 0),
         source: str = "",
         hint: str | None = None,
+        readings: tuple[tuple[str, str], ...] = (),
     ):
         super().__init__(message)
         self.message = message
         self.span = (int(span[0]), int(span[1]))
         self.source = source
         self.hint = hint
+        #: For an ambiguity, each reading as (the ambiguous part, the whole text so read):
+        #: `sin omega t` gives sin(omega*t) and sin(omega)*t; so that a grader can judge them.
+        self.readings = tuple((str(a), str(b)) for a, b in readings)
 
     @property
     def position(self) -> int:
@@ -148,7 +152,7 @@ class ParseError(GraderError):
         return self.span[0]
 
     def __reduce__(self):
-        return (ParseError, (self.message, self.span, self.source, self.hint))
+        return (ParseError, (self.message, self.span, self.source, self.hint, self.readings))
 
     def __str__(self) -> str:
         lines = [self.message]

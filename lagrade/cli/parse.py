@@ -75,5 +75,7 @@ def add_parser(commands: argparse._SubParsersAction) -> None:
     parse.add_argument(
         "--latex", action="store_true", help="read TEXT as LaTeX (default: auto-detect)"
     )
-    parse.add_argument("--allow-primes", action="store_true", help="read x' as x_dot")
+    parse.add_argument(
+        "--allow-primes", action="store_true", help="read x' as x_dot without a note"
+    )
     parse.set_defaults(run=run)

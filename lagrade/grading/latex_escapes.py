@@ -67,18 +67,84 @@ def escaped_words(raw: str) -> frozenset[str]:
     return frozenset(words)
 
 
-def warning(where: str, restored: list[str], kept: list[str]) -> str:
-    """The sentence for the student: what was read, and the fix (single quotes)."""
+def warning(where: str, restored: list[str], kept: list[str], unknown: list[str] = ()) -> str:
+    """The sentence for the student: what was read, and the fix (single quotes). `unknown`:
+    the sequences the format could not read at all (\\dot, which voided the sheet before)."""
     fix = "write LaTeX in single quotes ('...' or '''...'''), where a backslash stays a backslash"
+    if unknown and not restored and not kept:
+        shown = ", ".join(dict.fromkeys(unknown))
+        return (
+            f"{where}: in a double-quoted string a backslash begins an escape, and {shown} is "
+            f"none the sheet's format knows; it was read as {shown} as you meant, but {fix}."
+        )
     if restored and not kept:
         shown = ", ".join(dict.fromkeys(restored))
+        if unknown:  # one sentence for both kinds of escape
+            shown = ", ".join(dict.fromkeys([*unknown, *restored]))
+            return (
+                f"{where}: in a double-quoted string a backslash begins an escape ({shown}); "
+                f"it was read as {shown} as you meant, but {fix}."
+            )
         return (
             f"{where}: in a double-quoted string {shown} is read as an escape (\\t is a tab, "
             f"\\f a form feed); it was read as {shown} as you meant, but {fix}."
         )
     shown = ", ".join(dict.fromkeys(kept))
-    also = f" ({', '.join(dict.fromkeys(restored))} was restored)" if restored else ""
+    read = [*unknown, *restored]
+    also = f" ({', '.join(dict.fromkeys(read))} was read as typed)" if read else ""
     return (
         f"{where}: the answer holds {shown}, which a double-quoted string makes of a backslash "
         f"(\\theta becomes a tab and 'heta'){also}; {fix}."
     )
+
+
+#: The backslash sequences each format reads in a double-quoted string (TOML 1.0, JSON).
+_KNOWN = {
+    "toml": re.compile(r'\\(?:[btnfr"\\]|u[0-9A-Fa-f]{4}|U[0-9A-Fa-f]{8}|[ \t]*\r?\n)'),
+    "json": re.compile(r'\\(?:[btnfr"\\/]|u[0-9A-Fa-f]{4})'),
+}
+#: What `escape_unknown` puts for a backslash the format cannot read: an escape both formats
+#: decode, to a private-use character no keyboard types, so that `unmark` finds, per answer,
+#: where the sheet held such a backslash.
+MARK = "\ue000"
+_MARKED = re.compile(MARK + "([A-Za-z]+|.?)", re.DOTALL)
+
+
+def escape_unknown(raw: str, form: str) -> tuple[str, bool]:
+    """(`raw` with each backslash that begins no escape `form` ("toml" or "json") knows replaced,
+    inside the double-quoted strings, by the escape of `MARK`; whether there was one):
+    `"\\dot{q}"` is an error that voids the whole sheet, where the student meant the LaTeX
+    command \\dot. Known escapes are left to `repair` (`"\\dot{\\theta}"` keeps \\dot here and
+    has \\theta restored there)."""
+    known = _KNOWN[form]
+    found = False
+
+    def string(m: re.Match) -> str:
+        nonlocal found
+        text = m.group(1)
+        if not text:
+            return m.group()
+        out, k = [], 0
+        while k < len(text):
+            escape = known.match(text, k) if text[k] == "\\" else None
+            if escape is not None:
+                out.append(escape.group())
+                k = escape.end()
+                continue
+            if text[k] == "\\":
+                found = True
+                out.append("\\uE000")
+            else:
+                out.append(text[k])
+            k += 1
+        return "".join(out)
+
+    return _STRINGS.sub(string, raw), found
+
+
+def unmark(answer: str) -> tuple[str, list[str]]:
+    """(the answer with each `MARK` a backslash again, the LaTeX sequences so read: \\dot)."""
+    if MARK not in answer:
+        return answer, []
+    kept = ["\\" + m.group(1) for m in _MARKED.finditer(answer)]
+    return answer.replace(MARK, "\\"), kept

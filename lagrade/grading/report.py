@@ -17,6 +17,8 @@ from typing import Any
 
 import lagrade.grading.atomic as atomic
 from lagrade.assign.templating import environment, md_block, md_code, md_escape
+from lagrade.judge.parts.own_coordinates import OWN_COORDINATES
+from lagrade.judge.parts.reading import is_unreadable_line
 from lagrade.untrusted import visible
 
 STUDENTS = "students"
@@ -118,9 +120,20 @@ def gradebook_csv(manifest: Mapping[str, Any], results: Sequence[Mapping[str, An
                 f"{percent:.1f}",
             ]
             + [format_number(per_problem.get(p["index"], 0.0)) for p in problems]
-            + [csv_cell(r["reason"])]
+            + [csv_cell(result_reason(r))]
         )
     return buffer.getvalue()
+
+
+def result_reason(result: Mapping[str, Any]) -> str:
+    """The reason a result's row gives: why it was not graded, and a sheet that names another
+    student than its file's (graded as the file's student, but the instructor's to look at)."""
+    reason = result["reason"]
+    other = result.get("sheet_student_id")
+    if not other:
+        return reason
+    said = f"the sheet says student_id {other!r}; graded as the file's student"
+    return f"{said}; {reason}" if reason else said
 
 
 def roster_columns(manifest: Mapping[str, Any]) -> list[str]:
@@ -188,13 +201,13 @@ def class_summary(
                 }
             )
             for v in verdicts:
-                # The first named mistake is the diagnosis; its sentence leads the feedback.
-                kind = v["mistakes"][0] if v["mistakes"] else None
-                if kind and kind != "blank":
+                # The first named mistake is the diagnosis; its sentence leads the feedback,
+                # after any line that could not be read (a parse message is no example of it).
+                kind = next((k for k in v["mistakes"] if k not in NOT_MISTAKES), None)
+                if kind:
                     mistakes[(part["key"], kind)] += 1
-                    examples.setdefault(
-                        (part["key"], kind), v["feedback"][0] if v["feedback"] else kind
-                    )
+                    said = [f for f in v["feedback"] if not is_unreadable_line(f)]
+                    examples.setdefault((part["key"], kind), said[0] if said else kind)
         top = [
             {"part": k[0], "mistake": k[1], "feedback": examples[k], "count": n}
             for k, n in sorted(mistakes.items(), key=lambda kv: (-kv[1], kv[0]))[:8]
@@ -218,6 +231,11 @@ def class_summary(
         "stray_files": dict(sorted((stray or {}).items())),
         "mismatched_ids": mismatched_ids(results),
     }
+
+
+#: Tags a verdict carries that are no mistake: a part left blank, and a valid choice of other
+#: coordinates (the rubric may deduct for it, but it is nothing to teach against).
+NOT_MISTAKES = frozenset({"blank", OWN_COORDINATES})
 
 
 def mismatched_ids(results: Sequence[Mapping[str, Any]]) -> dict[str, str]:

@@ -16,6 +16,7 @@ from typing import Any
 
 import lagrade.untrusted as untrusted
 from lagrade.errors import UnreadableInput
+from lagrade.grading.latex_escapes import escape_unknown, unmark
 from lagrade.grading.latex_escapes import repair as repair_escapes
 from lagrade.grading.latex_escapes import warning as escape_warning
 
@@ -140,15 +141,27 @@ def sheet_from_bytes(
         return _bad(path, digest, "the file is empty")
     if b"\x00" in data:
         return _bad(path, digest, "the file is binary, not a text answer sheet")
+    form = "json" if path.suffix.lower() == ".json" else "toml"
+    load = untrusted.load_json if form == "json" else untrusted.load_toml
     try:
         text = untrusted.decode(data, "the file")
-        if path.suffix.lower() == ".json":
-            raw = untrusted.load_json(text, "the answer sheet")
-        else:
-            raw = untrusted.load_toml(text, "the answer sheet")
+        try:
+            raw = load(text, "the answer sheet")
+        except UnreadableInput as first:
+            # \dot, \sin, \alpha in a "…" string: escapes the format cannot read void the
+            # whole sheet; read them as the LaTeX meant, with a note per answer, when that
+            # makes the sheet readable (otherwise the first error stands)
+            fixed, found = escape_unknown(text, form)
+            if not found:
+                raise
+            try:
+                raw = load(fixed, "the answer sheet")
+            except UnreadableInput:
+                raise first from None
+            text = fixed
     except UnreadableInput as error:
         reason = str(error)
-        if "Unescaped '\\'" in reason:  # \sin, \dot, \alpha in a "…" string
+        if "Unescaped '\\'" in reason:  # a backslash the recovery could not place
             reason += (
                 "; LaTeX in an answer belongs in single quotes, where a backslash stays a "
                 "backslash: eom = '\\ddot{x} = 0'"
@@ -161,8 +174,9 @@ def sheet_from_bytes(
 
 
 def _repair_escapes(sheet: Sheet, raw: str) -> Sheet:
-    """Each answer whose LaTeX a string escape ate (`\\theta` read as a tab and "heta") read as
-    meant where it can be, with a warning per answer (lagrade.grading.latex_escapes)."""
+    """Each answer whose LaTeX a string escape ate (`\\theta` read as a tab and "heta"), or held
+    one the format cannot read (`\\dot`, marked by `escape_unknown`), read as meant where it
+    can be, with one warning per answer (lagrade.grading.latex_escapes)."""
     warnings = list(sheet.warnings)
     answers: dict[int, dict[str, Any]] = {}
     for index, table in sheet.answers.items():
@@ -172,16 +186,18 @@ def _repair_escapes(sheet: Sheet, raw: str) -> Sheet:
             if not all(isinstance(v, str) for v in items):
                 answers[index][key] = value
                 continue
-            fixed, restored, kept = [], [], []
+            fixed, restored, kept, unknown = [], [], [], []
             for item in items:
+                item, u = unmark(item)
                 text, r, k = repair_escapes(item, raw)
                 fixed.append(text)
                 restored += r
                 kept += k
+                unknown += u
             answers[index][key] = fixed if isinstance(value, list) else fixed[0]
-            if restored or kept:
+            if restored or kept or unknown:
                 where = f"[problem{index}] {untrusted.bounded(key, 60)}"
-                warnings.append(escape_warning(where, restored, kept))
+                warnings.append(escape_warning(where, restored, kept, unknown))
     return replace(sheet, answers=answers, warnings=tuple(warnings))
 
 

@@ -351,6 +351,9 @@ def hint_for(problem, answer, expected: str = "") -> str:
         return ""
     expr = answer if isinstance(answer, sp.Basic) else answer.expr  # a Read: built only now
     terms = list(sp.Add.make_args(expr))
+    values = [abs(float(v)) for v in getattr(problem, "values", {}).values() if v]
+    if any(_typed_number(term, values) for term in terms):
+        return ""  # a number typed for a parameter has that parameter's units, unseen here
     harmless: Callable[[list[sp.Expr]], bool] = lambda odd: False  # noqa: E731
     if expected == "energy":
         motion = {s for j in problem.jets for s in (j.q, j.dot)} | {t}
@@ -359,6 +362,31 @@ def hint_for(problem, answer, expected: str = "") -> str:
     elif expected == "equation":  # rows of different dimensions combined: a right equation
         harmless = lambda odd: _right_equation(problem, sp.Add(*odd))  # noqa: E731
     return disagreement(terms, known, _expected(problem, known, expected), harmless)
+
+
+#: The numbers formulas carry (½, 2, ⅓, 3/2, 1/12): a coefficient beyond them was typed for a
+#: quantity (9.81 for g), and its units cannot be told.
+_FORMULA_NUMBER = 12
+_FORMULA_NUMBERS = frozenset(
+    sp.Rational(p, q) for p, q in ((2, 1), (3, 1), (4, 1), (1, 2), (1, 3), (1, 4), (3, 2), (2, 3))
+)
+
+
+def _typed_number(term: sp.Expr, handout: list[float]) -> bool:
+    """Whether the term's number stands for a quantity: a decimal-born fraction (981/100), a
+    large whole number, or a handout value or its square, perhaps times a formula's number
+    (k = 5 typed as `5 q^2`, ½k as `2.5 q^2`). Such a
+    number carries units the hint cannot see, so "981*q/100 has units of m" would be false."""
+    coefficient = abs(term.as_coeff_Mul()[0])
+    if not isinstance(coefficient, sp.Rational) or coefficient in (0, 1):
+        return not isinstance(coefficient, sp.Rational)
+    if coefficient.p > _FORMULA_NUMBER or coefficient.q > _FORMULA_NUMBER:
+        return True
+    if coefficient in _FORMULA_NUMBERS:  # ½ m v² is ½, even where some length is 0.5 m
+        return False
+    c = float(coefficient)
+    factors = [1.0, *(float(f) for f in _FORMULA_NUMBERS)]  # ½k typed as 2.5 for k = 5
+    return any(abs(c - f * w) <= 1e-9 * c for v in handout for w in (v, v * v) for f in factors)
 
 
 def _right_equation(problem, expr: sp.Expr) -> bool:

@@ -404,21 +404,23 @@ class Parser(NameRules):
             self.operand_after(tok)
             following = self.parse_unary()
             rest = self.text[tok.start : following.end]
-            fix = f"{name}({arg}{rest}) or {name}({arg}){rest}"
+            readings = (f"{name}({arg}{rest})", f"{name}({arg}){rest}")
         elif tok.text in ("*", "/"):
             self.next()
             self.operand_after(tok)
             following = self.parse_power()
             rest = tok.text + self.text[following.start : following.end]
-            fix = f"{name}({arg}{rest}) or {name}({arg}){rest}"
+            readings = (f"{name}({arg}{rest})", f"{name}({arg}){rest}")
         else:
             following = self.parse_power()
             rest = self.text[following.start : following.end]
-            fix = f"{name}({arg}*{rest}) or {name}({arg})*{rest}"
+            readings = (f"{name}({arg}*{rest})", f"{name}({arg})*{rest}")
+        before, after = self.text[: function.start], self.text[following.end :]
         self.fail(
-            f"Ambiguous '{function.text}' without brackets: write {fix}.",
+            f"Ambiguous '{function.text}' without brackets: write {' or '.join(readings)}.",
             function.start,
             following.end,
+            readings=tuple((reading, before + reading + after) for reading in readings),
         )
 
     def parse_time_derivative(self, order: int, after: int) -> Node:

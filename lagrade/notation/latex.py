@@ -10,6 +10,7 @@ the student wrote, so errors point into the original.
 from __future__ import annotations
 
 import re
+from collections.abc import Container
 
 from lagrade.notation.lexer import DDOT_MARK, DOT_MARK, Source
 
@@ -24,9 +25,17 @@ _WORDS = {name: name for name in _GREEK} | {
     "sinh": "sinh", "cosh": "cosh", "tanh": "tanh", "arcsin": "asin", "arccos": "acos",
     "arctan": "atan", "exp": "exp", "ln": "ln", "log": "log", "max": "Max", "min": "Min",
 }  # fmt: skip
+#: The commands that are letters (a function's bare argument may be one).
+_LETTERS = frozenset(name for name in _WORDS if _WORDS[name] in _GREEK or name.startswith("var"))
 _TIMES = {"cdot": "*", "times": "*", "ast": "*"}
 _SPACES = frozenset((",", ";", ":", "!", " ", "quad", "qquad", "(", ")", "[", "]", "displaystyle"))
 _FRACS = frozenset(("frac", "dfrac", "tfrac"))
+_FUNCTIONS = frozenset(
+    "sin cos tan sec csc cot sinh cosh tanh arcsin arccos arctan exp ln log".split()
+)
+#: Spacing commands that end a bracket-less function's argument (\! is a negative space, kept
+#: inside the argument's reach only by the grammar's own rule).
+_ENDING_SPACES = frozenset((",", ";", ":", " ", "quad", "qquad"))
 _DOTS = {"dot": DOT_MARK, "ddot": DDOT_MARK}
 #: Every command (by name, without its backslash) the translator reads.
 COMMANDS = frozenset(
@@ -49,9 +58,10 @@ _TIME_OPERATOR = {"d": 1, "d^2": 2, "d^(2)": 2}
 class _Translator:
     """Recursive descent over LaTeX tokens; `out` collects (text, start, end) pieces."""
 
-    def __init__(self, src: Source, keep_e: bool):
+    def __init__(self, src: Source, keep_e: bool, names: Container[str] = ()):
         self.src = src
         self.keep_e = keep_e
+        self.names = names
         self.tokens = [(m.group(), m.start(), m.end()) for m in _TOKEN.finditer(src.text)]
         self.i = 0
         self.out: list[tuple[str, int, int]] = []
@@ -218,6 +228,8 @@ class _Translator:
         self.separate = True
 
     def subscript(self, start: int, end: int) -> None:
+        if self.declared_subscript(start):
+            return
         first, last = self.argument("_", start)
         pieces = self.sub(first, last)
         text = self.flat(pieces).replace(" ", "")
@@ -227,7 +239,87 @@ class _Translator:
         self.out.append(("_" + text, start, b))
         self.separate = True
 
+    def argument_to_spacing(self, name: str, start: int, end: int) -> bool:
+        """`\\cos\\theta \\, \\dot{\\theta}`: a function without brackets whose argument a
+        spacing command ends is read as that function of what stands before the spacing, by
+        LaTeX's own convention (the thin space is how a typesetter ends the argument). Only names,
+        Greek letters, dots, subscripts and digits may form that argument; anything else (a
+        power, an operator, a bracket) leaves the function to the grammar's rule. Returns whether
+        the function was read here."""
+        k = self.i
+        while k < len(self.tokens) and self.tokens[k][0].isspace():
+            k += 1
+        power = None
+        if k < len(self.tokens) and self.tokens[k][0] == "^":  # \cos^2\theta \, x
+            saved = self.i
+            self.i = k + 1
+            power = self.argument("^", start)
+            k, self.i = self.i, saved
+            if not _INTEGER.match(self.flat(self.sub(*power)).strip()):
+                return False  # the grammar says what sin^-1 or sin^x would mean
+        first, depth, letters = k, 0, False
+        while k < len(self.tokens):
+            text = self.tokens[k][0]
+            if depth == 0 and text[1:] in _ENDING_SPACES and text.startswith("\\"):
+                break
+            if text == "{":
+                depth += 1
+            elif text == "}":
+                depth -= 1
+                if depth < 0:
+                    return False
+            elif depth == 0 and not (
+                text.isspace()
+                or (len(text) == 1 and text.isascii() and (text.isalnum() or text == "_"))
+                or (text.startswith("\\") and (text[1:] in _LETTERS or text[1:] in _DOTS))
+            ):
+                return False
+            letters = letters or not text.isspace()
+            k += 1
+        if k == len(self.tokens) or depth or not letters:
+            return False
+        self.word(_WORDS[name], start, end)
+        self.separate = False
+        if power is not None:
+            a, b = self.span_of(*power)
+            self.emit("^", a, a)
+            self.out.extend(self.sub(*power))
+        a, b = self.span_of(first, k)
+        pieces = self.sub(first, k)
+        self.emit("(", a, a)
+        self.out.extend(pieces)
+        self.emit(")", b, b)
+        self.i = k
+        return True
+
+    def declared_subscript(self, start: int) -> bool:
+        """An unbraced subscript that spells one of the question's own names with the letters
+        before it (`x_dot`, `theta_ddot`, `x_Mdot` where the question declares them): the
+        student wrote the name the sheet gives, not x_{d}·o·t, so it is read whole. The longest
+        declared name wins; a letter or digit run must follow `_` without a space."""
+        before = _NAME.search(self.flat(self.out))  # the name the output ends with
+        if before is None or not self.names:
+            return False
+        run = []
+        for text, _a, _b in self.tokens[self.i :]:
+            if len(text) != 1 or not (text.isalnum() or text == "_") or not text.isascii():
+                break
+            run.append(text)
+        stem = before.group()
+        for k in range(len(run), 1, -1):
+            suffix = "".join(run[:k])
+            # in LaTeX `mx_dot` is m·x_dot: the name may start at any letter of the stem
+            if any(stem[s:] + "_" + suffix in self.names for s in range(len(stem))):
+                end = self.tokens[self.i + k - 1][2]
+                self.i += k
+                self.out.append(("_" + suffix, start, end))
+                self.separate = True
+                return True
+        return False
+
     def command(self, name: str, start: int, end: int) -> None:
+        if name in _FUNCTIONS and self.argument_to_spacing(name, start, end):
+            return
         if name in _WORDS:
             self.word(_WORDS[name], start, end)
         elif name in _TIMES:
@@ -384,9 +476,10 @@ def _is_bracketed(text: str) -> bool:
     return depth == 0
 
 
-def translate(src: Source, keep_e: bool = False) -> Source:
+def translate(src: Source, keep_e: bool = False, names: Container[str] = ()) -> Source:
     """The plain-grammar text of a LaTeX answer. `keep_e`: the question declares a symbol `e`, so
-    e^{x} is that symbol to a power rather than the exponential."""
-    translator = _Translator(src, keep_e)
+    e^{x} is that symbol to a power rather than the exponential. `names`: every spelling the
+    question accepts, so that its own plain names (`x_dot`) read whole in a LaTeX line."""
+    translator = _Translator(src, keep_e, names)
     translator.sequence()
     return src.derive(translator.out)

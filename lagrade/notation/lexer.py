@@ -55,9 +55,17 @@ class Source:
         e = self.ends[min(end, n) - 1] if end > start else s
         return s, max(s, e)
 
-    def fail(self, message: str, start: int, end: int, hint: str | None = None) -> NoReturn:
-        """Raise the ParseError for characters start…end of this text."""
-        raise ParseError(message, self.locate(start, end), self.original, hint)
+    def fail(
+        self,
+        message: str,
+        start: int,
+        end: int,
+        hint: str | None = None,
+        readings: tuple[tuple[str, str], ...] = (),
+    ) -> NoReturn:
+        """Raise the ParseError for characters start…end of this text (`readings`: this text
+        under each reading of an ambiguity)."""
+        raise ParseError(message, self.locate(start, end), self.original, hint, readings)
 
     def fail_at_original(self, message: str, start: int, end: int) -> NoReturn:
         raise ParseError(message, (start, end), self.original)

@@ -9,6 +9,7 @@ from typing import NoReturn
 
 import sympy as sp
 
+from lagrade.mechanics import lagrange as mechanics
 from lagrade.notation.build import FUNCTIONS
 from lagrade.notation.lexer import Token
 from lagrade.notation.nodes import Node
@@ -24,11 +25,14 @@ _LETTER_RUN = re.compile(r"([A-Za-z]{2,})(_[A-Za-z0-9]+)?\Z")
 class NameRules(TokenStream):
     """The rules for names, shared by the grammar's atoms, calls and diff(...)."""
 
-    def split_letter_runs(self, tokens: list[Token]) -> list[Token]:
-        """In LaTeX, adjacent letters are a product (`\\frac{GMm}{r}` is G·M·m/r): a name the
-        question does not know that is a run of single letters, each a declared name (the last
-        one may carry the subscript, `mv_0`), becomes those names, and the reading is noted.
-        Plain text never splits a name (`mgl` gets a suggestion instead)."""
+    def split_letter_runs(self, tokens: list[Token], latex: bool) -> list[Token]:
+        """A name the question does not know that is a run of single letters, each a declared
+        name (the last one may carry the subscript, `mv_0`), becomes those names, and the
+        reading is noted (in the preview and in the feedback of a wrong answer). In LaTeX
+        adjacent letters are a product by convention (`\\frac{GMm}{r}` is G·M·m/r); in plain
+        text `GM` for G·M is a slip the student's own message would have to guess at, so it is
+        read the same way, unless a longer declared name lies inside the run (with k, m and km
+        declared, `kmm` stays an error that asks)."""
         table = self.lexicon.table
         splits: dict[int, list[Token]] = {}
         for k, tok in enumerate(tokens):
@@ -45,26 +49,49 @@ class NameRules(TokenStream):
             names = [*letters[:-1], letters[-1] + subscript]
             if not all(name in table for name in names):
                 continue
+            if not latex and self.longer_name_inside(letters):
+                continue
             starts = [tok.start + i for i in range(len(letters))]
             ends = [*starts[1:], tok.end]
             splits[k] = [
                 Token("name", name, start, end, tok.spaced if i == 0 else False)
                 for i, (name, start, end) in enumerate(zip(names, starts, ends, strict=True))
             ]
+            product = "*".join(names)
             self.warn(
-                f"{tok.text} is read as {'*'.join(names)}: in LaTeX adjacent letters multiply."
+                f"{tok.text} is read as {product}: in LaTeX adjacent letters multiply."
+                if latex
+                else f"{tok.text} is read as {product}: separate names with * or a space."
             )
         if not splits:
             return tokens
         return [piece for k, tok in enumerate(tokens) for piece in splits.get(k, [tok])]
+
+    def longer_name_inside(self, letters: str) -> bool:
+        """Whether a declared name of two or more letters is spelled inside `letters`."""
+        table = self.lexicon.table
+        return len(letters) > 64 or any(
+            letters[i:j] in table
+            for i in range(len(letters))
+            for j in range(i + 2, min(len(letters), i + self.lexicon.longest) + 1)
+        )
 
     def lookup(self, tok: Token) -> Entry:
         """The lexicon's entry for a name token; unknown names and stray primes fail."""
         entry = self.lexicon.table.get(tok.text)
         if entry is None:
             self.unknown(tok)
+        if tok.primes and entry.jet is None:
+            self.not_a_coordinate(tok.text, tok)
         if tok.primes and not self.lexicon.allow_primes:
-            base = entry.jet.name if entry.jet is not None else tok.text
+            if self.lexicon.table["t"].value == mechanics.t:
+                # t is the only independent variable: a prime can only be d/dt (issue 38)
+                jets = (entry.jet.q, entry.jet.dot, entry.jet.ddot)
+                typed = jets[min(2, entry.order + tok.marks)].name + "'" * tok.primes
+                read = jets[min(2, entry.order + tok.marks + tok.primes)].name
+                self.warn(f"{typed} is read as {read} (a prime as d/dt).")
+                return entry
+            base = entry.jet.name
             if entry.order + tok.marks + tok.primes == 1:
                 fix = f"write {base}dot for d{base}/dt"
             else:

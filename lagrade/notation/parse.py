@@ -65,10 +65,10 @@ def _parse_source(src: Source, vocabulary: Vocabulary, latex: bool | None, mode:
     src = normalise(src)
     latex = bool(latex or (latex is None and is_latex(src.text)))
     if latex:
-        src = translate(src, keep_e="e" in lexicon.table)
+        src = translate(src, keep_e="e" in lexicon.table, names=lexicon.table)
     parser = Parser(src, lexicon)
-    if latex:  # LaTeX sets a product of single letters as a run of them (\frac{GMm}{r})
-        parser.tokens = parser.split_letter_runs(parser.tokens)
+    # a run of declared single letters (\frac{GMm}{r}, GM) is their product, with a note
+    parser.tokens = parser.split_letter_runs(parser.tokens, latex)
     lhs_node, rhs_node = parser.parse_answer(mode)
     shown = _echo(lhs_node, src.text)
     if rhs_node is not None:
@@ -213,7 +213,7 @@ def _read_name_source(src: Source, vocabulary: Vocabulary, latex: bool | None, e
     lexicon = vocabulary._lexicon
     src = normalise(src)
     if latex or (latex is None and is_latex(src.text)):
-        src = translate(src, keep_e="e" in lexicon.table)
+        src = translate(src, keep_e="e" in lexicon.table, names=lexicon.table)
     rules = Parser(src, lexicon)
     tokens = rules.tokens[:-1]
     of_t = {k + d for k, tok in enumerate(tokens) for d in (1, 2, 3) if _of_t(tokens, k)}

@@ -29,9 +29,16 @@ class TokenStream:
         self.found: set[str] = set()
         self.warnings: list[str] = list(src.notes)
 
-    def fail(self, message: str, start: int, end: int, hint: str | None = None) -> NoReturn:
+    def fail(
+        self,
+        message: str,
+        start: int,
+        end: int,
+        hint: str | None = None,
+        readings: tuple[tuple[str, str], ...] = (),
+    ) -> NoReturn:
         """A student's mistake at characters start…end of the text being read."""
-        self.src.fail(message, start, end, hint)
+        self.src.fail(message, start, end, hint, readings)
 
     def peek(self, ahead: int = 0) -> Token:
         try:  # the most called method of the parser: no bounds test on the usual path

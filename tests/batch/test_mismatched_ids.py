@@ -5,6 +5,8 @@ student's JSON. `grade --as-of` without a log of saves is one clear error."""
 
 from __future__ import annotations
 
+import csv
+import io
 import json
 import re
 
@@ -35,6 +37,12 @@ def test_grade_lists_sheets_naming_another_student(workspace, capsys):
     result = json.loads((out / "students" / "s02.json").read_text())
     assert result["sheet_student_id"] == "s05" and result["status"] == "graded"
     assert "sheet_student_id" not in json.loads((out / "students" / "s03.json").read_text())
+    # the gradebook's reason column says it too (issue 38: it was empty)
+    rows = {
+        row["id"]: row for row in csv.DictReader(io.StringIO((out / "gradebook.csv").read_text()))
+    }
+    assert rows["s02"]["reason"] == "the sheet says student_id 's05'; graded as the file's student"
+    assert rows["s03"]["reason"] == ""
 
 
 def test_as_of_without_a_log_is_one_clear_error(workspace, capsys):

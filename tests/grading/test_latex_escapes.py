@@ -7,6 +7,8 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
+import pytest
+
 from lagrade.grading.submission import read_sheet
 
 KEYS = {1: ["eom", "lagrangian", "T"]}
@@ -70,6 +72,41 @@ def test_real_line_breaks_and_single_quotes_are_left_alone(tmp_path: Path) -> No
     assert not sheet.warnings
 
 
-def test_an_unknown_escape_names_single_quotes(tmp_path: Path) -> None:
-    sheet = _read(tmp_path, '[problem1]\nT = "\\dot{x}^2"\n')
+# Issue 38: a backslash sequence the format cannot read at all. TOML 1.0 (toml.io, "String"):
+# "All other escape sequences not listed above are reserved; if they are used, TOML should
+# produce an error" -- so `"\dot{q}"`, LaTeX's velocity (Taylor, Classical Mechanics, ch. 7;
+# Goldstein ch. 1: \dot q), voided the whole sheet. JSON (RFC 8259, section 7) likewise.
+UNKNOWN = [
+    ('T = "\\dot{x}^2"', "\\dot{x}^2", "\\dot"),
+    ('eom = "\\ddot{q} + \\omega^2 q = 0"', "\\ddot{q} + \\omega^2 q = 0", "\\ddot, \\omega"),
+    ('T = "\\sin\\alpha"', "\\sin\\alpha", "\\sin, \\alpha"),
+    ('T = "\\left(\\dot q\\right)^2"', "\\left(\\dot q\\right)^2", "\\left, \\dot, \\right"),
+    ('T = "\\cos\\theta \\, \\dot x"', "\\cos\\theta \\, \\dot x", "\\cos, \\,, \\dot, \\theta"),
+    ('eom = ["\\dot{q} = 0", "\\ddot q = 0"]', ["\\dot{q} = 0", "\\ddot q = 0"], "\\dot, \\ddot"),
+]
+
+
+@pytest.mark.parametrize(("line", "meant", "named"), UNKNOWN)
+def test_an_escape_the_format_cannot_read_is_read_as_meant_with_a_note(
+    tmp_path: Path, line: str, meant, named: str
+) -> None:
+    sheet = _read(tmp_path, f"[problem1]\n{line}\nlagrangian = 'm g'\n")
+    assert sheet.readable, sheet.reason
+    key = line.split(" = ")[0]
+    assert sheet.answers[1][key] == meant
+    assert sheet.answers[1]["lagrangian"] == "m g"
+    (warning,) = sheet.warnings  # one sentence per answer, naming what was read and the fix
+    assert f"[problem1] {key}" in warning and named in warning and "single quotes" in warning
+
+
+def test_json_escapes_the_format_cannot_read(tmp_path: Path) -> None:
+    sheet = _read(tmp_path, '{"problem1": {"T": "\\dot{x}^2", "eom": "\\\\ddot{x} = 0"}}', ".json")
+    assert sheet.readable, sheet.reason
+    assert sheet.answers[1] == {"T": "\\dot{x}^2", "eom": "\\ddot{x} = 0"}
+    (warning,) = sheet.warnings
+    assert "[problem1] T" in warning and "\\dot" in warning
+
+
+def test_a_sheet_broken_otherwise_still_names_single_quotes(tmp_path: Path) -> None:
+    sheet = _read(tmp_path, '[problem1]\nT = "\\dot{x}^2"\neom = [\n')
     assert not sheet.readable and "single quotes" in sheet.reason

@@ -168,3 +168,28 @@ def test_summary_keeps_a_caret_block_as_lines():
     closing = next(i for i, t in enumerate(tokens) if t.type == "list_item_close" and i > item)
     fence = next(i for i, t in enumerate(tokens) if t.type in ("fence", "code_block"))
     assert item < fence < closing  # inside the list item it illustrates
+
+
+def test_common_mistakes_count_real_mistakes_with_their_own_sentence():
+    """Issue 38: a valid choice of own coordinates was listed among the class's common mistakes,
+    and a conserved-quantity answer with one unreadable line gave the parse message as the
+    example of a missing conserved quantity."""
+    parse = "Line 2 could not be read: Unknown symbol 'x'.\n  x\n  ^"
+    count = "The system has 2 independent conserved quantities; your list gives 1."
+    own = "Your coordinates are not the statement's: u = r cos(θ). That is a valid choice."
+    results = [
+        _result(s, 20.0, [_part("transformation", "correct", ("own_coordinates",), (own,)),
+                          _part("conserved", "incorrect", ("missing_conserved",), (parse, count))])
+        for s in "abc"
+    ]  # fmt: skip
+    manifest = {
+        **MANIFEST,
+        "problems": [{**MANIFEST["problems"][0],
+                      "parts": [{"key": "transformation"}, {"key": "conserved"}]}],
+    }  # fmt: skip
+    summary = report.class_summary(manifest, results)
+    (mistake,) = summary["problems"][0]["common_mistakes"]
+    assert mistake == {"part": "conserved", "mistake": "missing_conserved", "feedback": count,
+                       "count": 3}  # fmt: skip
+    text = report.summary_markdown(manifest, summary)
+    assert "own_coordinates" not in text and "could not be read" not in text

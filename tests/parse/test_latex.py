@@ -97,16 +97,17 @@ def test_latex_greek_in_unicode_and_commands_agree() -> None:
 
 def test_adjacent_declared_letters_multiply_in_latex_and_the_echo_shows_it() -> None:
     """LaTeX sets G·M·m as `GMm`: a run of single letters, every one a declared name, is their
-    product there, and the echo and a warning show the split; plain text keeps its rule (a
-    suggestion, never a split)."""
+    product there, and the echo and a warning show the split; plain text reads the run the same
+    way with its own note (issue 38, tests/parse/test_letter_runs.py)."""
     vocab = Vocabulary.from_names(["r"], ["G", "M", "m"])
     read = parse_answer(r"\frac{GMm}{r}", vocab)
     G, M, m = (sp.Symbol(n, positive=True) for n in "GMm")
     assert read.lhs == G * M * m / jet("r").q
     assert read.echo == "(G*M*m)/r"  # a fraction's numerator is bracketed whole
     assert read.warnings == ("GMm is read as G*M*m: in LaTeX adjacent letters multiply.",)
-    with pytest.raises(ParseError, match=r"Did you mean G\*M\*m\?"):
-        parse_answer("GMm/r", vocab)
+    assert parse_answer("GMm/r", vocab).warnings == (
+        "GMm is read as G*M*m: separate names with * or a space.",
+    )
 
 
 def test_a_run_with_an_undeclared_letter_is_not_split() -> None:

@@ -41,10 +41,10 @@ NOT_COORDINATE = "is not a coordinate of this problem (coordinates: theta, x_M, 
 # (text, message, span in the text)
 ERRORS = [
     # names
-    (
-        "mgl",
-        "Unknown symbol 'mgl'. Did you mean m*g*l? Separate variables with * or a space.",
-        (0, 3),
+    (  # a run of single letters is read as their product (issue 38); with a longer name
+        "mthetal",  # inside, the message still asks
+        "Unknown symbol 'mthetal'. Did you mean m*theta*l? Separate variables with * or a space.",
+        (0, 7),
     ),
     (
         "2 mthetadot",
@@ -141,8 +141,13 @@ ERRORS = [
         (0, 21),
     ),
     ("diff(theta)", "diff(...) needs the variable t: write diff(theta, t).", (0, 11)),
-    ("theta'", "Primes are ambiguous in mechanics; write thetadot for dtheta/dt.", (0, 6)),
-    ("x''", "Primes are ambiguous in mechanics; write xddot for the second derivative.", (0, 3)),
+    # primes are time derivatives with a note (issue 38: tests/parse/test_round_trip_notation.py)
+    (
+        "x'''",
+        "Only velocities and accelerations exist here: that is a derivative of order 3 of x.",
+        (0, 4),
+    ),
+    ("m'", "'m' is not a coordinate of this problem (coordinates: theta, x_M, q, x).", (0, 2)),
     # bracket-less functions
     (
         "sin omega t",
@@ -289,9 +294,9 @@ ERRORS = [
     ),
     (r"\frac{g}{2 l} + \frac{g}{2}l x^{", "Missing '}': this '{' is never closed.", (31, 32)),
     (
-        r"\dot{\theta}'",
-        "Primes are ambiguous in mechanics; write thetaddot for the second derivative.",
-        (0, 13),
+        r"\ddot{\theta}'",
+        "Only velocities and accelerations exist here: that is a derivative of order 3 of theta.",
+        (0, 14),
     ),
 ]
 
@@ -359,12 +364,12 @@ def test_caret_at_the_end_when_the_answer_ended() -> None:
 
 
 def test_a_long_answer_is_cut_around_the_caret() -> None:
-    text = "m + " * 300 + "mgl"
+    text = "m + " * 300 + "mthetal"
     with pytest.raises(ParseError) as caught:
         parse_answer(text, VOCAB)
     line, caret = str(caught.value).splitlines()[1:3]
     assert line.startswith("  …") and len(line) < 90
-    assert line[caret.index("^") : caret.index("^") + 3] == "mgl"
+    assert line[caret.index("^") : caret.index("^") + 7] == "mthetal"
 
 
 def test_expression_refuses_an_equals_sign() -> None:

@@ -27,6 +27,8 @@ def test_preview_of_an_error_shows_the_caret() -> None:
 
 def test_preview_with_primes_and_forced_latex() -> None:
     assert preview_command("x'", ["x"], [], None, allow_primes=True)[0] == 0
-    assert preview_command("x'", ["x"], [], None)[0] == 1
+    status, text = preview_command("x'", ["x"], [], None)  # read, with a note (issue 38)
+    assert status == 0 and "Warning: x' is read as x_dot (a prime as d/dt)." in text
+    assert "Warning" not in preview_command("x'", ["x"], [], None, allow_primes=True)[1]
     status, text = preview_command(r"\dot{x}_M", ["x_M"], [], True)
     assert status == 0 and "\\dot{x}_{M}" in text

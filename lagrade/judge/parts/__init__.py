@@ -31,6 +31,7 @@ from dataclasses import replace
 from typing import Any
 
 from lagrade.errors import ParseError, RequestError, UnsupportedExpression
+from lagrade.judge.parts.ambiguity import ambiguous_lines, best_reading
 from lagrade.judge.parts.conserved import check_conserved
 from lagrade.judge.parts.coordinates import check_coordinates
 from lagrade.judge.parts.cyclic import check_cyclic
@@ -86,7 +87,8 @@ def run_checker(problem: Problem, part: str, answer: Any, given: Mapping | None 
             'part "expression" needs a reference expression (an "expression" '
             'problem, or a scene with "quantity")'
         )
-    try:
+
+    def judged(answer: Any) -> tuple[Verdict, list[str]]:
         with reading_notes() as notes:
             if part in FOLLOWING and given and given.get("transformation") is not None:
                 verdict = judged_in_chosen_coordinates(problem, part, answer, given, checker)
@@ -94,6 +96,20 @@ def run_checker(problem: Problem, part: str, answer: Any, given: Mapping | None 
                 verdict = checker(problem, answer, given)
             if part == "transformation":
                 verdict = transformation_remark(problem, answer, verdict)
+        return verdict, notes
+
+    try:
+        with ambiguous_lines() as ambiguous:
+            try:
+                verdict, notes = judged(answer)
+            except ParseError as error:  # no line reads: an ambiguity may be all it is
+                if not ambiguous:
+                    raise
+                verdict, notes = invalid(part, str(error), error.source), []
+        if ambiguous and verdict.status != "correct":  # lines only an ambiguity left unread
+            with ambiguous_lines():
+                better = best_reading(judged, answer, part, ambiguous, verdict)
+            verdict, notes = better or (verdict, notes)
         hear(notes)
         return with_notes(verdict, notes)
     except ParseError as error:

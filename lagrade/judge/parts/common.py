@@ -287,6 +287,13 @@ def as_sentence(text: str) -> str:
     return text if text.endswith(".") else text + "."
 
 
+def named_finding(message: str, where: str) -> str:
+    """One sentence for a named mistake and where it shows ("Your V has the wrong sign (height
+    measured downwards?) (for example at q = −1.75)."): the generic "Your V is not the potential
+    energy …" beside it would say the same thing twice."""
+    return as_sentence(message).removesuffix(".") + where + "."
+
+
 def incorrect(
     part: str,
     got: Read,
@@ -300,8 +307,8 @@ def incorrect(
 ) -> Verdict:
     """A wrong single-expression answer: the named mistake (when the catalogue knows it),
     then what is wrong, with a point where it shows."""
-    feedback = [as_sentence(mutant.message)] if mutant is not None else []
-    feedback.append(sentence + where_text(witness, problem, values) + ".")
+    where = where_text(witness, problem, values)
+    feedback = [named_finding(mutant.message, where) if mutant else sentence + where + "."]
     if problem is not None:
         expected = {"T": "kinetic", "V": "energy"}.get(part, "")
         dimensions = hint_for(problem, got, expected) if tells(mutant) else ""

@@ -23,10 +23,10 @@ from lagrade.judge.equivalence import (
 )
 from lagrade.judge.evaluate import UnsupportedExpression
 from lagrade.judge.parts.common import (
-    as_sentence,
     handout_numbers,
     incorrect,
     method_name,
+    named_finding,
     ratio_text,
     reference_el,
     values_text,
@@ -105,19 +105,15 @@ def judge_lagrangian(
         )
     if not diagnose:
         return ("incorrect", 0.0, [], out, None, ())
-    feedback = []
-    mistakes: tuple[str, ...] = ()
     mutant = problem.catalogue.match_lagrangian(answer, points, match.answer_el)
-    if mutant is not None:
-        feedback.append(as_sentence(mutant.message))
-        mistakes = (mutant.kind,)
+    mistakes: tuple[str, ...] = (mutant.kind,) if mutant is not None else ()
     witness = witness_point(points, out, answer)
     undefined = out.reason == "undefined" and _undefined_at(match.answer_el, out.where)
-    feedback.append(
-        "Your L does not give the equations of motion of this system"
-        + where_text(witness, problem, ", where your L is undefined" if undefined else "")
-        + "."
-    )
+    where = where_text(witness, problem, ", where your L is undefined" if undefined else "")
+    if mutant is not None:  # one sentence per finding
+        feedback = [named_finding(mutant.message, where)]
+    else:
+        feedback = [f"Your L does not give the equations of motion of this system{where}."]
     return ("incorrect", 0.0, feedback, out, witness, mistakes)
 
 

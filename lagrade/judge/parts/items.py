@@ -81,8 +81,8 @@ def list_items(answer: Any, part: str) -> list[Any]:
         )
     pieces: list[Any] = []
     for item in items:
-        if isinstance(item, str):
-            latex = is_latex(item)
+        if isinstance(item, str):  # a Piece keeps what its answer was (a rewritten line's)
+            latex = item.latex if isinstance(item, Piece) else is_latex(item)
             pieces += [Piece(text, latex) for text in split_item(item)]
         else:
             pieces.append(item)

@@ -40,7 +40,13 @@ def read_momenta(problem: Problem, answer: Any) -> Lines:
     labels = [f"p_{j.name}" for j in jets]
 
     def read_line(item: Any) -> Read:
-        got = read(problem, item, labels)
+        # a label of the student's own (`L_z = …`, `ℓ = …`) names the momentum the line gives:
+        # read like p_θ, the line is then placed by its order
+        own = line_label(problem, item) if isinstance(item, str) else None
+        own = own if own not in problem.by_name and own not in labels else None
+        got = read(problem, item, [*labels, *([own] if own else [])])
+        if own is not None and got.has_rhs and got.label == own:
+            return got.only_rhs()
         if got.has_rhs and got.label not in labels:
             text = item if isinstance(item, str) else str(item)
             raise ParseError(
@@ -64,7 +70,7 @@ def check_momenta(problem: Problem, answer: Any, given: Mapping | None) -> Verdi
     unlabelled: list[Read | Unreadable] = []
     for got in lines.entries:
         if isinstance(got, Unreadable):
-            name = line_label(got.text)
+            name = line_label(problem, got.text)
             if name in labels and labels.index(name) not in by_coordinate:
                 by_coordinate[labels.index(name)] = got
             else:

@@ -16,6 +16,7 @@ import sympy as sp
 from lagrade.errors import ParseError, RequestError, UnsupportedExpression
 from lagrade.judge.compiled import Compiled
 from lagrade.judge.evaluate import compile_tree
+from lagrade.judge.parts.ambiguity import note_ambiguous
 from lagrade.judge.parts.items import single_text
 from lagrade.judge.problem import Problem, parser
 from lagrade.judge.verdict import unreadable_line
@@ -255,6 +256,7 @@ def read_lines(items: Sequence[Any], reader: Callable[[Any], Read | list[Read]])
             got = reader(item)
         except ParseError as error:
             entries.append(Unreadable(item if isinstance(item, str) else str(item), error))
+            note_ambiguous(item, error)  # judged under its readings by `run_checker`
             continue
         entries.extend(got if isinstance(got, list) else [got])
     lines = Lines(tuple(entries))
@@ -266,11 +268,22 @@ def read_lines(items: Sequence[Any], reader: Callable[[Any], Read | list[Read]])
     return lines
 
 
-def line_label(text: str) -> str | None:
-    """The `name` of a line written `name = …`, read from its raw text (for a line that does
-    not parse, to tell which quantity it was meant to give)."""
+def line_label(problem: Problem, text: str) -> str | None:
+    """The `name` of a line written `name = …`, in the spelling the parser reads it (`ℓ` is l,
+    `p_θ` p_theta, `ℒ` L): a label is a name whatever its letters. Read from the raw text, so
+    that it serves a line that does not parse too (to tell which quantity it was meant to
+    give); None when the text before `=` is no single name."""
     m = _LABEL.match(text)
-    return m.group(1) if m else None
+    if m is None:
+        return None
+    name = m.group(1)
+    if _ASCII_NAME.match(name):
+        return name
+    try:
+        (got,) = parser().read_names(name, problem.vocabulary())
+    except (ParseError, ValueError):
+        return None
+    return got.name if got.order == 0 and _ASCII_NAME.match(got.name) else None
 
 
 def read(problem: Problem, item: Any, labels: Sequence[str] = (), mode: str = "answer") -> Read:
@@ -370,7 +383,10 @@ def read_parsed(problem: Problem, parsed) -> Read:
     return Read(problem.canonical(parsed.lhs), rhs, parsed.plain(), parsed=parsed)
 
 
-_LABEL = re.compile(r"^\s*([A-Za-z][A-Za-z0-9_]*)\s*=")
+#: `name =` at the start of a line, the name in any script (ℓ, p_θ, L_z, θ₁); `line_label` reads
+#: it in the parser's spelling.
+_LABEL = re.compile(r"^\s*([^\W\d][\w\u0300-\u036f]*)\s*=(?!=)")
+_ASCII_NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*\Z")
 #: A label with its arguments, as textbooks write it: `L(theta, theta_dot) = …`.
 _LABEL_WITH_ARGUMENTS = re.compile(r"^\s*([A-Za-z][A-Za-z0-9_]*)\s*\([^()=]*\)\s*=")
 #: Names a student writes for an arbitrary additive constant (`L = T - V + const`).
@@ -387,9 +403,9 @@ def read_labelled(problem: Problem, item: Any, extra_labels: Sequence[str] = ())
             # `L(theta, theta_dot) = …` is `L = …`, its arguments blanked so carets stay put
             name = called.group(1)
             item = name + " " * (called.end() - len(name) - 1) + "=" + item[called.end() :]
-        m = _LABEL.match(item)
-        if m and m.group(1) not in problem.by_name and m.group(1) not in labels:
-            labels.append(m.group(1))
+        name = line_label(problem, item)
+        if name is not None and name not in problem.by_name and name not in labels:
+            labels.append(name)
     got = read(problem, item, labels)
     if not got.has_rhs:
         return got
