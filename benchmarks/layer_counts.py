@@ -3,9 +3,9 @@
   imports past a layer's exports   cross-layer imports that name another layer's submodule, or a
                                    name that layer's `__init__` does not export (`__all__`)
   tolerance literals               numeric literals below 1e-3 (and decimals below 0.01) in the
-                                   judge outside its named constants, floors against a division
-                                   by zero (below 1e-100) left out (an assignment to an
-                                   UPPER_CASE name, and `lagrade/judge/tolerances.py`)
+                                   judge outside its named constants (`lagrade/judge/tolerances.py`
+                                   and UPPER_CASE names), docstrings, floors against a division by
+                                   zero (below 1e-100) and lines marked `# not a tolerance`
   equivalence implementations      places that compute one of the equivalence tests, found by the
                                    shape of their code (a constant per parameter group is
                                    `searchsorted(group, group)`; a scale is a least-squares ratio;
@@ -74,20 +74,33 @@ _CONSTANT = re.compile(r"^\s*[A-Z][A-Z0-9_]*\s*(?::[^=]+)?=")
 
 
 def tolerance_literals() -> list[str]:
-    """Small numeric literals in the judge outside named constants."""
+    """Small numeric literals in the judge outside named constants, strings (docstrings) and
+    lines marked `# not a tolerance` (a unit's factor, a range of display)."""
     found = []
     for path in sorted((ROOT / "judge").rglob("*.py")):
         if path.name == "tolerances.py":
             continue
-        for number, line in enumerate(path.read_text(encoding="utf-8").splitlines(), 1):
+        text = path.read_text(encoding="utf-8")
+        strings = _string_lines(text)
+        for number, line in enumerate(text.splitlines(), 1):
             code = line.split("#", 1)[0]
-            if _CONSTANT.match(code) or '"""' in code:
+            if _CONSTANT.match(code) or number in strings or "# not a tolerance" in line:
                 continue
             for match in _SMALL.finditer(code):
                 if _in_string(code, match.start()) or float(match.group(1)) < 1e-100:
                     continue  # a string, or a floor against division by zero (1e-300)
                 found.append(f"{path.relative_to(ROOT.parent)}:{number}: {match.group(1)}")
     return found
+
+
+def _string_lines(text: str) -> set[int]:
+    """The lines of every multi-line string (docstrings) of a module."""
+    lines: set[int] = set()
+    for node in ast.walk(ast.parse(text)):
+        if isinstance(node, ast.Constant) and isinstance(node.value, str):
+            if node.end_lineno and node.end_lineno > node.lineno:
+                lines.update(range(node.lineno, node.end_lineno + 1))
+    return lines
 
 
 def _in_string(code: str, at: int) -> bool:

@@ -18,7 +18,7 @@ from typing import Any
 import lagrade.grading.atomic as atomic
 from lagrade.assign.templating import environment, md_block, md_code, md_escape
 from lagrade.judge.parts.own_coordinates import OWN_COORDINATES
-from lagrade.judge.parts.reading import is_unreadable_line
+from lagrade.judge.verdict import is_unreadable_line
 from lagrade.untrusted import visible
 
 STUDENTS = "students"

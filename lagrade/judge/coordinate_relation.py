@@ -27,10 +27,9 @@ from lagrade.judge.compiled import Compiled, to_length
 from lagrade.judge.derivatives import gradient
 from lagrade.judge.problem import Problem
 from lagrade.judge.situation import angles, symbol_text
+from lagrade.judge.tolerances import COORDINATE_MAP, ROUNDING, SAME_VALUE
 from lagrade.notation.printer import plain
 
-#: Relative agreement of positions (and of A and c between points) that counts as equal.
-_TOLERANCE = 1e-8
 #: Gauss–Newton steps per start; each converges in a few where it converges at all.
 _STEPS = 40
 
@@ -71,7 +70,7 @@ def relate(problem: Problem, positions: Mapping[str, sp.Expr]) -> Relation:
     ok = np.all(np.isfinite(X), axis=1) & np.all(np.isfinite(Y), axis=1)
     if not ok.any():
         return _different(problem)
-    if np.all(np.abs(X - Y)[ok] <= _TOLERANCE * (1 + np.abs(X) + np.abs(Y))[ok]):
+    if np.all(np.abs(X - Y)[ok] <= COORDINATE_MAP * (1 + np.abs(X) + np.abs(Y))[ok]):
         return SAME
     env = {s: v[ok] for s, v in points.env.items()}
     group = points.group[ok]
@@ -98,7 +97,7 @@ def _stack(compiled: Sequence[Compiled], env: Mapping, n: int) -> np.ndarray:
     columns = []
     for c in compiled:
         v = np.asarray(to_length(c.values(env)[0], n), dtype=complex)
-        real = np.where(np.abs(v.imag) <= 1e-12 * (1 + np.abs(v.real)), v.real, np.nan)
+        real = np.where(np.abs(v.imag) <= ROUNDING * (1 + np.abs(v.real)), v.real, np.nan)
         columns.append(real)
     return np.stack(columns, axis=1)
 
@@ -126,7 +125,7 @@ def _solve(theirs, coords, env, target: np.ndarray, start: np.ndarray):
     for _ in range(_STEPS):
         here = _at(env, coords, q)
         F = _stack(theirs, here, n) - target
-        done = np.all(np.abs(F) <= _TOLERANCE * 1e-2 * scale, axis=1)
+        done = np.all(np.abs(F) <= COORDINATE_MAP * scale / 100, axis=1)
         if done.all() or not np.all(np.isfinite(F)):
             break
         J = _jacobian(theirs, coords, here, n)
@@ -143,13 +142,13 @@ def _periodic(theirs, coords, env, q: np.ndarray, k: int) -> bool:
     turned[:, k] += 2 * math.pi
     a = _stack(theirs, _at(env, coords, q), n)
     b = _stack(theirs, _at(env, coords, turned), n)
-    return bool(np.all(np.abs(a - b) <= _TOLERANCE * (1 + np.abs(a) + np.abs(b))))
+    return bool(np.all(np.abs(a - b) <= COORDINATE_MAP * (1 + np.abs(a) + np.abs(b))))
 
 
 def _wrapped(x: np.ndarray) -> np.ndarray:
     """x modulo 2π in (−π, π] (half a turn is π, never −π)."""
     w = (x + math.pi) % (2 * math.pi) - math.pi
-    return np.where(np.abs(w + math.pi) <= 1e-9, math.pi, w)
+    return np.where(np.abs(w + math.pi) <= SAME_VALUE, math.pi, w)
 
 
 def _constant_per_group(values: np.ndarray, group: np.ndarray, wrap: bool = False) -> bool:
@@ -158,7 +157,7 @@ def _constant_per_group(values: np.ndarray, group: np.ndarray, wrap: bool = Fals
         d = v - v[0]
         if wrap:
             d = _wrapped(d)
-        if not np.all(np.abs(d) <= _TOLERANCE * 10 * (1 + np.abs(v[0]))):
+        if not np.all(np.abs(d) <= COORDINATE_MAP * 10 * (1 + np.abs(v[0]))):
             return False
     return True
 
@@ -203,8 +202,8 @@ def _affine(theirs, mine, coords, env, group, target):
 def _changes(A: np.ndarray, offsets: np.ndarray) -> int:
     """How much a relation changes: coordinates not carried over as they are, and offsets."""
     n = A.shape[1]
-    rows = int(np.sum(np.any(np.abs(A[0] - np.eye(n)) > 1e-9, axis=1)))
-    return rows + int(np.sum(np.any(np.abs(offsets) > 1e-9, axis=0)))
+    rows = int(np.sum(np.any(np.abs(A[0] - np.eye(n)) > SAME_VALUE, axis=1)))
+    return rows + int(np.sum(np.any(np.abs(offsets) > SAME_VALUE, axis=0)))
 
 
 # --- the relation in closed form -----------------------------------------------------------------
@@ -214,10 +213,10 @@ def _recognised(x: float) -> sp.Expr | None:
     """A number as a multiple of π/12 or a simple fraction, when it is one."""
     for denominator in (1, 2, 3, 4, 6, 12):
         k = round(x / math.pi * denominator)
-        if k and abs(x - k * math.pi / denominator) <= 1e-9 * (1 + abs(x)):
+        if k and abs(x - k * math.pi / denominator) <= SAME_VALUE * (1 + abs(x)):
             return sp.Rational(k, denominator) * sp.pi
     f = Fraction(x).limit_denominator(1000)
-    if abs(float(f) - x) <= 1e-9 * (1 + abs(x)):
+    if abs(float(f) - x) <= SAME_VALUE * (1 + abs(x)):
         return sp.Rational(f.numerator, f.denominator)
     return None
 
@@ -230,7 +229,9 @@ def _closed_form(problem, positions, A, offsets, env, group, target):
     firsts = np.searchsorted(group, np.unique(group))
     if not _constant_per_group(A.reshape(len(A), -1), np.zeros(len(A), dtype=int)):
         return None  # A depends on the parameters
-    matrix = [[_recognised(float(a)) if abs(a) > 1e-12 else sp.S.Zero for a in row] for row in A[0]]
+    matrix = [
+        [_recognised(float(a)) if abs(a) > ROUNDING else sp.S.Zero for a in row] for row in A[0]
+    ]
     if any(a is None for row in matrix for a in row):
         return None
     linear = [sum((a * c for a, c in zip(row, coords, strict=True)), sp.S.Zero) for row in matrix]
@@ -256,7 +257,7 @@ def _closed_form(problem, positions, A, offsets, env, group, target):
         Y = _stack(composed, env, len(target))
     except UnsupportedExpression:
         return None
-    if not np.all(np.abs(Y - target) <= _TOLERANCE * (1 + np.abs(target))):
+    if not np.all(np.abs(Y - target) <= COORDINATE_MAP * (1 + np.abs(target))):
         return None
     return closed
 
@@ -264,14 +265,14 @@ def _closed_form(problem, positions, A, offsets, env, group, target):
 def _offset(values: np.ndarray, env, firsts, problem: Problem) -> sp.Expr | None:
     """An offset's closed form from its value in each parameter draw: a number, or a π/12
     multiple plus or minus one parameter (an angle measured from the incline: φ + α)."""
-    if np.all(np.abs(values - values[0]) <= 1e-9 * (1 + abs(values[0]))):
+    if np.all(np.abs(values - values[0]) <= SAME_VALUE * (1 + abs(values[0]))):
         return _recognised(float(values[0]))
     for symbol in problem.domains:
         p = np.asarray(env[symbol], dtype=float)[firsts]
         for b in (1, -1, 2, -2, sp.Rational(1, 2), sp.Rational(-1, 2)):
             rest = values - float(b) * p
-            if np.all(np.abs(rest - rest[0]) <= 1e-9 * (1 + np.abs(values))):
-                base = _recognised(float(rest[0])) if abs(rest[0]) > 1e-12 else sp.S.Zero
+            if np.all(np.abs(rest - rest[0]) <= SAME_VALUE * (1 + np.abs(values))):
+                base = _recognised(float(rest[0])) if abs(rest[0]) > ROUNDING else sp.S.Zero
                 if base is not None:
                     return base + b * symbol
     return None
@@ -309,7 +310,7 @@ def _solved_offset(
         except UnsupportedExpression:
             continue
         got = np.asarray(to_length(got, len(firsts)), dtype=complex)
-        if np.all(np.abs(got - values) <= 1e-8 * (1 + np.abs(values))):
+        if np.all(np.abs(got - values) <= COORDINATE_MAP * (1 + np.abs(values))):
             return solution
     return None
 
@@ -333,9 +334,9 @@ def _describe(
     for k, j in enumerate(jets):
         row = A[0, k]
         c = offsets[:, k]
-        zero = bool(np.all(np.abs(_wrapped(c) if periodic[k] else c) <= 1e-9))
-        unit = [i for i in range(len(jets)) if abs(row[i]) > 1e-9]
-        if unit == [k] and abs(row[k] - 1) <= 1e-9 and zero:
+        zero = bool(np.all(np.abs(_wrapped(c) if periodic[k] else c) <= SAME_VALUE))
+        unit = [i for i in range(len(jets)) if abs(row[i]) > SAME_VALUE]
+        if unit == [k] and abs(row[k] - 1) <= SAME_VALUE and zero:
             continue  # this coordinate is the statement's
         words = _words(j.name, jets, row, unit, k, c, zero, j.name in angular)
         if closed is not None:
@@ -365,16 +366,16 @@ def shown(expr: sp.Expr, coordinates: frozenset[str] = frozenset()) -> str:
 def _turn(c: np.ndarray) -> str:
     """How far an angle's zero is turned: "quarter", "half" or "other"."""
     w = np.abs(_wrapped(c))
-    if np.all(np.abs(w - math.pi / 2) <= 1e-9):
+    if np.all(np.abs(w - math.pi / 2) <= SAME_VALUE):
         return "quarter"
-    if np.all(np.abs(w - math.pi) <= 1e-9):
+    if np.all(np.abs(w - math.pi) <= SAME_VALUE):
         return "half"
     return "other"
 
 
 def _words(name, jets, row, unit, k, c, zero: bool, angle: bool) -> str:
     mine = f"your {symbol_text(name)}"
-    if len(unit) != 1 or abs(abs(row[unit[0]]) - 1) > 1e-9:
+    if len(unit) != 1 or abs(abs(row[unit[0]]) - 1) > SAME_VALUE:
         return f"your {symbol_text(name)} is another quantity"
     other = unit[0]
     flipped = row[other] < 0

@@ -11,13 +11,7 @@ import mpmath
 import numpy as np
 
 from lagrade.judge.evaluate import FLOAT, MP, MP_DIGITS
-
-#: Below this ratio of residual to term size the answers agree in float64.
-EQUAL_BELOW = 1e-10
-#: Above it they differ; in between, 50-digit arithmetic decides.
-DIFFERENT_ABOVE = 1e-6
-#: The 50-digit decision: equal below this ratio.
-MP_EQUAL_BELOW = 1e-30
+from lagrade.judge.tolerances import DIFFERENT_ABOVE, EQUAL_BELOW, MP_EQUAL_BELOW
 
 
 @dataclass(frozen=True)

@@ -22,6 +22,7 @@ import sympy as sp
 from lagrade.judge.compiled import Compiled
 from lagrade.judge.evaluate import UnsupportedExpression
 from lagrade.judge.rows import equation_rows, in_span
+from lagrade.judge.tolerances import SAME_VALUE
 from lagrade.mechanics.lagrange import LagrangianSystem, t
 from lagrade.mechanics.scene import RigidBody, SceneVariant
 from lagrade.notation.printer import plain
@@ -386,7 +387,9 @@ def _typed_number(term: sp.Expr, handout: list[float]) -> bool:
         return False
     c = float(coefficient)
     factors = [1.0, *(float(f) for f in _FORMULA_NUMBERS)]  # ½k typed as 2.5 for k = 5
-    return any(abs(c - f * w) <= 1e-9 * c for v in handout for w in (v, v * v) for f in factors)
+    return any(
+        abs(c - f * w) <= SAME_VALUE * c for v in handout for w in (v, v * v) for f in factors
+    )
 
 
 def _right_equation(problem, expr: sp.Expr) -> bool:
@@ -399,7 +402,7 @@ def _right_equation(problem, expr: sp.Expr) -> bool:
             r, size = in_span(student, problem.reference_rows(points), 0)
     except (UnsupportedExpression, ValueError, ZeroDivisionError):
         return False
-    return bool(np.all(np.isfinite(r)) and np.all(np.abs(r) <= 1e-9 * size))
+    return bool(np.all(np.isfinite(r)) and np.all(np.abs(r) <= SAME_VALUE * size))
 
 
 def _total_derivative(expr: sp.Expr, jets) -> bool:

@@ -28,6 +28,7 @@ from lagrade.judge.decision import EQUAL_BELOW, Outcome, decide
 from lagrade.judge.derivatives import euler_lagrange_values
 from lagrade.judge.evaluate import FLOAT
 from lagrade.judge.sampling import Points, memo_inputs
+from lagrade.judge.tolerances import ROUNDING, SAME_FACTOR, SAME_VALUE
 from lagrade.mechanics.lagrange import Jet
 
 
@@ -94,7 +95,7 @@ def common_factor(factors: Sequence[float]) -> float | None:
     if not factors:
         return None
     c0 = factors[0]
-    return c0 if all(abs(c - c0) <= 1e-8 * max(1.0, abs(c0)) for c in factors) else None
+    return c0 if all(abs(c - c0) <= SAME_FACTOR * max(1.0, abs(c0)) for c in factors) else None
 
 
 @dataclass(frozen=True)
@@ -155,12 +156,12 @@ def affine_match(
         size = sa + c[group] * sb + np.abs(k)
         ratio = np.abs(residual) / size
         # both must vary with the motion well above rounding, or c means nothing (a constant L)
-        varies = (spread > 1e-12 * np.bincount(group, sb * sb)) & (
-            np.bincount(group, da * da) > 1e-12 * np.bincount(group, sa * sa)
+        varies = (spread > ROUNDING * np.bincount(group, sb * sb)) & (
+            np.bincount(group, da * da) > ROUNDING * np.bincount(group, sa * sa)
         )
     if not (np.all(ratio < EQUAL_BELOW) and np.all(varies)):
         return None
-    shifted = bool(np.any(np.abs(k) > 1e-9 * size))
+    shifted = bool(np.any(np.abs(k) > SAME_VALUE * size))
     return AffineMatch(tuple(float(x) for x in c), shifted, float(ratio.max()))
 
 

@@ -22,6 +22,7 @@ from lagrade.judge.evaluate import FLOAT, UnsupportedExpression
 from lagrade.judge.mutations import Mutant
 from lagrade.judge.rows import Rows, in_span
 from lagrade.judge.sampling import Points
+from lagrade.judge.tolerances import SAME_FACTOR, SAME_VALUE
 
 
 class Catalogue(Protocol):
@@ -126,7 +127,7 @@ def row_keeper(catalogue: Catalogue) -> Callable[[tuple[int, Mutant]], bool]:
         except (UnsupportedExpression, ValueError, ZeroDivisionError):
             return False
         r, s = in_span(rows, p.reference_rows(points), 0)
-        if np.all(np.abs(r) <= 1e-8 * s):
+        if np.all(np.abs(r) <= SAME_FACTOR * s):
             return False  # the mutated row is still a consequence of the right equations
         fp = rows.coef[:, 0, :].ravel().astype(float)
         norm = np.linalg.norm(fp)
@@ -134,7 +135,7 @@ def row_keeper(catalogue: Catalogue) -> Callable[[tuple[int, Mutant]], bool]:
             return False
         if seen:
             kept = np.asarray(seen)
-            if np.any(np.linalg.norm(kept - fp, axis=1) < 1e-8 * norm):
+            if np.any(np.linalg.norm(kept - fp, axis=1) < SAME_FACTOR * norm):
                 return False
         seen.append(fp)
         return True
@@ -149,4 +150,4 @@ def _close_to_any(fp: np.ndarray, seen: list[np.ndarray]) -> bool:
         return False
     kept = np.asarray(same)
     scale = np.maximum(np.max(np.abs(kept), axis=1), max(float(np.max(np.abs(fp))), 1e-300))
-    return bool(np.any(np.max(np.abs(kept - fp), axis=1) <= 1e-9 * scale))
+    return bool(np.any(np.max(np.abs(kept - fp), axis=1) <= SAME_VALUE * scale))

@@ -14,6 +14,7 @@ import numpy as np
 from lagrade.judge.evaluate import UnsupportedExpression
 from lagrade.judge.rows import Rows, outside_span
 from lagrade.judge.sampling import Points
+from lagrade.judge.tolerances import SAME_FACTOR, SAME_VALUE
 
 # What a mutant may raise when it is compiled or evaluated: such a mutant is never matched.
 SKIPPED = (UnsupportedExpression, ValueError, ZeroDivisionError, np.linalg.LinAlgError)
@@ -102,7 +103,7 @@ def _lagrangians_ok(stack: Stack, answer_el: tuple[np.ndarray, np.ndarray]) -> n
         # least-squares c per mutant and group; a non-finite value leaves c or r non-finite
         # for that mutant only (rows are independent), so it does not match, as before
         c = np.einsum("mpk,pk->mp", Eb, Ea) @ in_group / den  # (mutants, groups)
-        ok = np.all((den != 0) & (np.abs(c) >= 1e-9), axis=1)
+        ok = np.all((den != 0) & (np.abs(c) >= SAME_VALUE), axis=1)
         c = c[:, group_of, None]  # per point: (mutants, points, 1)
         return ok & vanish_rows(Ea - c * Eb, Sa + np.abs(c) * Sb)
 
@@ -231,11 +232,11 @@ def is_for_row(x: np.ndarray, R: np.ndarray, i: int, group: np.ndarray | None) -
     row = R[:, i, :]
     scale = np.linalg.norm(x, axis=1)
     with np.errstate(all="ignore"):
-        if np.any(np.linalg.norm(x[:, :n], axis=1) > 1e-9 * scale):
+        if np.any(np.linalg.norm(x[:, :n], axis=1) > SAME_VALUE * scale):
             unit = row / np.linalg.norm(row, axis=1)[:, None]
             res = x - unit * np.sum(unit * x, axis=1)[:, None]
-            return bool(np.all(np.linalg.norm(res, axis=1) <= 1e-8 * scale))
-        if np.any(np.linalg.norm(row[:, :n], axis=1) > 1e-9 * np.linalg.norm(row, axis=1)):
+            return bool(np.all(np.linalg.norm(res, axis=1) <= SAME_FACTOR * scale))
+        if np.any(np.linalg.norm(row[:, :n], axis=1) > SAME_VALUE * np.linalg.norm(row, axis=1)):
             return False
         ratio = x[:, n] / row[:, n]
         if not np.all(np.isfinite(ratio)):
@@ -243,7 +244,7 @@ def is_for_row(x: np.ndarray, R: np.ndarray, i: int, group: np.ndarray | None) -
         if group is None:
             group = np.zeros(len(ratio), dtype=int)
         starts = np.searchsorted(group, group)
-        return bool(np.all(np.abs(ratio - ratio[starts]) <= 1e-8 * np.abs(ratio[starts])))
+        return bool(np.all(np.abs(ratio - ratio[starts]) <= SAME_FACTOR * np.abs(ratio[starts])))
 
 
 # --- helpers --------------------------------------------------------------------------------------
@@ -262,4 +263,4 @@ def full(pair, n: int) -> tuple[np.ndarray, np.ndarray]:
 def vanish_rows(r: np.ndarray, size: np.ndarray) -> np.ndarray:
     """Per leading row (one per mutant): finite and within rounding of its terms everywhere."""
     r, size = r.reshape(len(r), -1), size.reshape(len(size), -1)
-    return np.all(np.isfinite(r) & (np.abs(r) <= 1e-9 * size), axis=1)
+    return np.all(np.isfinite(r) & (np.abs(r) <= SAME_VALUE * size), axis=1)

@@ -31,6 +31,7 @@ from lagrade.judge.clocks import PREPARE_LIMIT, Budget
 from lagrade.judge.compiled import Compiled, finite_mask
 from lagrade.judge.rows import Rows, equation_rows
 from lagrade.judge.sampling import Points, Space, seed_for
+from lagrade.judge.tolerances import SINGULAR_MASS
 from lagrade.mechanics.domains import Domain
 from lagrade.mechanics.lagrange import Jet, LagrangianSystem, jet, t
 from lagrade.mechanics.scene import SceneVariant
@@ -247,7 +248,7 @@ class Problem:
                     M = np.stack(vals, axis=-1).reshape(k, n, n)
                     det = np.linalg.det(M)
                     scale = np.prod(np.linalg.norm(M, axis=2), axis=1)
-                return ok & np.isfinite(det) & (np.abs(det) > 1e-6 * scale)
+                return ok & np.isfinite(det) & (np.abs(det) > SINGULAR_MASS * scale)
 
             return valid
         return mask

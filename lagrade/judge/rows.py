@@ -14,6 +14,7 @@ from lagrade.judge.compiled import Compiled, to_length, total
 from lagrade.judge.derivatives import euler_lagrange_values
 from lagrade.judge.evaluate import FLOAT
 from lagrade.judge.sampling import memo_inputs
+from lagrade.judge.tolerances import RANK
 from lagrade.mechanics.lagrange import Jet
 
 
@@ -184,7 +185,7 @@ def row_rank(coef: np.ndarray, rows: Sequence[int]) -> int:
             ranks.append(0)
             continue
         sv = np.linalg.svd(M, compute_uv=False)
-        ranks.append(int((sv > 1e-8 * sv[0]).sum()))
+        ranks.append(int((sv > RANK * sv[0]).sum()))
     return int(np.bincount(ranks).argmax())
 
 

@@ -477,7 +477,10 @@ class SceneVariant:
     def _presented(self) -> SceneVariant:
         """The first variant of this scene with this presentation (names and options): T, V and
         L depend on nothing else (the values are numbers for the handout, never in them), so the
-        variants of a class that share a presentation derive them once."""
+        variants of a class that share a presentation derive them once. A variant of another
+        kind (a student's own coordinates: other positions) derives its own."""
+        if type(self) is not SceneVariant:
+            return self
         key = (tuple(sorted(self.names.items())), tuple(sorted(self.options.items())))
         shared = self.scene.__dict__.setdefault("_presentations", {})
         return shared.setdefault(key, self)

@@ -16,6 +16,7 @@ from typing import Any
 
 from lagrade.errors import ParseError
 from lagrade.judge.parts.items import Piece, list_items
+from lagrade.judge.tolerances import ROUNDING
 from lagrade.judge.verdict import Verdict
 
 #: Ambiguous lines judged together at most (their readings multiply: 2 lines, 4 runs).
@@ -73,7 +74,7 @@ def best_reading(
                 replaced[k] = Piece(reading[1], latex=False)
         judged = run(replaced)
         score = (best or (verdict, []))[0].score
-        if judged[0].status != "invalid" and judged[0].score > score + 1e-12:
+        if judged[0].status != "invalid" and judged[0].score > score + ROUNDING:
             best, chosen = judged, combination
     if best is None:
         return None

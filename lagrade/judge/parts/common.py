@@ -23,12 +23,11 @@ from lagrade.judge.problem import Problem
 from lagrade.judge.rows import equation_rows
 from lagrade.judge.sampling import Points
 from lagrade.judge.situation import angles, rounded, situation, symbol_text
+from lagrade.judge.tolerances import AS_TYPED, SAME_VALUE
 from lagrade.judge.verdict import Verdict
 
 #: A number as typed: 9.81, 8, 6.674e-11 (not the digits of a name such as m_1).
 _NUMBER = re.compile(r"(?<![\w.])\d+(?:\.\d+)?(?:[eE][-+]?\d+)?(?![\w.])")
-#: How close a value reads as "the handout's": a typed value is rounded (alpha = 0.5236 rad).
-_AS_TYPED = 1e-3
 
 
 def handout_numbers(problem: Problem, got: Read, reference: Compiled | None = None) -> str:
@@ -67,7 +66,7 @@ def handout_numbers(problem: Problem, got: Read, reference: Compiled | None = No
 
 def _typed_value(value: float, typed: list[str]) -> bool:
     value = abs(float(value))
-    return any(abs(float(n) - v) <= _AS_TYPED * v for n in typed for v in (value, value * value))
+    return any(abs(float(n) - v) <= AS_TYPED * v for n in typed for v in (value, value * value))
 
 
 def _is_reference_with_values(
@@ -95,7 +94,7 @@ def _is_reference_with_values(
     if ok.sum() < 3:
         return False
     first = d[np.searchsorted(points.group, points.group)]  # a constant per parameter draw
-    return bool(np.all(np.abs(d - first)[ok] <= _AS_TYPED * (size + np.abs(first))[ok]))
+    return bool(np.all(np.abs(d - first)[ok] <= AS_TYPED * (size + np.abs(first))[ok]))
 
 
 def witness_point(
@@ -260,9 +259,9 @@ def method_name(*outcomes: Outcome) -> str:
 def ratio_text(c: float) -> str:
     """A factor as a student reads it: a simple fraction (2, 1/2, 3/2) when c is one, else six
     significant digits (1e+40, never the float's 40 digits of rounding, nor 0 for 1e-40)."""
-    if 1e-6 <= abs(c) <= 1e6:
+    if 1e-6 <= abs(c) <= 1e6:  # not a tolerance: the factors shown as fractions
         f = Fraction(c).limit_denominator(1000)
-        if abs(float(f) - c) <= 1e-9 * abs(c):
+        if abs(float(f) - c) <= SAME_VALUE * abs(c):
             return str(f)
     return f"{c:.6g}"
 

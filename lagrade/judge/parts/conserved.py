@@ -32,6 +32,7 @@ from lagrade.judge.parts.reading import (
 from lagrade.judge.problem import Problem
 from lagrade.judge.rows import equation_rows, lagrangian_rows, row_rank, solve_accelerations
 from lagrade.judge.sampling import Points
+from lagrade.judge.tolerances import CONSTANT_GRADIENT, RANK, ROUNDING
 from lagrade.judge.verdict import Verdict
 
 
@@ -68,7 +69,9 @@ def _conservation(
         grad = np.broadcast_to(np.asarray(grad, float), (points.n, 1 + 2 * len(jets)))
         value, size = Q.values(points.env)
         size = np.broadcast_to(size, (points.n,))
-    constant = bool(np.all(np.abs(grad).max(axis=1) <= 1e-10 * np.maximum(size, 1e-300)))
+    constant = bool(
+        np.all(np.abs(grad).max(axis=1) <= CONSTANT_GRADIENT * np.maximum(size, 1e-300))
+    )
     return out, constant, grad[:, 1:]  # column 0 is ∂/∂t
 
 
@@ -155,7 +158,7 @@ def check_conserved(problem: Problem, answer: Any, given: Mapping | None) -> Ver
             score *= rank / key_rank
             feedback.append(_count_sentence(problem, key, key_rank, rank))
             mistakes.append("missing_conserved")
-    status = "correct" if score >= 1.0 - 1e-12 and not feedback else "incorrect"
+    status = "correct" if score >= 1.0 - ROUNDING and not feedback else "incorrect"
     if status == "correct":
         score = 1.0
     follows = status != "correct" and any_wrong and follows_all and own is not None
@@ -244,7 +247,7 @@ def _stacked_rank(grads: Sequence[np.ndarray]) -> int:
     scale = np.abs(coef).max(axis=0)
     coef = coef / np.where(scale > 0, scale, 1.0)
     sv = np.linalg.svd(coef, compute_uv=False)
-    return int(np.sum(sv > 1e-8 * max(sv[0], 1e-300)))
+    return int(np.sum(sv > RANK * max(sv[0], 1e-300)))
 
 
 def _count_sentence(problem: Problem, key: Mapping, key_rank: int, rank: int) -> str:

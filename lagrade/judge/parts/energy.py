@@ -42,6 +42,7 @@ from lagrade.judge.parts.reading import (
 )
 from lagrade.judge.problem import Problem
 from lagrade.judge.sampling import Points
+from lagrade.judge.tolerances import ROUNDING, SAME_VALUE
 from lagrade.judge.verdict import Verdict
 
 
@@ -69,7 +70,7 @@ def judge_lagrangian(
     match = lagrangians_match(answer, reference_el(problem, points), problem.jets, points)
     out = match.outcome
     factors = np.array(match.factors)
-    if out.equal and np.all(np.abs(factors) < 1e-12):
+    if out.equal and np.all(np.abs(factors) < ROUNDING):
         return (
             "incorrect",
             0.0,
@@ -146,7 +147,7 @@ def _factor_notes(c: float | None) -> list[str]:
             "Your L is T − V times a factor that depends on the parameters; that gives "
             "the same motion."
         ]
-    if abs(c - 1) > 1e-9:
+    if abs(c - 1) > SAME_VALUE:
         return [
             f"Your L is {ratio_text(c)} × (T − V); a constant factor gives the same "
             "equations of motion."
@@ -163,10 +164,10 @@ def _same_dynamics_notes(problem: Problem, answer: Compiled, match, points: Poin
         factors = np.array(match.factors)[points.group]
         d = np.broadcast_to(a - factors * b, (points.n,))
         size = np.broadcast_to(sa + np.abs(factors) * sb, (points.n,))
-    if np.all(np.abs(d) <= 1e-9 * size):
+    if np.all(np.abs(d) <= SAME_VALUE * size):
         return notes
     starts = np.searchsorted(points.group, points.group)
-    if np.all(np.abs(d - d[starts]) <= 1e-9 * (size + np.abs(d[starts]))):
+    if np.all(np.abs(d - d[starts]) <= SAME_VALUE * (size + np.abs(d[starts]))):
         notes.append(_CONSTANT_NOTE)
     else:
         notes.append(

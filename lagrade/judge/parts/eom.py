@@ -29,6 +29,7 @@ from lagrade.judge.rows import (
     row_rank,
     span_basis,
 )
+from lagrade.judge.tolerances import ZERO_ROW
 from lagrade.judge.verdict import Verdict, invalid
 
 
@@ -84,7 +85,7 @@ def _judge(
             continue
         size = rows.size[:, k]
         norm = np.linalg.norm(rows.coef[:, k, :].astype(float), axis=1)
-        if np.all(norm <= 1e-10 * np.maximum(size, 1e-300)):
+        if np.all(norm <= ZERO_ROW * np.maximum(size, 1e-300)):
             feedback.append(f"{label} says nothing (it reduces to 0 = 0).")
             mistakes.append("trivial_equation")
             wrong.append(k)

@@ -34,6 +34,7 @@ from lagrade.judge.parts.reading import Read, read_single
 from lagrade.judge.problem import Problem
 from lagrade.judge.sampling import coordinate_range
 from lagrade.judge.situation import unit_text
+from lagrade.judge.tolerances import NUMERIC_TOLERANCE, ROUNDING
 from lagrade.judge.verdict import Verdict
 from lagrade.mechanics.domains import Domain
 
@@ -47,10 +48,6 @@ def _domains_for(problem: Problem) -> dict:
     return domains
 
 
-#: Relative tolerance of a numeric answer unless the rubric or the request sets another.
-NUMERIC_TOLERANCE = 0.01
-
-
 def strip_unit(text: str, unit: str) -> str:
     """'5.39 m/s^2' → '5.39' when the quantity's unit is m/s^2 (spaces and ** tolerated)."""
     if not unit:
@@ -61,8 +58,8 @@ def strip_unit(text: str, unit: str) -> str:
 
 #: Units a value may carry: (scale to SI, dimensions as exponents of (m, kg, s)).
 _UNITS = {
-    "m": (1.0, (1, 0, 0)), "km": (1e3, (1, 0, 0)), "cm": (1e-2, (1, 0, 0)),
-    "mm": (1e-3, (1, 0, 0)), "s": (1.0, (0, 0, 1)), "ms": (1e-3, (0, 0, 1)),
+    "m": (1.0, (1, 0, 0)), "km": (1e3, (1, 0, 0)), "cm": (1e-2, (1, 0, 0)),  # not a tolerance
+    "mm": (1e-3, (1, 0, 0)), "s": (1.0, (0, 0, 1)), "ms": (1e-3, (0, 0, 1)),  # not a tolerance
     "min": (60.0, (0, 0, 1)), "kg": (1.0, (0, 1, 0)), "N": (1.0, (1, 1, -2)),
     "J": (1.0, (2, 1, -2)), "W": (1.0, (2, 1, -3)), "Hz": (1.0, (0, 0, -1)),
     "rad": (1.0, (0, 0, 0)), "1": (1.0, (0, 0, 0)),
@@ -173,7 +170,7 @@ def _judge_number(
     expected = complex(sp.N(problem.expression.xreplace(values), 30))
     value = complex(sp.N(got, 30))
     echo = f"{value.real:.6g}"  # a number reads better as a decimal than as 6887/1000
-    if abs(expected.imag) > 1e-12 * max(1.0, abs(expected)):
+    if abs(expected.imag) > ROUNDING * max(1.0, abs(expected)):
         feedback = ("For these values the quantity is not real; the key says so.",)
         return Verdict("expression", "incorrect", 0.0, feedback, echo, "numeric")
     error = abs(value - expected.real) / max(abs(expected.real), 1e-300)

@@ -30,6 +30,7 @@ from lagrade.judge.parts.reading import (
     read_lines,
 )
 from lagrade.judge.problem import Problem
+from lagrade.judge.tolerances import SAME_VALUE
 from lagrade.judge.verdict import Verdict, invalid
 
 
@@ -177,4 +178,4 @@ def _own_is_same_gauge(problem: Problem, own: Compiled) -> bool:
     points = problem.points("lagrangian")
     match = lagrangians_match(own, reference_el(problem, points), problem.jets, points)
     c = match.factor
-    return match.outcome.equal and c is not None and abs(c - 1) <= 1e-9
+    return match.outcome.equal and c is not None and abs(c - 1) <= SAME_VALUE

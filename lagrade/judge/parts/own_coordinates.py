@@ -42,6 +42,7 @@ from lagrade.judge.parts.transformation import transformation_positions
 from lagrade.judge.problem import Problem
 from lagrade.judge.sampling import coordinate_range
 from lagrade.judge.situation import symbol_text
+from lagrade.judge.tolerances import SAME_VALUE
 from lagrade.judge.verdict import Verdict
 from lagrade.mechanics.lagrange import Jet
 from lagrade.mechanics.reparametrize import (
@@ -207,7 +208,7 @@ def _verified_inverses(problem: Problem, carry: Sequence[Jet]) -> dict[sp.Symbol
             continue
         got = np.asarray(to_length(got, points.n), dtype=complex)
         want = points.env[q]
-        if np.all(np.abs(got - want) <= 1e-9 * (1 + np.abs(want))):
+        if np.all(np.abs(got - want) <= SAME_VALUE * (1 + np.abs(want))):
             found[q] = candidate
     problem.__dict__["_inverses"] = found
     return found

@@ -1,0 +1,56 @@
+"""Every tolerance the judge uses, named once, each with what it compares and why it is that
+size: a reader finds here what "equal", "zero", "the same factor" and "full rank" mean, and a
+change to one is a change in one place. Relative tolerances are ratios to the size of what is
+compared (the sum of the absolute values of the terms, or 1 + |value| where a value may be 0).
+
+The decision every equivalence test ends in (`lagrade.judge.decision`):
+"""
+
+#: Below this ratio of residual to term size two answers agree in float64 (a float64 sum of n
+#: terms carries about n·1e-16 of rounding: ample room below).
+EQUAL_BELOW = 1e-10
+#: Above it they differ; in between, 50-digit arithmetic decides.
+DIFFERENT_ABOVE = 1e-6
+#: The 50-digit decision: equal below this ratio.
+MP_EQUAL_BELOW = 1e-30
+
+# --- values computed two ways -------------------------------------------------------------------
+
+#: Two float64 values of one quantity computed by different routes (a recovered constant, a
+#: value recognised as a fraction of π, a point mapped back): equal within this relative
+#: difference.
+SAME_VALUE = 1e-9
+#: A factor or ratio fitted by least squares from float64 values (c in L′ = c L, a mutant's
+#: coefficient): the same at every point within this relative difference.
+SAME_FACTOR = 1e-8
+#: What is exactly zero in exact arithmetic reads below this relative size in float64 (an
+#: imaginary part of a real value, a coefficient that cancels, a score that is 1).
+ROUNDING = 1e-12
+
+# --- linear algebra ------------------------------------------------------------------------------
+
+#: A singular value counts toward a rank when above this share of the largest.
+RANK = 1e-8
+#: The mass matrix is singular at a point where its determinant is below this share of the
+#: product of its rows' norms (a point where the motion is not determined is not sampled).
+SINGULAR_MASS = 1e-6
+#: A conserved quantity is a constant when its gradient on phase space is below this share of
+#: its size at every point.
+CONSTANT_GRADIENT = 1e-10
+#: An equation's residual row is zero below this share of its size (an identity, not an
+#: equation of motion).
+ZERO_ROW = 1e-10
+
+# --- the student's numbers -----------------------------------------------------------------------
+
+#: A number typed in an answer is a handout value within this share (values are rounded when
+#: typed: alpha = 0.5236 rad).
+AS_TYPED = 1e-3
+#: A numeric answer's relative tolerance when the rubric does not say (3 significant figures).
+NUMERIC_TOLERANCE = 0.01
+
+# --- the student's own coordinates ---------------------------------------------------------------
+
+#: Newton's iterations that map the student's coordinates to the statement's stop when the
+#: residual is below this relative size.
+COORDINATE_MAP = 1e-8
