@@ -25,6 +25,7 @@ import sympy as sp
 from lagrade.errors import UnsupportedExpression
 from lagrade.judge.compiled import Compiled, to_length
 from lagrade.judge.derivatives import gradient
+from lagrade.judge.equivalence import group_starts
 from lagrade.judge.problem import Problem
 from lagrade.judge.situation import angles, symbol_text
 from lagrade.judge.tolerances import COORDINATE_MAP, ROUNDING, SAME_VALUE
@@ -226,7 +227,7 @@ def _closed_form(problem, positions, A, offsets, env, group, target):
     matrix of plain numbers, each offset a recognised number, a multiple of π plus or minus a
     parameter, or the solution of a position component that holds it linearly."""
     coords = [j.q for j in problem.jets]
-    firsts = np.searchsorted(group, np.unique(group))
+    firsts = np.unique(group_starts(group))
     if not _constant_per_group(A.reshape(len(A), -1), np.zeros(len(A), dtype=int)):
         return None  # A depends on the parameters
     matrix = [

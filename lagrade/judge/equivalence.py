@@ -64,16 +64,26 @@ def differ_by_constant(answer: Compiled, reference: Compiled, points: Points) ->
         a, sa = answer.values(env, backend)
         b, sb = reference_values(reference, points, backend)
         d = to_length(a - b, points.n, backend)
-        first = d[_group_starts(points)]
-        return d - first, to_length(sa + sb, points.n, backend) + abs(first)
+        rest, first = offset_removed(d, points.group)
+        return rest, to_length(sa + sb, points.n, backend) + first
 
     return decide(residual)
 
 
-def _group_starts(points: Points) -> np.ndarray:
-    """For each point, the index of the first point of its group."""
-    starts = np.searchsorted(points.group, points.group)
-    return starts
+def group_starts(group: np.ndarray) -> np.ndarray:
+    """For each point, the index of the first point of its parameter group (the points of a
+    group are consecutive and share their parameters' values)."""
+    return np.searchsorted(group, group)
+
+
+def offset_removed(values, group: np.ndarray):
+    """(values less the first value of their parameter group, the size of that first value):
+    the one definition of "equal up to a constant per parameter group" — an answer that differs
+    from the reference by such a constant (the zero of V, a dropped m g h) leaves 0 here, and
+    its residual is measured against the terms' size plus the constant's. `values` may hold
+    one row per point or one row per candidate (points on the last axis)."""
+    first = values[..., group_starts(group)]
+    return values - first, abs(first)
 
 
 def values_equal(answer: Compiled, values: Callable[[object], tuple], points: Points) -> Outcome:

@@ -17,7 +17,7 @@ import numpy as np
 
 from lagrade.judge.compiled import Compiled
 from lagrade.judge.derivatives import euler_lagrange_values
-from lagrade.judge.equivalence import lagrangians_match
+from lagrade.judge.equivalence import lagrangians_match, offset_removed
 from lagrade.judge.evaluate import FLOAT, UnsupportedExpression
 from lagrade.judge.mutations import Mutant
 from lagrade.judge.rows import Rows, in_span
@@ -50,7 +50,7 @@ def fingerprint(
         return None if not np.any(v) else np.asarray(v, float)
     v = np.asarray(catalogue.values(compiled, points)[0], float)
     if mode == "offset":
-        v = v - v[np.searchsorted(points.group, points.group)]
+        v = offset_removed(v, points.group)[0]
     return v
 
 

@@ -11,6 +11,7 @@ from typing import Any
 
 import numpy as np
 
+from lagrade.judge.equivalence import offset_removed
 from lagrade.judge.evaluate import UnsupportedExpression
 from lagrade.judge.rows import Rows, outside_span
 from lagrade.judge.sampling import Points
@@ -147,10 +148,9 @@ def first_offset(stack: Stack, answer: tuple[np.ndarray, np.ndarray], points: Po
     """The first mutant the answer equals up to a constant per parameter group."""
     a, sa = answer
     b, sb = stack.arrays
-    starts = np.searchsorted(points.group, points.group)
     with np.errstate(all="ignore"):
-        d = a - b
-        return stack.first(vanish_rows(d - d[:, starts], sa + sb + np.abs(d[:, starts])))
+        rest, first = offset_removed(a - b, points.group)
+        return stack.first(vanish_rows(rest, sa + sb + first))
 
 
 # --- equations: the student's row in the span of a mutated system's rows --------------------------
@@ -243,8 +243,8 @@ def is_for_row(x: np.ndarray, R: np.ndarray, i: int, group: np.ndarray | None) -
             return False
         if group is None:
             group = np.zeros(len(ratio), dtype=int)
-        starts = np.searchsorted(group, group)
-        return bool(np.all(np.abs(ratio - ratio[starts]) <= SAME_FACTOR * np.abs(ratio[starts])))
+        rest, first = offset_removed(ratio, group)
+        return bool(np.all(np.abs(rest) <= SAME_FACTOR * first))
 
 
 # --- helpers --------------------------------------------------------------------------------------

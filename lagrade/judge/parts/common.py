@@ -16,6 +16,7 @@ from lagrade.judge.compiled import Compiled
 from lagrade.judge.decision import Outcome
 from lagrade.judge.derivatives import euler_lagrange_values
 from lagrade.judge.dimensions import hint_for, tells
+from lagrade.judge.equivalence import offset_removed
 from lagrade.judge.evaluate import FLOAT, MP, MP_DIGITS
 from lagrade.judge.mutations import Mutant
 from lagrade.judge.parts.reading import Read
@@ -93,8 +94,8 @@ def _is_reference_with_values(
     ok = np.isfinite(d) & np.isfinite(size)
     if ok.sum() < 3:
         return False
-    first = d[np.searchsorted(points.group, points.group)]  # a constant per parameter draw
-    return bool(np.all(np.abs(d - first)[ok] <= AS_TYPED * (size + np.abs(first))[ok]))
+    rest, first = offset_removed(d, points.group)  # a constant per parameter draw
+    return bool(np.all(np.abs(rest)[ok] <= AS_TYPED * (size + first)[ok]))
 
 
 def witness_point(

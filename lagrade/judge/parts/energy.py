@@ -19,6 +19,7 @@ from lagrade.judge.equivalence import (
     differ_by_constant,
     expressions_equal,
     lagrangians_match,
+    offset_removed,
     reference_values,
 )
 from lagrade.judge.evaluate import UnsupportedExpression
@@ -166,8 +167,8 @@ def _same_dynamics_notes(problem: Problem, answer: Compiled, match, points: Poin
         size = np.broadcast_to(sa + np.abs(factors) * sb, (points.n,))
     if np.all(np.abs(d) <= SAME_VALUE * size):
         return notes
-    starts = np.searchsorted(points.group, points.group)
-    if np.all(np.abs(d - d[starts]) <= SAME_VALUE * (size + np.abs(d[starts]))):
+    rest, first = offset_removed(d, points.group)
+    if np.all(np.abs(rest) <= SAME_VALUE * (size + first)):
         notes.append(_CONSTANT_NOTE)
     else:
         notes.append(
