@@ -11,6 +11,8 @@ from collections.abc import Mapping
 
 import sympy as sp
 
+from lagrade.judge.dimensions import NONE, dimensions_of
+from lagrade.judge.dimensions import unit_text as unit_text_of
 from lagrade.judge.problem import Problem
 from lagrade.notation.lexer import GREEK
 
@@ -52,19 +54,18 @@ def situation(witness: Mapping[str, float], problem: Problem | None = None) -> s
     """The situation of a witness point, e.g. "at θ = 0.3 rad with the system at rest"."""
     if problem is None:
         return "at " + _listing(witness.items(), {})
-    angular = angles(problem)
+    units = coordinate_units(problem)
     where, moving, speeding = [], [], []
     for j in problem.jets:
         name = j.name
-        angle = name in angular
+        unit, rate, acceleration = units.get(name, ("", "", ""))
         if name in witness:
-            where.append(_quantity(symbol_text(name), witness[name], "rad" if angle else ""))
+            where.append(_quantity(symbol_text(name), witness[name], unit))
         if f"{name}_dot" in witness:
-            speed = witness[f"{name}_dot"]
-            moving.append((symbol_text(name, 1), speed, "rad/s" if angle else ""))
+            moving.append((symbol_text(name, 1), witness[f"{name}_dot"], rate))
         if f"{name}_ddot" in witness:
             shown = symbol_text(name, 2)
-            speeding.append(_quantity(shown, witness[f"{name}_ddot"], "rad/s²" if angle else ""))
+            speeding.append(_quantity(shown, witness[f"{name}_ddot"], acceleration))
     if "t" in witness and _explicit_time(problem):
         where.append(_quantity("t", witness["t"], "s"))
     if not (where or moving or speeding):  # a formula in the parameters alone: quote them
@@ -93,15 +94,40 @@ def _join(parts: list[str]) -> str:
 
 
 def angles(problem: Problem) -> frozenset[str]:
-    """Coordinates that are angles: those the reference puts inside a trigonometric function
-    (θ in sin θ; a length never appears there) and those named by a Greek letter (Kepler's
-    polar angle φ, which L holds only as φ̇)."""
+    """Coordinates that are angles. Where the scene tells a coordinate's dimension (from where
+    it stands in the positions: `dimensions.symbol_dimensions`), an angle has no units (Kepler's
+    r is a length whether it is called r or ρ); and it is one the reference puts inside a
+    trigonometric function (θ in sin θ; a length never appears there) or one named by a Greek
+    letter (Kepler's polar angle φ, which L holds only as φ̇)."""
+    known = dimensions_of(problem)
     greek = {j.name for j in problem.jets if j.name.partition("_")[0] in _LETTER}
     reference = problem.lagrangian if problem.lagrangian is not None else problem.expression
     inside = set()
     for f in reference.atoms(sp.sin, sp.cos, sp.tan) if reference is not None else ():
         inside |= f.args[0].free_symbols
-    return frozenset(j.name for j in problem.jets if j.q in inside) | greek
+    guessed = {j.name for j in problem.jets if j.q in inside} | greek
+    return frozenset(
+        j.name
+        for j in problem.jets
+        if j.name in guessed and (j.q not in known or known[j.q] == NONE)
+    )
+
+
+def coordinate_units(problem: Problem) -> dict[str, tuple[str, str, str]]:
+    """The units a coordinate, its velocity and its acceleration are quoted in: rad, rad/s and
+    rad/s² for an angle; the SI units of its dimension where the scene tells one (m, m/s, m/s²);
+    none otherwise (an ad-hoc question declares no units)."""
+    known = dimensions_of(problem)
+    angular = angles(problem)
+    units = {}
+    for j in problem.jets:
+        if j.name in angular:
+            units[j.name] = ("rad", "rad/s", "rad/s²")
+        elif j.q in known and known[j.q] != NONE:
+            units[j.name] = tuple(unit_text_of(known[s]) for s in (j.q, j.dot, j.ddot))
+        else:
+            units[j.name] = ("", "", "")
+    return units
 
 
 def _explicit_time(problem: Problem) -> bool:
