@@ -112,7 +112,7 @@ def symbolic_solution(scene: Scene, names: tuple, options: tuple) -> dict[str, A
         }
         for label, f in ([] if given_l else v.constraints)
     ]
-    keyed = [p for p in KEYED_PARTS if p != "conserved" and (not given_l or p in LAGRANGIAN_PARTS)]
+    keyed = [p for p in KEYED_PARTS if not given_l or p in LAGRANGIAN_PARTS]
     return {
         "statement": _statement(v),
         "coordinates": [math(sp.Symbol(c)) for c in coords],
@@ -147,7 +147,6 @@ def symbolic_solution(scene: Scene, names: tuple, options: tuple) -> dict[str, A
         # accepts a variant (lagrade.judge.verify), one entry per part the scene can ask
         "key_answers": {
             **{part: key_answer(v, part) for part in keyed},
-            **({"conserved": key_answer(v, "conserved")} if system.conserved_quantities else {}),
             **{q: key_answer(v, EXPRESSION, q) for q in v.quantities},
         },
         "variant": v,

@@ -361,6 +361,7 @@ def _scene_problem(spec: Mapping[str, Any], key: str) -> Problem:
         lagrangian=variant.lagrangian,
         expression=expression,
         variant=variant,
+        coordinate_domains={n: d.sample_range() for n, d in variant.coordinate_domains.items()},
         unit=unit,
     )
 

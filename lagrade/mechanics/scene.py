@@ -22,6 +22,7 @@ from sympy.simplify.fu import TR10i
 
 from lagrade.errors import SceneError
 from lagrade.mechanics import lagrange as mech
+from lagrade.mechanics.dissipation import DissipativeSystem
 from lagrade.mechanics.domains import Domain
 from lagrade.mechanics.figure import FigureHint
 
@@ -153,6 +154,11 @@ class Scene:
     one) declares no bodies; it has L and all that follows from it, but no transformation
     equations, T, V, constraints or DOF, and asking for them is a SceneError that says so.
 
+    `coordinate_domains` says where a coordinate lives (`r` positive): the consistency checks,
+    what is shown and the judge's sample points keep to it. `dissipation(s)` (Rayleigh's F) and
+    `forces(s)` (generalized forces Q by coordinate) enter the equations of motion,
+    E_j + ∂F/∂q̇_j = Q_j (`lagrade.mechanics.dissipation`).
+
     In `statement`, `{theta}` stands for a coordinate (under the variant's name), `{angle_from}`
     for an option's choice (as `wording[option][choice]` reads, else the choice itself), and
     `{a}` for a parameter whose name is also an English word; handouts set coordinates and
@@ -180,6 +186,14 @@ class Scene:
     lagrangian: Callable[[SimpleNamespace], sp.Expr] | None = None
     figure: Callable[[Mapping[str, str]], FigureHint] = lambda options: FigureHint()
     source: str = ""
+    coordinate_domains: Mapping[str, Domain] = field(default_factory=dict)
+    dissipation: Callable[[SimpleNamespace], sp.Expr] | None = None
+    forces: Callable[[SimpleNamespace], Mapping[str, sp.Expr]] | None = None
+
+    @property
+    def nonconservative(self) -> bool:
+        """The scene declares a dissipation function or generalized forces."""
+        return self.dissipation is not None or self.forces is not None
 
     @property
     def given_by_lagrangian(self) -> bool:
@@ -204,6 +218,9 @@ class Scene:
                 problems.append(
                     f"renames: the first name for {canonical!r} must be {canonical!r} itself"
                 )
+        for name in self.coordinate_domains:
+            if name not in self.coordinates:
+                problems.append(f"domains: {name!r} is not a coordinate")
         for name, choices in self.options.items():
             if not choices:
                 problems.append(f"options: {name!r} offers no choice")
@@ -298,6 +315,58 @@ class SceneVariant:
     def domains(self) -> dict[str, Domain]:
         """Each parameter's domain, by name."""
         return {p.name: p.domain for p in self.scene.parameters}
+
+    @cached_property
+    def coordinate_domains(self) -> dict[str, Domain]:
+        """Each coordinate's declared domain, keyed by this variant's name for it (a coordinate
+        declared without one is real)."""
+        return {self.names[c]: d for c, d in self.scene.coordinate_domains.items()}
+
+    def within_domains(self, expr: sp.Expr) -> sp.Expr:
+        """expr as the coordinates' domains let sympy simplify it on construction: √(r²) = r
+        and |r| = r for r > 0 (the coordinate stands in for a positive symbol and back)."""
+        signed = {j: self.coordinate_domains.get(j.name) for j in self.jets}
+        swap = {
+            j.q: sp.Dummy(j.name, **domain.assumptions)
+            for j, domain in signed.items()
+            if domain is not None and "real" not in domain.assumptions
+        }
+        if not swap:
+            return expr
+        back = {d: q for q, d in swap.items()}
+        return expr.xreplace(swap).xreplace(back)
+
+    def sample_point(self, rng: random.Random) -> dict[sp.Symbol, float]:
+        """A generic point for the scene's own checks: parameters and declared coordinates
+        inside their domains, the other coordinates in ±(0.2, 2.5), t in (0.1, 3)."""
+        point: dict[sp.Symbol, float] = {
+            s: rng.uniform(*self.domains[str(s)].sample_range())
+            for s in self.parameter_symbols.values()
+        }
+        for j in self.jets:
+            domain = self.coordinate_domains.get(j.name)
+            if domain is not None:
+                point[j.q] = rng.uniform(*domain.sample_range())
+            else:
+                point[j.q] = rng.choice((-1, 1)) * rng.uniform(0.2, 2.5)
+            point[j.dot] = rng.uniform(-2.0, 2.0)
+        point[mech.t] = rng.uniform(0.1, 3.0)
+        return point
+
+    def vanishes_in_domains(self, expr: sp.Expr, points: int = 8) -> bool:
+        """Whether expr is 0 (to 30 digits, relative to its terms) at seeded points inside the
+        declared domains: a constraint with √ or atan2 that holds on the physical branch only."""
+        rng = random.Random(0)
+        terms = sp.Add.make_args(sp.expand(expr))
+        for _ in range(points):
+            point = {s: sp.Float(v, 30) for s, v in self.sample_point(rng).items()}
+            value = sp.N(expr.xreplace(point), 30)
+            size = sum((abs(sp.N(x.xreplace(point), 30)) for x in terms), sp.S.Zero)
+            if not value.is_number or value.has(sp.zoo, sp.nan, sp.oo, -sp.oo):
+                return False
+            if abs(value) > sp.Float(10) ** -20 * (1 + size):
+                return False
+        return True
 
     @cached_property
     def namespace(self) -> SimpleNamespace:
@@ -423,11 +492,15 @@ class SceneVariant:
         for i, (label, f) in enumerate(self.constraints):
             if label != "declared":
                 continue
-            residual = sp.simplify(sp.expand_trig(f.xreplace(subs)))
-            if residual != 0:
+            residual = sp.simplify(sp.expand_trig(self.within_domains(f.xreplace(subs))))
+            if residual != 0 and not self.vanishes_in_domains(residual):
+                hint = "" if self.coordinate_domains else (
+                    " (if it holds where the coordinates live, declare their domains: "
+                    'domains = { r = "positive" })'
+                )
                 problems.append(
                     f"constraints: constraint {i + 1} ({f} = 0) is not satisfied by the "
-                    f"transformation equations; it leaves {residual}"
+                    f"transformation equations; it leaves {residual}{hint}"
                 )
         if self.dof != len(self.jets):
             problems.append(
@@ -466,7 +539,12 @@ class SceneVariant:
             s: rng.uniform(*self.domains[str(s)].sample_range())
             for s in self.parameter_symbols.values()
         }
-        point |= {j.q: rng.uniform(0.2, 1.2) for j in self.jets} | {mech.t: 0.7}
+        point |= {
+            j.q: rng.uniform(*self.coordinate_domains[j.name].sample_range())
+            if j.name in self.coordinate_domains
+            else rng.uniform(0.2, 1.2)
+            for j in self.jets
+        } | {mech.t: 0.7}
         numeric = J.xreplace(point).evalf()
         import numpy as np
 
@@ -478,13 +556,14 @@ class SceneVariant:
         """T = Σ ½ m |ṙ|² (+ ½ I φ̇² for rigid bodies), expanded and trig-simplified."""
         self._needs_bodies("T")
         T = sum((b.kinetic_energy(self.jets) for b in self.bodies), sp.S.Zero)
-        return _tidy(T)
+        return _tidy(self.within_domains(T))
 
     @cached_property
     def potential_energy(self) -> sp.Expr:
         """V as declared (a generalized potential may depend on velocities)."""
         self._needs_bodies("V")
-        return sp.expand(as_expr(self.scene.potential(self.namespace, self.bodies)))
+        V = as_expr(self.scene.potential(self.namespace, self.bodies))
+        return sp.expand(self.within_domains(V))
 
     @cached_property
     def lagrangian(self) -> sp.Expr:
@@ -495,8 +574,26 @@ class SceneVariant:
 
     @cached_property
     def system(self) -> mech.LagrangianSystem:
-        """The Euler–Lagrange machinery for this L (momenta, EOM, cyclic, h, …), all lazy."""
-        return mech.LagrangianSystem(self.lagrangian, self.jets)
+        """The Euler–Lagrange machinery for this L (momenta, EOM, cyclic, h, …), all lazy; with
+        the scene's dissipation and forces in its equations of motion when it declares them."""
+        if not self.scene.nonconservative:
+            return mech.LagrangianSystem(self.lagrangian, self.jets)
+        return DissipativeSystem(
+            self.lagrangian, self.jets, self.dissipation, self.generalized_forces
+        )
+
+    @cached_property
+    def dissipation(self) -> sp.Expr:
+        """Rayleigh's dissipation function F(q, q̇, t) (0 when the scene declares none)."""
+        if self.scene.dissipation is None:
+            return sp.S.Zero
+        return sp.expand(self.within_domains(as_expr(self.scene.dissipation(self.namespace))))
+
+    @cached_property
+    def generalized_forces(self) -> tuple[sp.Expr, ...]:
+        """The given generalized forces Q_j, one per coordinate (0 where none is given)."""
+        given = {} if self.scene.forces is None else self.scene.forces(self.namespace)
+        return tuple(as_expr(given.get(c, 0)) for c in self.scene.coordinates)
 
     # --- conveniences -------------------------------------------------------------------------
     @property

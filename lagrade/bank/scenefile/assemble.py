@@ -106,6 +106,8 @@ def assemble(scene_id: str, d: Declaration, source: str, problems: Problems) -> 
     _body_names(d, problems)
     potential = reader.read(d.potential, "potential", scene_bodies)
     lagrangian = reader.read(d.lagrangian, "lagrangian")
+    dissipation = reader.read(d.dissipation, "dissipation")
+    forces = {c: reader.read(x, "dissipation") for c, x in d.forces.items()}
     constraints = [reader.read(x, "constraint", scene_bodies) for x in d.constraints]
     quantities = {q.name: reader.read(q.value, "quantity") for q in d.quantities}
     claims = {q.name: read_claim(q, d, reader, problems) for q in d.quantities if q.check}
@@ -118,6 +120,8 @@ def assemble(scene_id: str, d: Declaration, source: str, problems: Problems) -> 
             problems.add("potential", "gravity needs a parameter g (gravitational acceleration)")
     _statement_fields(d, problems)
     if problems.blocking or None in bodies or None in constraints or None in quantities.values():
+        return None
+    if (d.dissipation is not None and dissipation is None) or None in forces.values():
         return None
     if any(
         None in c.constraints or None in c.bodies for cs in choices.values() for c in cs.values()
@@ -134,6 +138,10 @@ def assemble(scene_id: str, d: Declaration, source: str, problems: Problems) -> 
         scene_kwargs["bodies"] = lambda s: _bodies(s, sub, bodies)  # type: ignore[arg-type]
         scene_kwargs["potential"] = lambda s, made: _potential(s, sub, potential, made, g)
         scene_kwargs["constraints"] = lambda s, c: _constraints(s, sub, constraints)  # type: ignore[arg-type]
+    if dissipation is not None:
+        scene_kwargs["dissipation"] = lambda s: _put(sub(s))(dissipation)
+    if forces:
+        scene_kwargs["forces"] = lambda s: {c: _put(sub(s))(q) for c, q in forces.items()}
     wording = {
         o: {c.name: c.wording or c.name for c in decls}
         for o, decls in d.options.items()
@@ -145,6 +153,7 @@ def assemble(scene_id: str, d: Declaration, source: str, problems: Problems) -> 
             title=d.title,
             statement=d.statement,
             coordinates=tuple(d.coordinates),
+            coordinate_domains=dict(d.domains),
             parameters=parameters,
             renames=dict(d.renames),
             options={o: tuple(c.name for c in decls) for o, decls in d.options.items()},

@@ -25,12 +25,15 @@ TOP_KEYS = (
     "statement",
     "tags",
     "coordinates",
+    "domains",
     "renames",
     "parameters",
     "bodies",
     "potential",
     "lagrangian",
     "constraints",
+    "dissipation",
+    "forces",
     "options",
     "quantities",
     "figure",
@@ -116,12 +119,17 @@ class Declaration:
     statement: str = ""
     tags: tuple[str, ...] = ()
     coordinates: list[str] = field(default_factory=list)
+    #: Where each coordinate lives (`r = "positive"`): the coordinates without one are real.
+    domains: dict[str, Domain] = field(default_factory=dict)
     renames: dict[str, tuple[str, ...]] = field(default_factory=dict)
     parameters: list[ParameterDecl] = field(default_factory=list)
     bodies: list[BodyDecl] = field(default_factory=list)
     potential: Text | None = None
     lagrangian: Text | None = None
     constraints: list[Text] = field(default_factory=list)
+    #: Rayleigh's dissipation function F(q, q̇, t), and given generalized forces Q_j by coordinate.
+    dissipation: Text | None = None
+    forces: dict[str, Text] = field(default_factory=dict)
     options: dict[str, list[ChoiceDecl]] = field(default_factory=dict)
     quantities: list[QuantityDecl] = field(default_factory=list)
     figure: dict[str, Any] = field(default_factory=dict)
@@ -236,6 +244,7 @@ def read_declaration(data: Mapping[str, Any], problems: Problems) -> Declaration
     tags = _list(data.get("tags", []), "tags", problems, LIMITS["tags"]) or []
     d.tags = tuple(t for i, t in enumerate(tags) if _name(t, f"tags[{i + 1}]", "tag", problems))
     _coordinates(data, d, problems)
+    _domains(data, d, problems)
     _parameters(data, d, problems)
     _renames(data, d, problems)
     raw_bodies = data.get("bodies", {})
@@ -245,6 +254,7 @@ def read_declaration(data: Mapping[str, Any], problems: Problems) -> Declaration
         if key in data:
             setattr(d, key, expression(data[key], key, problems))
     d.constraints = _expressions(data.get("constraints", []), "constraints", problems)
+    _dissipation(data, d, problems)
     if d.lagrangian is not None:
         for key in ("bodies", "potential", "constraints"):
             if key in data:
@@ -287,6 +297,34 @@ def _coordinates(data: Mapping[str, Any], d: Declaration, problems: Problems) ->
                 d.coordinates.append(name)
     if raw is not None and not items:
         problems.add("coordinates", "empty: a scene has at least one coordinate")
+
+
+def _domains(data: Mapping[str, Any], d: Declaration, problems: Problems) -> None:
+    """`domains = { r = "positive", theta = "(-pi/2, pi/2)" }`: where each coordinate lives."""
+    table = _table(data.get("domains", {}), "domains", problems) or {}
+    for name, text in table.items():
+        key = f"domains.{name}"
+        if name not in d.coordinates:
+            problems.add(key, f"{_shown(name)} is not a coordinate")
+            continue
+        try:
+            d.domains[name] = Domain.parse(text)
+        except LagradeError as error:
+            problems.add(key, str(error))
+
+
+def _dissipation(data: Mapping[str, Any], d: Declaration, problems: Problems) -> None:
+    """Rayleigh's function `dissipation = "b x_dot^2/2"` and the generalized forces
+    `forces = { x = "F_0 cos(omega t)" }`, one per coordinate they act along."""
+    if "dissipation" in data:
+        d.dissipation = expression(data["dissipation"], "dissipation", problems)
+    table = _table(data.get("forces", {}), "forces", problems) or {}
+    for name, value in table.items():
+        key = f"forces.{name}"
+        if name not in d.coordinates:
+            problems.add(key, f"{_shown(name)} is not a coordinate (a force is given per coordinate)")
+        elif (text := expression(value, key, problems)) is not None:
+            d.forces[name] = text
 
 
 def _parameters(data: Mapping[str, Any], d: Declaration, problems: Problems) -> None:

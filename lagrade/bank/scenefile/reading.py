@@ -26,6 +26,7 @@ ALLOWED = {
     "body": {"coordinate", "parameter", "time", "let"},
     "potential": {"coordinate", "velocity", "parameter", "time", "let", "cartesian", "gravity"},
     "lagrangian": {"coordinate", "velocity", "parameter", "time", "let"},
+    "dissipation": {"coordinate", "velocity", "parameter", "time", "let"},
     "constraint": {"parameter", "time", "let", "cartesian"},
     "let": {"coordinate", "velocity", "parameter", "time"},
     "quantity": {"parameter", "let"},
@@ -49,6 +50,8 @@ _FIELD = {
     "potential": "a potential uses the coordinates and velocities, the bodies' Cartesian "
     "coordinates (x_bead, …), gravity, parameters, t and the names options bind",
     "lagrangian": "a Lagrangian uses the coordinates and velocities, parameters and t",
+    "dissipation": "a dissipation function or a generalized force uses the coordinates and "
+    "velocities, parameters, t and the names options bind",
     "constraint": "a constraint is written in the bodies' Cartesian coordinates (x_bead, …), "
     "parameters and t",
     "let": "a name an option binds is an expression in the coordinates, velocities, parameters "
