@@ -22,7 +22,13 @@ from lagrade.assign.templating import toml_literal
 from lagrade.assign.tidy import tidy
 from lagrade.assign.units import Number, unit_formats
 from lagrade.assign.variants import VariantChoice
-from lagrade.mechanics.scene import LAGRANGIAN_PARTS, RigidBody, Scene, SceneVariant
+from lagrade.mechanics.scene import (
+    LAGRANGIAN_PARTS,
+    RigidBody,
+    Scene,
+    SceneVariant,
+    SpatialRigidBody,
+)
 from lagrade.notation import printer as rm
 from lagrade.notation.keys import key_answer
 
@@ -70,7 +76,7 @@ def _described(variant: SceneVariant, text: str) -> Prose:
 
 
 def _body_kind(body: Any) -> str:
-    return "rigid body" if isinstance(body, RigidBody) else "point mass"
+    return "rigid body" if isinstance(body, RigidBody | SpatialRigidBody) else "point mass"
 
 
 @lru_cache(maxsize=512)

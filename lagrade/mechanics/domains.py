@@ -1,5 +1,5 @@
-"""Parameter domains: where a parameter may lie, which sympy assumptions that implies, and how to
-draw sample values from it.
+"""Parameter and coordinate domains: where a parameter or coordinate may lie, which sympy
+assumptions that implies, how to draw sample values from it, and what holds there.
 
 Domains are written as `positive`, `nonnegative`, `real`, or an interval such as `(0, pi/2)` or
 `[0, 1]`. They come from scene declarations and from instructors' ad-hoc problems, never from
@@ -10,7 +10,9 @@ over a number), not by sympify.
 from __future__ import annotations
 
 import math
+import random
 import re
+from collections.abc import Mapping
 from dataclasses import dataclass
 from fractions import Fraction
 
@@ -138,3 +140,42 @@ class Domain:
 POSITIVE = Domain.parse("positive")
 NONNEGATIVE = Domain.parse("nonnegative")
 REAL = Domain.parse("real")
+
+
+def within(expr: sp.Expr, domains: Mapping[sp.Symbol, Domain]) -> sp.Expr:
+    """expr as the symbols' domains let sympy simplify it on construction: √(r²) = r and
+    |r| = r for r > 0 (each symbol with a signed domain stands in for a symbol carrying that
+    assumption, and back)."""
+    swap = {
+        s: sp.Dummy(s.name, **d.assumptions)
+        for s, d in domains.items()
+        if "real" not in d.assumptions
+    }
+    if not swap:
+        return expr
+    return expr.xreplace(swap).xreplace({d: s for s, d in swap.items()})
+
+
+def vanishes_within(
+    expr: sp.Expr, box: Mapping[sp.Symbol, tuple[float, float]], points: int = 8
+) -> bool:
+    """Whether expr is 0 at `points` seeded points of `box` (each symbol uniform in its range),
+    to 30 digits relative to the size of its terms; a complex or infinite value is not 0."""
+    rng = random.Random(0)
+    terms = sp.Add.make_args(sp.expand(expr))
+    for _ in range(points):
+        point = {s: sp.Float(rng.uniform(lo, hi), 30) for s, (lo, hi) in box.items()}
+        value = sp.N(expr.xreplace(point), 30)
+        if not value.is_number or value.has(sp.zoo, sp.nan, sp.oo, -sp.oo):
+            return False
+        size = sum((abs(sp.N(x.xreplace(point), 30)) for x in terms), sp.S.Zero)
+        if abs(value) > sp.Float(10) ** -20 * (1 + size):
+            return False
+    return True
+
+
+def branched(expr: sp.Expr) -> bool:
+    """expr holds a branch choice (|r|, a root, atan2, a sign) that a coordinate's domain may
+    settle."""
+    roots = any(p.exp.is_Rational and not p.exp.is_Integer for p in expr.atoms(sp.Pow))
+    return roots or expr.has(sp.Abs, sp.sign, sp.atan2, sp.arg, sp.Piecewise)

@@ -18,31 +18,28 @@ from types import SimpleNamespace
 from typing import Any
 
 import sympy as sp
-from sympy.simplify.fu import TR10i
 
 from lagrade.errors import SceneError
 from lagrade.mechanics import lagrange as mech
+
+# the bodies live in `bodies`; their names stay importable from here, where scenes are made
+from lagrade.mechanics.bodies import (  # noqa: F401
+    Body,
+    PointMass,
+    RigidBody,
+    SpatialRigidBody,
+    _body_fields,
+    _normalized,
+    _tidy,
+    as_expr,
+)
 from lagrade.mechanics.dissipation import DissipativeSystem
-from lagrade.mechanics.domains import Domain
+from lagrade.mechanics.domains import Domain, branched, vanishes_within, within
 from lagrade.mechanics.figure import FigureHint
 
 AXES = ("x", "y", "z")
 #: What a scene given by its Lagrangian alone can be asked (everything that follows from L).
 LAGRANGIAN_PARTS = ("lagrangian", "eom", "momenta", "cyclic", "conserved", "expression")
-
-
-def as_expr(value: object) -> sp.Expr:
-    """A scene declaration's value as a sympy expression, without evaluating text.
-
-    A scene file's expressions arrive already read by the notation layer (`lagrade.bank`), so
-    what comes here is a sympy object or a plain number (the 0 of a fixed axle); a string is
-    refused rather than parsed, so nothing here can turn text into code.
-    """
-    if isinstance(value, sp.Basic):
-        return value
-    if isinstance(value, bool) or not isinstance(value, int | float):
-        raise TypeError(f"a scene declares sympy expressions or numbers, not {value!r}")
-    return sp.Integer(value) if isinstance(value, int) else sp.Float(value)
 
 
 @dataclass(frozen=True)
@@ -70,52 +67,6 @@ def param(
             "?", [f"parameter {name!r}: no domain (declare positive, real or an interval)"]
         )
     return Parameter(name, Domain.parse(domain), unit, tuple(values), description)
-
-
-@dataclass(frozen=True)
-class PointMass:
-    """A point mass at `position` (2 components: motion in the x–y plane, so z = 0 is a
-    constraint; or 3 components), each a function of the coordinates and t. y (or z for 3-D
-    positions) points up."""
-
-    name: str
-    mass: sp.Expr
-    position: tuple[sp.Expr, ...]
-
-    freedoms = 3
-
-    @property
-    def planar(self) -> bool:
-        return len(self.position) == 2
-
-    def kinetic_energy(self, jets: Sequence[mech.Jet]) -> sp.Expr:
-        """T = ½ m |ṙ|²."""
-        return sp.Rational(1, 2) * self.mass * mech.speed_squared(self.position, jets)
-
-
-@dataclass(frozen=True)
-class RigidBody:
-    """A rigid body moving in the x–y plane: its centre of mass at `position`, turned by `angle`
-    about the z axis, with moment of inertia `inertia` about its centre of mass. In space it has
-    6 freedoms; staying in the plane costs 3 (z = 0 and the two tilts)."""
-
-    name: str
-    mass: sp.Expr
-    position: tuple[sp.Expr, sp.Expr]
-    inertia: sp.Expr
-    angle: sp.Expr
-
-    freedoms = 6
-    planar = True
-
-    def kinetic_energy(self, jets: Sequence[mech.Jet]) -> sp.Expr:
-        """T = ½ m |ṙ_cm|² + ½ I φ̇² (König's theorem for plane motion)."""
-        omega = mech.total_derivative(self.angle, jets)
-        translation = sp.Rational(1, 2) * self.mass * mech.speed_squared(self.position, jets)
-        return translation + sp.Rational(1, 2) * self.inertia * omega**2
-
-
-Body = PointMass | RigidBody
 
 
 def gravity(g: sp.Expr, bodies: Sequence[Body], axis: str = "y") -> sp.Expr:
@@ -323,50 +274,26 @@ class SceneVariant:
         return {self.names[c]: d for c, d in self.scene.coordinate_domains.items()}
 
     def within_domains(self, expr: sp.Expr) -> sp.Expr:
-        """expr as the coordinates' domains let sympy simplify it on construction: √(r²) = r
-        and |r| = r for r > 0 (the coordinate stands in for a positive symbol and back)."""
-        signed = {j: self.coordinate_domains.get(j.name) for j in self.jets}
-        swap = {
-            j.q: sp.Dummy(j.name, **domain.assumptions)
-            for j, domain in signed.items()
-            if domain is not None and "real" not in domain.assumptions
-        }
-        if not swap:
-            return expr
-        back = {d: q for q, d in swap.items()}
-        return expr.xreplace(swap).xreplace(back)
+        """expr simplified as the coordinates' domains allow (√(r²) = r for r > 0)."""
+        declared = self.coordinate_domains
+        return within(expr, {j.q: declared[j.name] for j in self.jets if j.name in declared})
 
-    def sample_point(self, rng: random.Random) -> dict[sp.Symbol, float]:
-        """A generic point for the scene's own checks: parameters and declared coordinates
-        inside their domains, the other coordinates in ±(0.2, 2.5), t in (0.1, 3)."""
-        point: dict[sp.Symbol, float] = {
-            s: rng.uniform(*self.domains[str(s)].sample_range())
-            for s in self.parameter_symbols.values()
-        }
+    @cached_property
+    def sample_box(self) -> dict[sp.Symbol, tuple[float, float]]:
+        """Where the scene's own checks draw generic points: the parameters and the declared
+        coordinates inside their domains, the other coordinates over ±2.5 (both signs: a
+        constraint that holds only for r > 0 needs r's domain declared), q̇ in ±2, t in (0.1, 3)."""
+        box = {s: self.domains[str(s)].sample_range() for s in self.parameter_symbols.values()}
         for j in self.jets:
             domain = self.coordinate_domains.get(j.name)
-            if domain is not None:
-                point[j.q] = rng.uniform(*domain.sample_range())
-            else:
-                point[j.q] = rng.choice((-1, 1)) * rng.uniform(0.2, 2.5)
-            point[j.dot] = rng.uniform(-2.0, 2.0)
-        point[mech.t] = rng.uniform(0.1, 3.0)
-        return point
+            box[j.q] = domain.sample_range() if domain is not None else (-2.5, 2.5)
+            box[j.dot] = (-2.0, 2.0)
+        return box | {mech.t: (0.1, 3.0)}
 
-    def vanishes_in_domains(self, expr: sp.Expr, points: int = 8) -> bool:
-        """Whether expr is 0 (to 30 digits, relative to its terms) at seeded points inside the
-        declared domains: a constraint with √ or atan2 that holds on the physical branch only."""
-        rng = random.Random(0)
-        terms = sp.Add.make_args(sp.expand(expr))
-        for _ in range(points):
-            point = {s: sp.Float(v, 30) for s, v in self.sample_point(rng).items()}
-            value = sp.N(expr.xreplace(point), 30)
-            size = sum((abs(sp.N(x.xreplace(point), 30)) for x in terms), sp.S.Zero)
-            if not value.is_number or value.has(sp.zoo, sp.nan, sp.oo, -sp.oo):
-                return False
-            if abs(value) > sp.Float(10) ** -20 * (1 + size):
-                return False
-        return True
+    def vanishes_in_domains(self, expr: sp.Expr) -> bool:
+        """Whether expr is 0 wherever the domains let the coordinates go (numerically): a
+        constraint with √ or atan2 that holds on the physical branch only."""
+        return vanishes_within(expr, self.sample_box)
 
     @cached_property
     def namespace(self) -> SimpleNamespace:
@@ -411,6 +338,8 @@ class SceneVariant:
                 eqs[f"{axis}_{b.name}"] = value
             if isinstance(b, RigidBody):
                 eqs[f"phi_{b.name}"] = b.angle
+            if isinstance(b, SpatialRigidBody):
+                eqs |= {f"{a}_{b.name}": e for a, e in zip(b.ANGLES, b.angles, strict=True)}
         return eqs
 
     @cached_property
@@ -419,6 +348,7 @@ class SceneVariant:
         per_body = {}
         for b in self.bodies:
             names = list(AXES) + (["phi"] if isinstance(b, RigidBody) else [])
+            names += list(SpatialRigidBody.ANGLES) if isinstance(b, SpatialRigidBody) else []
             symbols = {a: sp.Symbol(f"{a}_{b.name}", real=True) for a in names}
             per_body[b.name] = _Declared(self.scene.id, f"c.{b.name}", **symbols)
         return _Declared(self.scene.id, "c", **per_body)
@@ -455,6 +385,9 @@ class SceneVariant:
                 subs[getattr(c, axis)] = value
             if isinstance(b, RigidBody):
                 subs[c.phi] = b.angle
+            if isinstance(b, SpatialRigidBody):
+                for a, e in zip(b.ANGLES, b.angles, strict=True):
+                    subs[getattr(c, a)] = e
         return subs
 
     def validate(self) -> None:
@@ -494,9 +427,13 @@ class SceneVariant:
                 continue
             residual = sp.simplify(sp.expand_trig(self.within_domains(f.xreplace(subs))))
             if residual != 0 and not self.vanishes_in_domains(residual):
-                hint = "" if self.coordinate_domains else (
-                    " (if it holds where the coordinates live, declare their domains: "
-                    'domains = { r = "positive" })'
+                hint = (
+                    ""
+                    if self.coordinate_domains or not branched(residual)
+                    else (
+                        " (if it holds where the coordinates live, declare their domains: "
+                        'domains = { r = "positive" })'
+                    )
                 )
                 problems.append(
                     f"constraints: constraint {i + 1} ({f} = 0) is not satisfied by the "
@@ -659,38 +596,3 @@ class SceneVariant:
     def statement(self) -> str:
         """The problem text with this variant's coordinate names and option words filled in."""
         return self.scene.statement.format(**self.statement_fill)
-
-
-def _body_fields(body: Body) -> list[tuple[str, tuple]]:
-    """A body's declared expressions by field: position, mass, and a rigid body's inertia and
-    angle."""
-    fields = [("position", tuple(body.position)), ("mass", (body.mass,))]
-    if isinstance(body, RigidBody):
-        fields += [("inertia", (body.inertia,)), ("angle", (body.angle,))]
-    return fields
-
-
-def _normalized(body: Body) -> Body:
-    """A declared body with every field a sympy expression (positions, mass, inertia, angle)."""
-    fields = {**body.__dict__, "position": tuple(as_expr(x) for x in body.position)}
-    fields["mass"] = as_expr(body.mass)
-    if isinstance(body, RigidBody):
-        fields["inertia"], fields["angle"] = as_expr(body.inertia), as_expr(body.angle)
-    return type(body)(**fields)
-
-
-def _tidy(expr: sp.Expr) -> sp.Expr:
-    """T as the lecture writes it: sin² + cos² collapsed, cos a cos b + sin a sin b → cos(a − b).
-
-    A targeted rewrite (Pythagoras both ways, keep the shorter; then fu's TR10i) instead of
-    `trigsimp`, which is ~20× slower and dominated the derivation time of every scene.
-    """
-    expanded = sp.expand(expr)
-    angles = {f.args[0] for f in expanded.atoms(sp.sin, sp.cos)}
-    if not angles:
-        return expanded
-    via_sin = sp.expand(expanded.xreplace({sp.cos(u) ** 2: 1 - sp.sin(u) ** 2 for u in angles}))
-    via_cos = sp.expand(expanded.xreplace({sp.sin(u) ** 2: 1 - sp.cos(u) ** 2 for u in angles}))
-    shortest = min((expanded, via_sin, via_cos), key=sp.count_ops)
-    combined = sp.expand(TR10i(shortest))
-    return combined if sp.count_ops(combined) <= sp.count_ops(shortest) else shortest

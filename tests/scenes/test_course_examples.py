@@ -24,6 +24,10 @@ PARTS = {
         "dof", "coordinates", "transformation", "T", "V", "lagrangian", "eom", "momenta",
         "cyclic", "conserved",
     ],
+    "symmetric_top": [
+        "dof", "coordinates", "transformation", "T", "V", "lagrangian", "eom", "momenta",
+        "cyclic", "conserved",
+    ],
     "damped_oscillator": [
         "dof", "transformation", "T", "V", "lagrangian", "eom", "momenta", "cyclic", "conserved",
         {"quantity": "decay_rate"},
@@ -96,13 +100,19 @@ def test_the_damped_oscillators_key_says_none_and_energy_is_refused(generated):
     conserved = damped[damped.index("### Conserved quantities") :].split("###")[1]
     assert conserved.split("\n", 1)[1].strip() == "none"
     sheet = _key_sheet(generated, "s001")
-    x = re.search(r"\[problem2\]\ndof = '1'\ntransformation = '''\nx_mass = (\w+)", sheet)[1]
+    number = list(PARTS).index("damped_oscillator") + 1
+    first = f"[problem{number}]\ndof = '1'\ntransformation = '''\nx_mass = "
+    x = sheet[sheet.index(first) + len(first) :].split("\n", 1)[0]  # x, q or u
     before = "conserved = '''\nnone\n'''"
     assert sheet.count(before) == 1
     wrong = sheet.replace(before, f"conserved = 'm*{x}_dot^2/2 + k*{x}^2/2'")
     out = _grade(generated, {"s001": wrong}, "energy")
     result = json.loads((out / "students" / "s001.json").read_text())
-    part = next(p for p in result["problems"][1]["parts"] if p["key"] == "conserved")
+    part = next(
+        p
+        for p in result["problems"][list(PARTS).index("damped_oscillator")]["parts"]
+        if p["key"] == "conserved"
+    )
     assert part["verdict"] == "incorrect", part
     assert "not conserved" in " ".join(part["feedback"])
 

@@ -106,7 +106,7 @@ def test_any_positive_domain_makes_a_distance_constraint_hold(scale, domain):
             scene_from_text(RADIAL.format(domain=bad, scale=scale), "radial")
 
 
-# --- dissipation and generalized forces -------------------------------------------------------------
+# --- dissipation and generalized forces ---------------------------------------------------
 
 
 def test_the_damped_oscillators_closed_form_solves_the_derived_equation():

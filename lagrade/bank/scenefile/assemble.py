@@ -29,6 +29,7 @@ from lagrade.mechanics.scene import (
     Quantity,
     RigidBody,
     Scene,
+    SpatialRigidBody,
 )
 
 
@@ -41,9 +42,19 @@ class _Body:
     position: tuple[sp.Expr, ...]
     inertia: sp.Expr | None = None
     angle: sp.Expr | None = None
+    moments: tuple[sp.Expr, ...] | None = None
+    angles: tuple[sp.Expr, ...] | None = None
 
-    def make(self, put: Callable[[sp.Expr], sp.Expr]) -> PointMass | RigidBody:
+    def make(self, put: Callable[[sp.Expr], sp.Expr]) -> PointMass | RigidBody | SpatialRigidBody:
         position = tuple(put(x) for x in self.position)
+        if self.moments is not None and self.angles is not None:
+            return SpatialRigidBody(
+                self.name,
+                put(self.mass),
+                position,  # type: ignore[arg-type]
+                tuple(put(x) for x in self.moments),  # type: ignore[arg-type]
+                tuple(put(x) for x in self.angles),  # type: ignore[arg-type]
+            )
         if self.inertia is None or self.angle is None:
             return PointMass(self.name, put(self.mass), position)
         return RigidBody(self.name, put(self.mass), position, put(self.inertia), put(self.angle))  # type: ignore[arg-type]
@@ -181,6 +192,13 @@ def assemble(scene_id: str, d: Declaration, source: str, problems: Problems) -> 
 
 
 def _read_body(b: BodyDecl, reader: Reader) -> _Body | None:
+    if b.moments is not None and b.angles is not None:
+        read = [reader.read(x, "body") for x in [b.mass, *b.position, *b.moments, *b.angles]]
+        if any(x is None for x in read):
+            return None
+        return _Body(
+            b.name, read[0], tuple(read[1:4]), moments=tuple(read[4:7]), angles=tuple(read[7:10])
+        )  # type: ignore[arg-type]
     fields = [b.mass, *b.position] + ([b.inertia, b.angle] if b.inertia is not None else [])
     read = [reader.read(x, "body") for x in fields]
     if any(x is None for x in read):
@@ -219,6 +237,9 @@ def _potential(
             cartesian[sp.Symbol(f"{axis}_{b.name}", real=True)] = value
         if isinstance(b, RigidBody):
             cartesian[sp.Symbol(f"phi_{b.name}", real=True)] = b.angle
+        if isinstance(b, SpatialRigidBody):
+            for a, e in zip(b.ANGLES, b.angles, strict=True):
+                cartesian[sp.Symbol(f"{a}_{b.name}", real=True)] = e
     gravity = sp.Symbol("gravity", real=True)
     if V.has(gravity):
         cartesian[gravity] = sum((b.mass * g * b.position[-1] for b in bodies), sp.S.Zero)

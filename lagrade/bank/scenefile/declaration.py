@@ -39,7 +39,7 @@ TOP_KEYS = (
     "figure",
 )
 PARAMETER_KEYS = ("domain", "unit", "values", "description")
-BODY_KEYS = ("mass", "position", "inertia", "angle")
+BODY_KEYS = ("mass", "position", "inertia", "angle", "angles")
 CHOICE_KEYS = ("wording", "let", "bodies", "constraints", "figure")
 QUANTITY_KEYS = ("description", "value", "unit", "check")
 CHECK_KEYS = ("at", "accelerations", "frequencies")
@@ -77,6 +77,9 @@ class BodyDecl:
     position: list[Text]
     inertia: Text | None = None
     angle: Text | None = None
+    #: A rigid body in space: its principal moments (I₁, I₂, I₃) and Z-X-Z Euler angles.
+    moments: list[Text] | None = None
+    angles: list[Text] | None = None
 
 
 @dataclass
@@ -138,6 +141,8 @@ class Declaration:
 def cartesian_axes(body: BodyDecl) -> tuple[str, ...]:
     """The Cartesian names a body brings (`x`, `y`, `z`, and `phi` for a rigid body), as the
     transformation part names them (`x_bead`, `phi_wheel`)."""
+    if body.angles is not None:
+        return ("x", "y", "z", "phi", "theta", "psi")
     return ("x", "y", "z", "phi") if body.inertia is not None else ("x", "y", "z")
 
 
@@ -322,7 +327,9 @@ def _dissipation(data: Mapping[str, Any], d: Declaration, problems: Problems) ->
     for name, value in table.items():
         key = f"forces.{name}"
         if name not in d.coordinates:
-            problems.add(key, f"{_shown(name)} is not a coordinate (a force is given per coordinate)")
+            problems.add(
+                key, f"{_shown(name)} is not a coordinate (a force is given per coordinate)"
+            )
         elif (text := expression(value, key, problems)) is not None:
             d.forces[name] = text
 
@@ -418,6 +425,11 @@ def _bodies(table: Mapping[str, Any], where: str, problems: Problems) -> list[Bo
             for i, x in enumerate(raw, 1):
                 if (text := expression(x, f"{key}.position[{i}]", problems)) is not None:
                     position.append(text)
+        if "angles" in spec:  # a rigid body in space
+            spatial = _spatial(spec, key, raw, problems)
+            if mass is not None and spatial is not None and len(position) == 3:
+                bodies.append(BodyDecl(name, key, mass, position, None, None, *spatial))
+            continue
         rigid = [k for k in ("inertia", "angle") if k in spec]
         inertia = angle = None
         if len(rigid) == 1:
@@ -431,6 +443,34 @@ def _bodies(table: Mapping[str, Any], where: str, problems: Problems) -> list[Bo
         if mass is not None and len(position) == len(raw or ()) and position:
             bodies.append(BodyDecl(name, key, mass, position, inertia, angle))
     return bodies
+
+
+def _spatial(
+    spec: Mapping[str, Any], key: str, position: Any, problems: Problems
+) -> tuple[list[Text], list[Text]] | None:
+    """A rigid body in space: `inertia` its 3 principal moments about the centre of mass,
+    `angles` its 3 Z-X-Z Euler angles (φ, θ, ψ), `position` its centre of mass (x, y, z)."""
+    found = []
+    for name, what in (("inertia", "principal moments I_1, I_2, I_3"), ("angles", "Euler angles")):
+        raw = spec.get(name)
+        if not isinstance(raw, list) or len(raw) != 3:
+            problems.add(
+                f"{key}.{name}",
+                f"a rigid body in space declares a list of 3 {what} (angles: phi, theta, psi, "
+                "turned about z, then the new x, then the body's axis 3)",
+            )
+            return None
+        texts = [expression(x, f"{key}.{name}[{i}]", problems) for i, x in enumerate(raw, 1)]
+        if None in texts:
+            return None
+        found.append(texts)
+    if "angle" in spec:
+        problems.add(f"{key}.angle", "a rigid body in space declares angles, not angle")
+        return None
+    if not isinstance(position, list) or len(position) != 3:
+        problems.add(f"{key}.position", "a rigid body in space: give x, y and z")
+        return None
+    return found[0], found[1]  # type: ignore[return-value]
 
 
 def _expressions(raw: Any, key: str, problems: Problems) -> list[Text]:
