@@ -28,6 +28,10 @@ PARTS = {
         "dof", "coordinates", "transformation", "T", "V", "lagrangian", "eom", "momenta",
         "cyclic", "conserved",
     ],
+    "cycloid": [
+        "dof", "transformation", "T", "V", "lagrangian", "eom", "momenta", "conserved",
+        {"quantity": "period"},
+    ],
     "damped_oscillator": [
         "dof", "transformation", "T", "V", "lagrangian", "eom", "momenta", "cyclic", "conserved",
         {"quantity": "decay_rate"},
