@@ -46,6 +46,9 @@ def body_disc(ax: Any, unit: float, g: Geometry, i: int, b: Any) -> None:
 
     at = g.at(i)[0]
     r = body_radius(g, i, unit)
+    if b.mass == 0:  # a massless helper (a moving pulley's axle): a small ring, no label
+        ax.add_patch(Circle(tuple(at), 0.02 * unit, facecolor="white", edgecolor=INK, zorder=4))
+        return
     if isinstance(b, SpatialRigidBody):
         spinning_disc(ax, g, b, at, r)
     elif isinstance(b, RigidBody):
