@@ -164,3 +164,14 @@ def test_the_judge_holds_a_students_equation_to_the_damped_motion():
     assert energy.status == "incorrect" and "not conserved" in " ".join(energy.feedback)
     # L is still L: the dissipation is not part of it
     assert check(problem, "lagrangian", "m x_dot^2/2 - k x^2/2", time_limit=None).score == 1
+
+
+def test_other_coordinates_are_not_followed_where_dissipation_acts():
+    """F is written in the statement's x: a student measuring x the other way is told that the
+    later parts are judged in the statement's coordinates."""
+    problem = {"scene": "damped_oscillator", "scene_text": DAMPED}
+    verdict = check(problem, "transformation", ["x_mass = -x", "y_mass = 0"], time_limit=None)
+    assert verdict.status == "correct"
+    assert (
+        "dissipation and forces are written in the statement's coordinates" in (verdict.feedback[0])
+    )

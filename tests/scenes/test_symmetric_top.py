@@ -98,3 +98,17 @@ def test_a_body_in_space_declares_three_moments_and_three_angles(change, message
     assert change[0] in text
     with pytest.raises(SceneFileError, match=message):
         scene_from_text(text.replace(*change), "top_broken")
+
+
+def test_a_spin_measured_the_other_way_is_followed():
+    """The student's own coordinates (ψ the other way): T is the body's T on their angles."""
+    from lagrade.judge.check import check
+
+    problem = {"scene": "symmetric_top", "scene_text": FILE.read_text()}
+    mine = ["x_top = l sin(theta) sin(phi)", "y_top = -l sin(theta) cos(phi)"]
+    mine += ["z_top = l cos(theta)", "phi_top = phi", "theta_top = theta", "psi_top = -psi"]
+    L = "I_1/2 (theta_dot^2 + phi_dot^2 sin(theta)^2) + I_3/2 (phi_dot cos(theta) - psi_dot)^2"
+    L += " - M g l cos(theta)"
+    verdict = check(problem, "lagrangian", L, given={"transformation": mine}, time_limit=None)
+    assert verdict.status == "correct", verdict.feedback
+    assert "Judged in your coordinates" in verdict.feedback[0]
