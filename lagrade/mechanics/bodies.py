@@ -13,6 +13,8 @@ from sympy.simplify.fu import TR10i
 
 from lagrade.mechanics import lagrange as mech
 
+AXES = ("x", "y", "z")
+
 
 def as_expr(value: object) -> sp.Expr:
     """A scene declaration's value as a sympy expression, without evaluating text.
@@ -110,6 +112,12 @@ class SpatialRigidBody:
 
 
 Body = PointMass | RigidBody | SpatialRigidBody
+
+
+def gravity(g: sp.Expr, bodies: Sequence[Body], axis: str = "y") -> sp.Expr:
+    """V = Σ m g h for uniform gravity along −axis (h is the `axis` component of each position)."""
+    index = AXES.index(axis)
+    return sum((b.mass * g * b.position[index] for b in bodies), sp.S.Zero)
 
 
 def _body_fields(body: Body) -> list[tuple[str, tuple]]:

@@ -12,13 +12,13 @@ from __future__ import annotations
 import math
 import random
 import re
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from fractions import Fraction
 
 import sympy as sp
 
-from lagrade.errors import DomainError
+from lagrade.errors import DomainError, SceneError
 
 _BOUND = re.compile(
     r"""^\s*(?P<sign>[+-])?\s*
@@ -142,29 +142,42 @@ NONNEGATIVE = Domain.parse("nonnegative")
 REAL = Domain.parse("real")
 
 
-def within(expr: sp.Expr, domains: Mapping[sp.Symbol, Domain]) -> sp.Expr:
-    """expr as the symbols' domains let sympy simplify it on construction: √(r²) = r and
-    |r| = r for r > 0 (each symbol with a signed domain stands in for a symbol carrying that
-    assumption, and back)."""
+def within(
+    expr: sp.Expr,
+    domains: Mapping[sp.Symbol, Domain],
+    then: Callable[[sp.Expr], sp.Expr] = lambda e: e,
+) -> sp.Expr:
+    """expr as the symbols' domains let sympy simplify it: √(r²) = r and |r| = r for r > 0
+    (each symbol with a signed domain stands in for a symbol carrying that assumption while
+    `then` works on it, and back)."""
     swap = {
         s: sp.Dummy(s.name, **d.assumptions)
         for s, d in domains.items()
         if "real" not in d.assumptions
     }
     if not swap:
-        return expr
-    return expr.xreplace(swap).xreplace({d: s for s, d in swap.items()})
+        return then(expr)
+    return then(expr.xreplace(swap)).xreplace({d: s for s, d in swap.items()})
 
 
 def vanishes_within(
-    expr: sp.Expr, box: Mapping[sp.Symbol, tuple[float, float]], points: int = 8
+    expr: sp.Expr,
+    box: Mapping[sp.Symbol, tuple[float, float]],
+    relations: Sequence[sp.Expr] = (),
+    points: int = 8,
 ) -> bool:
-    """Whether expr is 0 at `points` seeded points of `box` (each symbol uniform in its range),
-    to 30 digits relative to the size of its terms; a complex or infinite value is not 0."""
+    """Whether expr is 0 at `points` seeded points of `box` (each symbol uniform in its range,
+    the `relations` kept), to 30 digits relative to the size of its terms; a complex or
+    infinite value is not 0."""
     rng = random.Random(0)
     terms = sp.Add.make_args(sp.expand(expr))
     for _ in range(points):
-        point = {s: sp.Float(rng.uniform(lo, hi), 30) for s, (lo, hi) in box.items()}
+        for _draw in range(64):
+            point = {s: sp.Float(rng.uniform(lo, hi), 30) for s, (lo, hi) in box.items()}
+            if keeps(relations, point):
+                break
+        else:
+            return False  # the relations keep no point of the box
         value = sp.N(expr.xreplace(point), 30)
         if not value.is_number or value.has(sp.zoo, sp.nan, sp.oo, -sp.oo):
             return False
@@ -179,3 +192,39 @@ def branched(expr: sp.Expr) -> bool:
     settle."""
     roots = any(p.exp.is_Rational and not p.exp.is_Integer for p in expr.atoms(sp.Pow))
     return roots or expr.has(sp.Abs, sp.sign, sp.atan2, sp.arg, sp.Piecewise)
+
+
+def keeps(relations: Sequence[sp.Expr], values: Mapping[sp.Symbol, float]) -> bool:
+    """Each relation (an expression that must be positive) is positive at `values`, where it
+    names only parameters that have one (a relation with a symbolic parameter is the judge's)."""
+    for g in relations:
+        if g.free_symbols <= set(values) and not float(g.xreplace(values)) > 0:
+            return False
+    return True
+
+
+@dataclass(frozen=True)
+class Parameter:
+    """A named constant of a scene, with the domain it lives in and, for numeric variants, its SI
+    unit and a pool of values to draw from (empty pool: the parameter stays symbolic)."""
+
+    name: str
+    domain: Domain
+    unit: str = ""
+    values: tuple[float, ...] = ()
+    description: str = ""
+
+
+def param(
+    name: str,
+    domain: str | Domain | None = "positive",
+    unit: str = "",
+    values: Sequence[float] = (),
+    description: str = "",
+) -> Parameter:
+    """Declare a parameter; `domain` is `positive`, `nonnegative`, `real` or an interval."""
+    if domain is None:
+        raise SceneError(
+            "?", [f"parameter {name!r}: no domain (declare positive, real or an interval)"]
+        )
+    return Parameter(name, Domain.parse(domain), unit, tuple(values), description)

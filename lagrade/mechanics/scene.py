@@ -24,6 +24,7 @@ from lagrade.mechanics import lagrange as mech
 
 # the bodies live in `bodies`; their names stay importable from here, where scenes are made
 from lagrade.mechanics.bodies import (  # noqa: F401
+    AXES,
     Body,
     PointMass,
     RigidBody,
@@ -32,47 +33,26 @@ from lagrade.mechanics.bodies import (  # noqa: F401
     _normalized,
     _tidy,
     as_expr,
+    gravity,
 )
 from lagrade.mechanics.dissipation import DissipativeSystem
-from lagrade.mechanics.domains import Domain, branched, vanishes_within, within
+from lagrade.mechanics.domains import (  # noqa: F401 (Parameter, param: made here)
+    Domain,
+    Parameter,
+    branched,
+    keeps,
+    param,
+    vanishes_within,
+    within,
+)
 from lagrade.mechanics.figure import FigureHint
 
-AXES = ("x", "y", "z")
+#: Draws from the value pools before a scene's relations are taken as impossible to keep.
+RELATION_DRAWS = 64
+
+
 #: What a scene given by its Lagrangian alone can be asked (everything that follows from L).
 LAGRANGIAN_PARTS = ("lagrangian", "eom", "momenta", "cyclic", "conserved", "expression")
-
-
-@dataclass(frozen=True)
-class Parameter:
-    """A named constant of a scene, with the domain it lives in and, for numeric variants, its SI
-    unit and a pool of values to draw from (empty pool: the parameter stays symbolic)."""
-
-    name: str
-    domain: Domain
-    unit: str = ""
-    values: tuple[float, ...] = ()
-    description: str = ""
-
-
-def param(
-    name: str,
-    domain: str | Domain | None = "positive",
-    unit: str = "",
-    values: Sequence[float] = (),
-    description: str = "",
-) -> Parameter:
-    """Declare a parameter; `domain` is `positive`, `nonnegative`, `real` or an interval."""
-    if domain is None:
-        raise SceneError(
-            "?", [f"parameter {name!r}: no domain (declare positive, real or an interval)"]
-        )
-    return Parameter(name, Domain.parse(domain), unit, tuple(values), description)
-
-
-def gravity(g: sp.Expr, bodies: Sequence[Body], axis: str = "y") -> sp.Expr:
-    """V = Σ m g h for uniform gravity along −axis (h is the `axis` component of each position)."""
-    index = AXES.index(axis)
-    return sum((b.mass * g * b.position[index] for b in bodies), sp.S.Zero)
 
 
 @dataclass(frozen=True)
@@ -138,6 +118,7 @@ class Scene:
     figure: Callable[[Mapping[str, str]], FigureHint] = lambda options: FigureHint()
     source: str = ""
     coordinate_domains: Mapping[str, Domain] = field(default_factory=dict)
+    relations: tuple[sp.Expr, ...] = ()
     dissipation: Callable[[SimpleNamespace], sp.Expr] | None = None
     forces: Callable[[SimpleNamespace], Mapping[str, sp.Expr]] | None = None
 
@@ -194,8 +175,19 @@ class Scene:
         options = {o: rng.choice(choices) for o, choices in sorted(self.options.items())}
         values = {}
         if numeric:
-            values = {p.name: rng.choice(p.values) for p in self.parameters if p.values}
+            values = self._values(rng)
         return SceneVariant(self, seed=seed, names=names, options=options, values=values)
+
+    def _values(self, rng: random.Random) -> dict[str, float]:
+        """Parameter values drawn from the pools, again until they keep the scene's relations
+        (b < R; a scene without relations draws once, as it always has)."""
+        symbols = {p.name: p.domain.symbol(p.name) for p in self.parameters}
+        for _ in range(RELATION_DRAWS):
+            values = {p.name: rng.choice(p.values) for p in self.parameters if p.values}
+            if keeps(self.relations, {symbols[n]: v for n, v in values.items()}):
+                return values
+        kept = ", ".join(f"{r} > 0" for r in self.relations)
+        raise SceneError(self.id, [f"relations: no values drawn from the pools keep {kept}"])
 
 
 class _Declared(SimpleNamespace):
@@ -273,10 +265,12 @@ class SceneVariant:
         declared without one is real)."""
         return {self.names[c]: d for c, d in self.scene.coordinate_domains.items()}
 
-    def within_domains(self, expr: sp.Expr) -> sp.Expr:
-        """expr simplified as the coordinates' domains allow (√(r²) = r for r > 0)."""
+    def within_domains(self, expr: sp.Expr, then=lambda e: e) -> sp.Expr:
+        """expr simplified as the coordinates' domains allow (√(r²) = r for r > 0), and by
+        `then` under their assumptions."""
         declared = self.coordinate_domains
-        return within(expr, {j.q: declared[j.name] for j in self.jets if j.name in declared})
+        signs = {j.q: declared[j.name] for j in self.jets if j.name in declared}
+        return within(expr, signs, then)
 
     @cached_property
     def sample_box(self) -> dict[sp.Symbol, tuple[float, float]]:
@@ -293,7 +287,7 @@ class SceneVariant:
     def vanishes_in_domains(self, expr: sp.Expr) -> bool:
         """Whether expr is 0 wherever the domains let the coordinates go (numerically): a
         constraint with √ or atan2 that holds on the physical branch only."""
-        return vanishes_within(expr, self.sample_box)
+        return vanishes_within(expr, self.sample_box, self.scene.relations)
 
     @cached_property
     def namespace(self) -> SimpleNamespace:
@@ -425,7 +419,9 @@ class SceneVariant:
         for i, (label, f) in enumerate(self.constraints):
             if label != "declared":
                 continue
-            residual = sp.simplify(sp.expand_trig(self.within_domains(f.xreplace(subs))))
+            residual = self.within_domains(
+                f.xreplace(subs), lambda e: sp.simplify(sp.expand_trig(e))
+            )
             if residual != 0 and not self.vanishes_in_domains(residual):
                 hint = (
                     ""

@@ -175,3 +175,36 @@ def test_other_coordinates_are_not_followed_where_dissipation_acts():
     assert (
         "dissipation and forces are written in the statement's coordinates" in (verdict.feedback[0])
     )
+
+
+# --- relations between parameters -------------------------------------------------------------
+
+LIGHTER = ATWOOD.replace("[parameters]", 'relations = ["m < M"]\n\n[parameters]').replace(
+    "values = [0.5, 1.0, 1.5]", "values = [0.5, 1.5, 2.5, 3.5]"
+)
+
+
+def test_every_variant_and_every_judged_point_keeps_the_relations():
+    scene = scene_from_text(LIGHTER, "lighter")
+    drawn = [scene.variant(seed).values for seed in range(40)]
+    assert all(v["m"] < v["M"] for v in drawn)
+    assert {v["m"] for v in drawn} == {0.5, 1.5, 2.5, 3.5}  # every pool value still drawn
+    problem = build_problem({"scene": "lighter", "scene_text": LIGHTER, "seed": 4})
+    for part in ("lagrangian", "eom"):
+        env = problem.points(part).env
+        assert (env[problem.parameters["m"]] < env[problem.parameters["M"]]).all()
+
+
+@pytest.mark.parametrize(
+    "relation, message",
+    [
+        ('"m > 10 M"', "no values drawn from the pools keep"),
+        ('"m = M"', "is not one inequality"),
+        ('"m < M < l"', "is not one inequality"),
+        ('"m < r"', "uses r, a coordinate"),
+        ("3", "is not an inequality"),
+    ],
+)
+def test_a_relation_is_one_inequality_in_the_parameters_the_pools_can_keep(relation, message):
+    with pytest.raises(SceneFileError, match=message):
+        scene_from_text(LIGHTER.replace('"m < M"', relation), "lighter")

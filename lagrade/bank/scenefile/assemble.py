@@ -117,6 +117,10 @@ def assemble(scene_id: str, d: Declaration, source: str, problems: Problems) -> 
     _body_names(d, problems)
     potential = reader.read(d.potential, "potential", scene_bodies)
     lagrangian = reader.read(d.lagrangian, "lagrangian")
+    relations = [
+        (reader.read(small, "relation"), reader.read(large, "relation"))
+        for small, large in d.relations
+    ]
     dissipation = reader.read(d.dissipation, "dissipation")
     forces = {c: reader.read(x, "dissipation") for c, x in d.forces.items()}
     constraints = [reader.read(x, "constraint", scene_bodies) for x in d.constraints]
@@ -133,6 +137,8 @@ def assemble(scene_id: str, d: Declaration, source: str, problems: Problems) -> 
     if problems.blocking or None in bodies or None in constraints or None in quantities.values():
         return None
     if (d.dissipation is not None and dissipation is None) or None in forces.values():
+        return None
+    if any(None in pair for pair in relations):
         return None
     if any(
         None in c.constraints or None in c.bodies for cs in choices.values() for c in cs.values()
@@ -165,6 +171,7 @@ def assemble(scene_id: str, d: Declaration, source: str, problems: Problems) -> 
             statement=d.statement,
             coordinates=tuple(d.coordinates),
             coordinate_domains=dict(d.domains),
+            relations=tuple(large - small for small, large in relations),  # type: ignore[operator]
             parameters=parameters,
             renames=dict(d.renames),
             options={o: tuple(c.name for c in decls) for o, decls in d.options.items()},

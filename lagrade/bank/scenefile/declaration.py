@@ -28,6 +28,7 @@ TOP_KEYS = (
     "domains",
     "renames",
     "parameters",
+    "relations",
     "bodies",
     "potential",
     "lagrangian",
@@ -56,6 +57,7 @@ LIMITS = {
     "quantities": 32,
     "tags": 16,
     "renames": 8,
+    "relations": 16,
 }
 MAX_TEXT = 5_000  # characters of a title, statement, wording or description
 MAX_VALUES = 64  # numbers in a parameter's value pool
@@ -126,6 +128,8 @@ class Declaration:
     domains: dict[str, Domain] = field(default_factory=dict)
     renames: dict[str, tuple[str, ...]] = field(default_factory=dict)
     parameters: list[ParameterDecl] = field(default_factory=list)
+    #: Inequalities between parameters (`b < R`), each as (smaller side, larger side).
+    relations: list[tuple[Text, Text]] = field(default_factory=list)
     bodies: list[BodyDecl] = field(default_factory=list)
     potential: Text | None = None
     lagrangian: Text | None = None
@@ -251,6 +255,7 @@ def read_declaration(data: Mapping[str, Any], problems: Problems) -> Declaration
     _coordinates(data, d, problems)
     _domains(data, d, problems)
     _parameters(data, d, problems)
+    _relations(data, d, problems)
     _renames(data, d, problems)
     raw_bodies = data.get("bodies", {})
     if (table := _table(raw_bodies, "bodies", problems)) is not None:
@@ -316,6 +321,27 @@ def _domains(data: Mapping[str, Any], d: Declaration, problems: Problems) -> Non
             d.domains[name] = Domain.parse(text)
         except LagradeError as error:
             problems.add(key, str(error))
+
+
+_INEQUALITY = re.compile(r"(<=|>=|<|>)")
+
+
+def _relations(data: Mapping[str, Any], d: Declaration, problems: Problems) -> None:
+    """`relations = ["b < R"]`: each one inequality between two expressions in the parameters
+    (`<` and `<=` alike: a drawn value never lands on the boundary)."""
+    items = _list(data.get("relations", []), "relations", problems, LIMITS["relations"]) or []
+    for i, raw in enumerate(items, 1):
+        key = f"relations[{i}]"
+        if not isinstance(raw, str):
+            problems.add(key, f'{_shown(raw)} is not an inequality such as "b < R"')
+            continue
+        parts = _INEQUALITY.split(raw)
+        if len(parts) != 3 or not parts[0].strip() or not parts[2].strip():
+            problems.add(key, f'{_shown(raw)} is not one inequality such as "b < R"')
+            continue
+        left, sign, right = parts
+        small, large = (left, right) if sign.startswith("<") else (right, left)
+        d.relations.append((Text(key, small), Text(key, large)))
 
 
 def _dissipation(data: Mapping[str, Any], d: Declaration, problems: Problems) -> None:

@@ -30,6 +30,7 @@ ALLOWED = {
     "constraint": {"parameter", "time", "let", "cartesian"},
     "let": {"coordinate", "velocity", "parameter", "time"},
     "quantity": {"parameter", "let"},
+    "relation": {"parameter"},
     "figure": {"coordinate", "parameter", "time", "let"},
     "state": {"coordinate", "velocity", "parameter", "let", "quantity"},
 }
@@ -57,6 +58,7 @@ _FIELD = {
     "let": "a name an option binds is an expression in the coordinates, velocities, parameters "
     "and t",
     "quantity": "a quantity is a closed form in the parameters",
+    "relation": "a relation is an inequality between expressions in the parameters",
     "figure": "a figure's expressions use the coordinates, parameters, t and the names options "
     "bind",
     "state": "a state gives coordinates and velocities in the parameters and quantities",

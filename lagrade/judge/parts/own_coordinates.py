@@ -154,6 +154,7 @@ def _choose(problem: Problem, positions: Mapping[str, sp.Expr], canonical: str) 
                 problem.values,
                 lagrangian=variant.lagrangian,
                 variant=variant,
+                relations=problem.relations,
                 unit=problem.unit,
                 budget=budget,
             )
