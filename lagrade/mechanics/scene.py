@@ -119,6 +119,7 @@ class Scene:
     source: str = ""
     coordinate_domains: Mapping[str, Domain] = field(default_factory=dict)
     relations: tuple[sp.Expr, ...] = ()
+    rename_sets: tuple[tuple[str, ...], ...] = ()
     dissipation: Callable[[SimpleNamespace], sp.Expr] | None = None
     forces: Callable[[SimpleNamespace], Mapping[str, sp.Expr]] | None = None
 
@@ -171,7 +172,10 @@ class Scene:
         """A reproducible variant: coordinate names, options and (if `numeric`) parameter values
         drawn from the declared pools with a generator seeded by (scene id, seed)."""
         rng = random.Random(f"{self.id}:{seed}")
-        names = {c: rng.choice(choices) for c, choices in sorted(self.renames.items())}
+        if self.rename_sets:  # one consistent set of names (x, y or q_1, q_2)
+            names = dict(zip(self.coordinates, rng.choice(self.rename_sets), strict=True))
+        else:
+            names = {c: rng.choice(choices) for c, choices in sorted(self.renames.items())}
         options = {o: rng.choice(choices) for o, choices in sorted(self.options.items())}
         values = {}
         if numeric:

@@ -208,3 +208,25 @@ def test_every_variant_and_every_judged_point_keeps_the_relations():
 def test_a_relation_is_one_inequality_in_the_parameters_the_pools_can_keep(relation, message):
     with pytest.raises(SceneFileError, match=message):
         scene_from_text(LIGHTER.replace('"m < M"', relation), "lighter")
+
+
+def test_renames_as_consistent_sets():
+    """`renames` as sets: a variant takes one set whole, never r beside phi."""
+    text = ATWOOD.replace(
+        'renames = { theta = ["theta", "phi"] }', 'renames = [["r", "theta"], ["rho", "phi"]]'
+    )
+    scene = scene_from_text(text, "sets")
+    drawn = {tuple(scene.variant(seed).names.values()) for seed in range(30)}
+    assert drawn == {("r", "theta"), ("rho", "phi")}
+    assert scene.renames == {"r": ("r", "rho"), "theta": ("theta", "phi")}
+    assert {n: d.text for n, d in scene.variant(1).coordinate_domains.items()} in (
+        {"r": "positive"},
+        {"rho": "positive"},
+    )
+    for sets, message in [
+        ('[["r"], ["rho"]]', "one name per coordinate"),
+        ('[["rho", "phi"], ["r", "theta"]]', "the first set must be the coordinates"),
+        ('[["r", "theta"], ["rho", "rho"]]', "given twice"),
+    ]:
+        with pytest.raises(SceneFileError, match=message):
+            scene_from_text(text.replace('[["r", "theta"], ["rho", "phi"]]', sets), "sets")

@@ -174,6 +174,7 @@ def assemble(scene_id: str, d: Declaration, source: str, problems: Problems) -> 
             relations=tuple(large - small for small, large in relations),  # type: ignore[operator]
             parameters=parameters,
             renames=dict(d.renames),
+            rename_sets=tuple(d.rename_sets),
             options={o: tuple(c.name for c in decls) for o, decls in d.options.items()},
             quantities=tuple(
                 Quantity(

@@ -127,6 +127,8 @@ class Declaration:
     #: Where each coordinate lives (`r = "positive"`): the coordinates without one are real.
     domains: dict[str, Domain] = field(default_factory=dict)
     renames: dict[str, tuple[str, ...]] = field(default_factory=dict)
+    #: Renames as consistent sets (`[["x", "y"], ["q_1", "q_2"]]`): a variant takes one whole.
+    rename_sets: list[tuple[str, ...]] = field(default_factory=list)
     parameters: list[ParameterDecl] = field(default_factory=list)
     #: Inequalities between parameters (`b < R`), each as (smaller side, larger side).
     relations: list[tuple[Text, Text]] = field(default_factory=list)
@@ -405,6 +407,9 @@ def _values(raw: Any, key: str, domain: Domain, problems: Problems) -> tuple[flo
 
 
 def _renames(data: Mapping[str, Any], d: Declaration, problems: Problems) -> None:
+    if isinstance(data.get("renames"), list):
+        _rename_sets(data["renames"], d, problems)
+        return
     table = _table(data.get("renames", {}), "renames", problems) or {}
     for coordinate, names in table.items():
         key = f"renames.{coordinate}"
@@ -425,6 +430,32 @@ def _renames(data: Mapping[str, Any], d: Declaration, problems: Problems) -> Non
             problems.add(key, "a name is offered twice")
             continue
         d.renames[coordinate] = tuple(items)
+
+
+def _rename_sets(raw: list, d: Declaration, problems: Problems) -> None:
+    """`renames = [["x", "y"], ["q_1", "q_2"]]`: each set names every coordinate, in order, and a
+    variant takes one set whole (no `q_1` beside `y`); the first set is the coordinates."""
+    sets = _list(raw, "renames", problems, LIMITS["renames"]) or []
+    found: list[tuple[str, ...]] = []
+    for i, names in enumerate(sets, 1):
+        key = f"renames[{i}]"
+        if not isinstance(names, list) or len(names) != len(d.coordinates):
+            problems.add(
+                key, f"a set of names gives one name per coordinate ({len(d.coordinates)})"
+            )
+            return
+        if not all(_name(n, key, "coordinate", problems) for n in names):
+            return
+        if len(set(names)) != len(names) or tuple(names) in found:
+            problems.add(key, "a name is given twice, or the set is")
+            return
+        found.append(tuple(names))
+    if found and found[0] != tuple(d.coordinates):
+        problems.add("renames[1]", f"the first set must be the coordinates {d.coordinates}")
+        return
+    d.rename_sets = found
+    for k, coordinate in enumerate(d.coordinates):
+        d.renames[coordinate] = tuple(dict.fromkeys(names[k] for names in found))
 
 
 def _bodies(table: Mapping[str, Any], where: str, problems: Problems) -> list[BodyDecl]:
