@@ -230,3 +230,47 @@ def test_renames_as_consistent_sets():
     ]:
         with pytest.raises(SceneFileError, match=message):
             scene_from_text(text.replace('[["r", "theta"], ["rho", "phi"]]', sets), "sets")
+
+
+# --- the examples against sources nobody here wrote ---------------------------------------------
+
+
+def test_the_swinging_atwood_machine_has_tufillaros_equations():
+    """Tufillaro, Abbott and Griffiths, "Swinging Atwood's Machine", Am. J. Phys. 52, 895
+    (1984), eqs. (2)-(3): (M + m) r̈ − m r θ̇² + g (M − m cos θ) = 0 and
+    r θ̈ + 2 ṙ θ̇ + g sin θ = 0; lagrade's rows are these times 1 and m r."""
+    variant = scene_from_text(ATWOOD, "swinging_atwood").default
+    r, theta = variant.jets
+    M, m, g = (variant.parameter_symbols[n] for n in ("M", "m", "g"))
+    radial = (M + m) * r.ddot - m * r.q * theta.dot**2 + g * (M - m * sp.cos(theta.q))
+    angular = r.q * theta.ddot + 2 * r.dot * theta.dot + g * sp.sin(theta.q)
+    E_r, E_theta = variant.euler_lagrange
+    assert sp.expand(E_r - radial) == 0
+    assert sp.expand(E_theta - m * r.q * angular) == 0
+
+
+def test_the_cycloid_is_a_tautochrone():
+    """Huygens: on a cycloid the period does not depend on the amplitude, 4π √(R/g). The
+    derived equation of motion integrated numerically (scipy) from two amplitudes."""
+    from scipy.integrate import solve_ivp
+
+    variant = scene_from_text((EXAMPLES / "cycloid.toml").read_text(), "cycloid").default
+    (s,) = variant.jets
+    R, g = variant.parameter_symbols["R"], variant.parameter_symbols["g"]
+    (acceleration,) = variant.system.accelerations
+    values = {R: sp.Rational(1), g: sp.Rational(981, 100)}
+    f = sp.lambdify((s.q, s.dot), acceleration.xreplace(values))  # our own derived expression
+
+    def quarter_period(amplitude: float) -> float:
+        """From rest at the amplitude to the bottom: a quarter of the period."""
+        bottom = lambda _t, y: y[0]  # noqa: E731
+        bottom.terminal, bottom.direction = True, -1
+        run = solve_ivp(
+            lambda _t, y: [y[1], f(y[0], y[1])], (0, 10), [amplitude, 0.0],
+            events=bottom, rtol=1e-11, atol=1e-12,
+        )  # fmt: skip
+        return float(run.t_events[0][0])
+
+    expected = float(4 * sp.pi * sp.sqrt(values[R] / values[g]))
+    for amplitude in (0.1, 2.5):
+        assert 4 * quarter_period(amplitude) == pytest.approx(expected, rel=1e-7)
