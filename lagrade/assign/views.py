@@ -44,7 +44,8 @@ PROMPTS: dict[str, str] = {
     "eom": "Derive the Euler-Lagrange equations of motion, one per coordinate.",
     "momenta": "Give the generalized momentum of each coordinate.",
     "cyclic": "Which coordinates are cyclic? (Write none if there are none.)",
-    "conserved": "Give the conserved quantities as functions of the coordinates and velocities.",
+    "conserved": "Give the conserved quantities as functions of the coordinates and velocities. "
+    "(Write none if there are none.)",
 }
 #: Parts with a key answer of their own (an expression part's key is its quantity's name).
 KEYED_PARTS = tuple(PROMPTS)
