@@ -10,9 +10,10 @@ import numpy as np
 import sympy as sp
 
 from lagrade.assign.figures.geometry import Geometry
-from lagrade.assign.figures.primitives import put_text
-from lagrade.assign.figures.style import GREY, GREY_TEXT, INK
-from lagrade.mechanics.scene import RigidBody, SpatialRigidBody
+from lagrade.assign.figures.primitives import arc_arrow, put_text
+from lagrade.assign.figures.style import ACCENT, GREY, GREY_TEXT, INK
+from lagrade.mechanics.scene import RigidBody, SpatialRigidBody, as_expr
+from lagrade.notation.printer import name_latex
 
 
 def body_radius(g: Geometry, i: int, unit: float) -> float:
@@ -65,10 +66,12 @@ def body_disc(ax: Any, unit: float, g: Geometry, i: int, b: Any) -> None:
     put_text(ax, at + (r + 0.05 * unit) * np.array([0.8, 0.8]), f"${sp.latex(b.mass)}$")
 
 
-def euler_axes(g: Geometry, b: SpatialRigidBody) -> np.ndarray:
+def euler_axes(g: Geometry, b: SpatialRigidBody, spin: bool = True) -> np.ndarray:
     """The body's principal axes 1, 2, 3 in space (columns) at the pose: R = R_z(φ) R_x(θ) R_z(ψ),
-    the Z-X-Z convention the body's T is derived in."""
+    the Z-X-Z convention the body's T is derived in (without the spin ψ: the line of nodes,
+    where ψ is measured from, is axis 1)."""
     phi, theta, psi = (g.number(a) for a in b.angles)
+    psi = psi if spin else 0.0
 
     def about_z(a: float) -> np.ndarray:
         return np.array([[math.cos(a), -math.sin(a), 0], [math.sin(a), math.cos(a), 0], [0, 0, 1]])
@@ -101,6 +104,22 @@ def spinning_disc(ax: Any, g: Geometry, b: SpatialRigidBody, at: np.ndarray, r: 
     mark = at + projected(r * axes[:, 0])
     ax.plot(*np.array([at, mark]).T, color=INK, linewidth=1.2, zorder=5)
     ax.plot(*at, marker="o", markersize=2.5, color=INK, zorder=5)
+    # the spin: an arc in the disc from the line of nodes to the mark, named like its coordinate
+    spin = as_expr(b.angles[2])
+    if spin.is_Symbol and any(j.q == spin for j in g.jets):
+        nodes = euler_axes(g, b, spin=False)
+        psi = g.number(spin)
+        arc = [
+            at + projected(0.6 * r * (math.cos(a) * nodes[:, 0] + math.sin(a) * nodes[:, 1]))
+            for a in np.linspace(0.0, psi, 24)
+        ]
+        line = np.array([at, at + projected(r * nodes[:, 0])])
+        ax.plot(*line.T, color=ACCENT, linewidth=0.8, linestyle="--", zorder=5)
+        arc_arrow(ax, np.array(arc), "")
+        middle = at + projected(
+            0.8 * r * (math.cos(psi / 2) * nodes[:, 0] + math.sin(psi / 2) * nodes[:, 1])
+        )
+        put_text(ax, middle, f"${name_latex(spin.name)}$", color=ACCENT)
 
 
 def axes3d(ax: Any, unit: float, g: Geometry) -> None:
