@@ -49,6 +49,14 @@ def solution_data(variant: SceneVariant) -> dict[str, Any]:
             "T": text(variant.kinetic_energy),
             "V": text(variant.potential_energy),
         }
+    nonconservative: dict[str, Any] = {}
+    if variant.scene.nonconservative:  # only then: the bank's solutions keep their shape
+        nonconservative["dissipation"] = text(variant.dissipation)
+        nonconservative["forces"] = {
+            q: text(f)
+            for q, f in zip(variant.coordinates, variant.generalized_forces, strict=True)
+            if f != 0
+        }
     return {
         "id": variant.scene.id,
         "title": variant.scene.title,
@@ -72,6 +80,7 @@ def solution_data(variant: SceneVariant) -> dict[str, Any]:
         "T": bodies["T"],
         "V": bodies["V"],
         "L": text(variant.lagrangian),
+        **nonconservative,
         "momenta": {
             f"p_{q}": text(p)
             for q, p in zip(variant.coordinates, system.generalized_momenta, strict=True)
@@ -114,11 +123,18 @@ def solution_text(variant: SceneVariant) -> str:
         lines.append("transformation:")
         lines += [f"  {k} = {v}" for k, v in d["transformation"].items()]
         lines += ["", f"T = {d['T']}", f"V = {d['V']}", f"L = {d['L']}", ""]
+    if "dissipation" in d:
+        lines.insert(-1, f"F = {d['dissipation']}  (Rayleigh's dissipation function)")
+        lines[-1:-1] = [f"Q_{q} = {f}  (generalized force)" for q, f in d["forces"].items()]
     lines += [f"{k} = {v}" for k, v in d["momenta"].items()]
-    lines.append("equations of motion (each = 0):")
+    lines.append(
+        "equations of motion (each = 0"
+        + (": E_j + dF/dq_j_dot - Q_j)" if "dissipation" in d else ")")
+        + ":"
+    )
     lines += [f"  {e} = 0" for e in d["eom"]]
     lines.append("cyclic: " + (", ".join(d["cyclic"]) or "none"))
-    lines.append("conserved:")
+    lines.append("conserved:" + ("" if d["conserved"] else " none"))
     energy = f"{energy_function_name(variant)} (energy function)"
     lines += [f"  {energy if k == 'h' else k} = {v}" for k, v in d["conserved"].items()]
     if d["quantities"]:

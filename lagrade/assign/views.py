@@ -22,7 +22,13 @@ from lagrade.assign.templating import toml_literal
 from lagrade.assign.tidy import tidy
 from lagrade.assign.units import Number, unit_formats
 from lagrade.assign.variants import VariantChoice
-from lagrade.mechanics.scene import LAGRANGIAN_PARTS, RigidBody, Scene, SceneVariant
+from lagrade.mechanics.scene import (
+    LAGRANGIAN_PARTS,
+    RigidBody,
+    Scene,
+    SceneVariant,
+    SpatialRigidBody,
+)
 from lagrade.notation import printer as rm
 from lagrade.notation.keys import key_answer
 
@@ -38,7 +44,8 @@ PROMPTS: dict[str, str] = {
     "eom": "Derive the Euler-Lagrange equations of motion, one per coordinate.",
     "momenta": "Give the generalized momentum of each coordinate.",
     "cyclic": "Which coordinates are cyclic? (Write none if there are none.)",
-    "conserved": "Give the conserved quantities as functions of the coordinates and velocities.",
+    "conserved": "Give the conserved quantities as functions of the coordinates and velocities. "
+    "(Write none if there are none.)",
 }
 #: The prompt of a `conserved` part that asks for any one conserved quantity (`all = false`).
 ONE_CONSERVED_PROMPT = (
@@ -74,7 +81,7 @@ def _described(variant: SceneVariant, text: str) -> Prose:
 
 
 def _body_kind(body: Any) -> str:
-    return "rigid body" if isinstance(body, RigidBody) else "point mass"
+    return "rigid body" if isinstance(body, RigidBody | SpatialRigidBody) else "point mass"
 
 
 @lru_cache(maxsize=512)
@@ -116,7 +123,7 @@ def symbolic_solution(scene: Scene, names: tuple, options: tuple) -> dict[str, A
         }
         for label, f in ([] if given_l else v.constraints)
     ]
-    keyed = [p for p in KEYED_PARTS if p != "conserved" and (not given_l or p in LAGRANGIAN_PARTS)]
+    keyed = [p for p in KEYED_PARTS if not given_l or p in LAGRANGIAN_PARTS]
     return {
         "statement": _statement(v),
         "coordinates": [math(sp.Symbol(c)) for c in coords],
@@ -151,7 +158,6 @@ def symbolic_solution(scene: Scene, names: tuple, options: tuple) -> dict[str, A
         # accepts a variant (lagrade.judge.verify), one entry per part the scene can ask
         "key_answers": {
             **{part: key_answer(v, part) for part in keyed},
-            **({"conserved": key_answer(v, "conserved")} if system.conserved_quantities else {}),
             **{q: key_answer(v, EXPRESSION, q) for q in v.quantities},
         },
         "variant": v,

@@ -24,7 +24,7 @@ from lagrade.judge.evaluate import UnsupportedExpression
 from lagrade.judge.rows import equation_rows, in_span
 from lagrade.judge.tolerances import SAME_VALUE
 from lagrade.mechanics.lagrange import LagrangianSystem, t
-from lagrade.mechanics.scene import RigidBody, SceneVariant
+from lagrade.mechanics.scene import RigidBody, SceneVariant, SpatialRigidBody
 from lagrade.notation.printer import plain
 
 #: A dimension: exponents of metre, kilogram, second and ampere, in twelfths (whole numbers,
@@ -172,6 +172,9 @@ def symbol_dimensions(variant: SceneVariant) -> dict[sp.Symbol, Dim]:
         wanted.append((body.mass, MASS))
         if isinstance(body, RigidBody):
             wanted += [(body.angle, NONE), (body.inertia, _dim(m=2, kg=1))]
+        if isinstance(body, SpatialRigidBody):
+            wanted += [(a, NONE) for a in body.angles]
+            wanted += [(i, _dim(m=2, kg=1)) for i in body.inertia]
     # a scene given by its Lagrangian has no bodies and no V: its L is the energy it tells
     energy = variant.lagrangian if variant.scene.given_by_lagrangian else variant.potential_energy
     wanted.append((energy, ENERGY))

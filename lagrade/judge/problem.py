@@ -70,6 +70,8 @@ class Problem:
     expression: sp.Expr | None = None
     variant: SceneVariant | None = None
     coordinate_domains: dict[str, tuple[float, float]] | None = None
+    #: Expressions in the parameters that must be positive at every point (a scene's b < R).
+    relations: tuple[sp.Expr, ...] = ()
     unit: str = ""  # the unit of a scene quantity (a numeric answer may carry it)
     imaginary_unit: str | None = None  # its spelling, where an expression question declares it
     #: What deriving this question may still take (its preparation budget), and has taken.
@@ -216,16 +218,34 @@ class Problem:
         unit declared — otherwise. Mechanics (L, its equations, momenta) is real."""
         seed, free = seed_for(self.key, part), frozenset(self.domains)
         if not (self.kind == "expression" or part == "expression"):
-            return self.space.draw(seed, free, self._validity(part))
+            return self.space.draw(seed, free, self._kept(self._validity(part)))
         if self.imaginary_unit is None:
             try:
-                return self.space.draw(seed, free, finite_mask([self.reference_expression]))
+                valid = self._kept(finite_mask([self.reference_expression]))
+                return self.space.draw(seed, free, valid)
             except ReferenceUndefined:
                 pass  # complex wherever it has a value
-        valid = finite_mask([self.reference_expression], complex_values=True)
+        valid = self._kept(finite_mask([self.reference_expression], complex_values=True))
         points = self.space.draw(seed, free, valid)
         points.complex_values = True
         return points
+
+    def _kept(self, valid):
+        """`valid`, and the scene's relations between parameters kept (b < R): a point outside
+        them is not one the problem is about, so it is redrawn like an undefined one."""
+        if not self.relations:
+            return valid
+        kept = [Compiled.of(g) for g in self.relations]
+
+        def both(env):
+            ok = valid(env)
+            with np.errstate(all="ignore"):
+                for g in kept:
+                    value = np.broadcast_to(np.asarray(g.values(env)[0], float), ok.shape)
+                    ok = ok & (value > 0)
+            return ok
+
+        return both
 
     def _validity(self, part: str):
         if self.kind == "expression" or part == "expression":
@@ -362,6 +382,8 @@ def _scene_problem(spec: Mapping[str, Any], key: str) -> Problem:
         lagrangian=variant.lagrangian,
         expression=expression,
         variant=variant,
+        coordinate_domains={n: d.sample_range() for n, d in variant.coordinate_domains.items()},
+        relations=variant.scene.relations,
         unit=unit,
     )
 

@@ -1,5 +1,5 @@
-"""Parameter domains: where a parameter may lie, which sympy assumptions that implies, and how to
-draw sample values from it.
+"""Parameter and coordinate domains: where a parameter or coordinate may lie, which sympy
+assumptions that implies, how to draw sample values from it, and what holds there.
 
 Domains are written as `positive`, `nonnegative`, `real`, or an interval such as `(0, pi/2)` or
 `[0, 1]`. They come from scene declarations and from instructors' ad-hoc problems, never from
@@ -10,13 +10,15 @@ over a number), not by sympify.
 from __future__ import annotations
 
 import math
+import random
 import re
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from fractions import Fraction
 
 import sympy as sp
 
-from lagrade.errors import DomainError
+from lagrade.errors import DomainError, SceneError
 
 _BOUND = re.compile(
     r"""^\s*(?P<sign>[+-])?\s*
@@ -138,3 +140,91 @@ class Domain:
 POSITIVE = Domain.parse("positive")
 NONNEGATIVE = Domain.parse("nonnegative")
 REAL = Domain.parse("real")
+
+
+def within(
+    expr: sp.Expr,
+    domains: Mapping[sp.Symbol, Domain],
+    then: Callable[[sp.Expr], sp.Expr] = lambda e: e,
+) -> sp.Expr:
+    """expr as the symbols' domains let sympy simplify it: √(r²) = r and |r| = r for r > 0
+    (each symbol with a signed domain stands in for a symbol carrying that assumption while
+    `then` works on it, and back)."""
+    swap = {
+        s: sp.Dummy(s.name, **d.assumptions)
+        for s, d in domains.items()
+        if "real" not in d.assumptions
+    }
+    if not swap:
+        return then(expr)
+    return then(expr.xreplace(swap)).xreplace({d: s for s, d in swap.items()})
+
+
+def vanishes_within(
+    expr: sp.Expr,
+    box: Mapping[sp.Symbol, tuple[float, float]],
+    relations: Sequence[sp.Expr] = (),
+    points: int = 8,
+) -> bool:
+    """Whether expr is 0 at `points` seeded points of `box` (each symbol uniform in its range,
+    the `relations` kept), to 30 digits relative to the size of its terms; a complex or
+    infinite value is not 0."""
+    rng = random.Random(0)
+    terms = sp.Add.make_args(sp.expand(expr))
+    for _ in range(points):
+        for _draw in range(64):
+            point = {s: sp.Float(rng.uniform(lo, hi), 30) for s, (lo, hi) in box.items()}
+            if keeps(relations, point):
+                break
+        else:
+            return False  # the relations keep no point of the box
+        value = sp.N(expr.xreplace(point), 30)
+        if not value.is_number or value.has(sp.zoo, sp.nan, sp.oo, -sp.oo):
+            return False
+        size = sum((abs(sp.N(x.xreplace(point), 30)) for x in terms), sp.S.Zero)
+        if abs(value) > sp.Float(10) ** -20 * (1 + size):
+            return False
+    return True
+
+
+def branched(expr: sp.Expr) -> bool:
+    """expr holds a branch choice (|r|, a root, atan2, a sign) that a coordinate's domain may
+    settle."""
+    roots = any(p.exp.is_Rational and not p.exp.is_Integer for p in expr.atoms(sp.Pow))
+    return roots or expr.has(sp.Abs, sp.sign, sp.atan2, sp.arg, sp.Piecewise)
+
+
+def keeps(relations: Sequence[sp.Expr], values: Mapping[sp.Symbol, float]) -> bool:
+    """Each relation (an expression that must be positive) is positive at `values`, where it
+    names only parameters that have one (a relation with a symbolic parameter is the judge's)."""
+    for g in relations:
+        if g.free_symbols <= set(values) and not float(g.xreplace(values)) > 0:
+            return False
+    return True
+
+
+@dataclass(frozen=True)
+class Parameter:
+    """A named constant of a scene, with the domain it lives in and, for numeric variants, its SI
+    unit and a pool of values to draw from (empty pool: the parameter stays symbolic)."""
+
+    name: str
+    domain: Domain
+    unit: str = ""
+    values: tuple[float, ...] = ()
+    description: str = ""
+
+
+def param(
+    name: str,
+    domain: str | Domain | None = "positive",
+    unit: str = "",
+    values: Sequence[float] = (),
+    description: str = "",
+) -> Parameter:
+    """Declare a parameter; `domain` is `positive`, `nonnegative`, `real` or an interval."""
+    if domain is None:
+        raise SceneError(
+            "?", [f"parameter {name!r}: no domain (declare positive, real or an interval)"]
+        )
+    return Parameter(name, Domain.parse(domain), unit, tuple(values), description)

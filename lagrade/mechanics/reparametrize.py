@@ -30,6 +30,7 @@ from lagrade.mechanics.scene import (
     PointMass,
     RigidBody,
     SceneVariant,
+    SpatialRigidBody,
     _tidy,
     as_expr,
 )
@@ -49,6 +50,9 @@ def cartesian_bodies(variant: SceneVariant) -> tuple[Body, ...]:
         position = tuple(symbols[f"{axis}_{b.name}"] for axis in AXES[: len(b.position)])
         if isinstance(b, RigidBody):
             made.append(RigidBody(b.name, b.mass, position, b.inertia, symbols[f"phi_{b.name}"]))  # type: ignore[arg-type]
+        elif isinstance(b, SpatialRigidBody):
+            angles = tuple(symbols[f"{a}_{b.name}"] for a in b.ANGLES)
+            made.append(SpatialRigidBody(b.name, b.mass, position, b.inertia, angles))  # type: ignore[arg-type]
         else:
             made.append(PointMass(b.name, b.mass, position))
     return tuple(made)
@@ -68,6 +72,8 @@ def coordinates_to_carry(variant: SceneVariant) -> tuple[mech.Jet, ...]:
         exprs.append(b.mass)
         if isinstance(b, RigidBody):
             exprs.append(b.inertia)
+        if isinstance(b, SpatialRigidBody):
+            exprs += list(b.inertia)
     return tuple(j for j in variant.jets if any(e.has(j.q) or e.has(j.dot) for e in exprs))
 
 
@@ -196,6 +202,16 @@ class Reparametrized(SceneVariant):
                         position,  # type: ignore[arg-type]
                         self._carry(b.inertia),
                         self.positions[f"phi_{b.name}"],
+                    )
+                )
+            elif isinstance(b, SpatialRigidBody):
+                made.append(
+                    SpatialRigidBody(
+                        b.name,
+                        self._carry(b.mass),
+                        position,  # type: ignore[arg-type]
+                        tuple(self._carry(i) for i in b.inertia),  # type: ignore[arg-type]
+                        tuple(self.positions[f"{a}_{b.name}"] for a in b.ANGLES),  # type: ignore[arg-type]
                     )
                 )
             else:

@@ -18,109 +18,41 @@ from types import SimpleNamespace
 from typing import Any
 
 import sympy as sp
-from sympy.simplify.fu import TR10i
 
 from lagrade.errors import SceneError
 from lagrade.mechanics import lagrange as mech
-from lagrade.mechanics.domains import Domain
+
+# the bodies live in `bodies`; their names stay importable from here, where scenes are made
+from lagrade.mechanics.bodies import (  # noqa: F401
+    AXES,
+    Body,
+    PointMass,
+    RigidBody,
+    SpatialRigidBody,
+    _body_fields,
+    _normalized,
+    _tidy,
+    as_expr,
+    gravity,
+)
+from lagrade.mechanics.dissipation import DissipativeSystem
+from lagrade.mechanics.domains import (  # noqa: F401 (Parameter, param: made here)
+    Domain,
+    Parameter,
+    branched,
+    keeps,
+    param,
+    vanishes_within,
+    within,
+)
 from lagrade.mechanics.figure import FigureHint
 
-AXES = ("x", "y", "z")
+#: Draws from the value pools before a scene's relations are taken as impossible to keep.
+RELATION_DRAWS = 64
+
+
 #: What a scene given by its Lagrangian alone can be asked (everything that follows from L).
 LAGRANGIAN_PARTS = ("lagrangian", "eom", "momenta", "cyclic", "conserved", "expression")
-
-
-def as_expr(value: object) -> sp.Expr:
-    """A scene declaration's value as a sympy expression, without evaluating text.
-
-    A scene file's expressions arrive already read by the notation layer (`lagrade.bank`), so
-    what comes here is a sympy object or a plain number (the 0 of a fixed axle); a string is
-    refused rather than parsed, so nothing here can turn text into code.
-    """
-    if isinstance(value, sp.Basic):
-        return value
-    if isinstance(value, bool) or not isinstance(value, int | float):
-        raise TypeError(f"a scene declares sympy expressions or numbers, not {value!r}")
-    return sp.Integer(value) if isinstance(value, int) else sp.Float(value)
-
-
-@dataclass(frozen=True)
-class Parameter:
-    """A named constant of a scene, with the domain it lives in and, for numeric variants, its SI
-    unit and a pool of values to draw from (empty pool: the parameter stays symbolic)."""
-
-    name: str
-    domain: Domain
-    unit: str = ""
-    values: tuple[float, ...] = ()
-    description: str = ""
-
-
-def param(
-    name: str,
-    domain: str | Domain | None = "positive",
-    unit: str = "",
-    values: Sequence[float] = (),
-    description: str = "",
-) -> Parameter:
-    """Declare a parameter; `domain` is `positive`, `nonnegative`, `real` or an interval."""
-    if domain is None:
-        raise SceneError(
-            "?", [f"parameter {name!r}: no domain (declare positive, real or an interval)"]
-        )
-    return Parameter(name, Domain.parse(domain), unit, tuple(values), description)
-
-
-@dataclass(frozen=True)
-class PointMass:
-    """A point mass at `position` (2 components: motion in the x–y plane, so z = 0 is a
-    constraint; or 3 components), each a function of the coordinates and t. y (or z for 3-D
-    positions) points up."""
-
-    name: str
-    mass: sp.Expr
-    position: tuple[sp.Expr, ...]
-
-    freedoms = 3
-
-    @property
-    def planar(self) -> bool:
-        return len(self.position) == 2
-
-    def kinetic_energy(self, jets: Sequence[mech.Jet]) -> sp.Expr:
-        """T = ½ m |ṙ|²."""
-        return sp.Rational(1, 2) * self.mass * mech.speed_squared(self.position, jets)
-
-
-@dataclass(frozen=True)
-class RigidBody:
-    """A rigid body moving in the x–y plane: its centre of mass at `position`, turned by `angle`
-    about the z axis, with moment of inertia `inertia` about its centre of mass. In space it has
-    6 freedoms; staying in the plane costs 3 (z = 0 and the two tilts)."""
-
-    name: str
-    mass: sp.Expr
-    position: tuple[sp.Expr, sp.Expr]
-    inertia: sp.Expr
-    angle: sp.Expr
-
-    freedoms = 6
-    planar = True
-
-    def kinetic_energy(self, jets: Sequence[mech.Jet]) -> sp.Expr:
-        """T = ½ m |ṙ_cm|² + ½ I φ̇² (König's theorem for plane motion)."""
-        omega = mech.total_derivative(self.angle, jets)
-        translation = sp.Rational(1, 2) * self.mass * mech.speed_squared(self.position, jets)
-        return translation + sp.Rational(1, 2) * self.inertia * omega**2
-
-
-Body = PointMass | RigidBody
-
-
-def gravity(g: sp.Expr, bodies: Sequence[Body], axis: str = "y") -> sp.Expr:
-    """V = Σ m g h for uniform gravity along −axis (h is the `axis` component of each position)."""
-    index = AXES.index(axis)
-    return sum((b.mass * g * b.position[index] for b in bodies), sp.S.Zero)
 
 
 @dataclass(frozen=True)
@@ -153,6 +85,11 @@ class Scene:
     one) declares no bodies; it has L and all that follows from it, but no transformation
     equations, T, V, constraints or DOF, and asking for them is a SceneError that says so.
 
+    `coordinate_domains` says where a coordinate lives (`r` positive): the consistency checks,
+    what is shown and the judge's sample points keep to it. `dissipation(s)` (Rayleigh's F) and
+    `forces(s)` (generalized forces Q by coordinate) enter the equations of motion,
+    E_j + ∂F/∂q̇_j = Q_j (`lagrade.mechanics.dissipation`).
+
     In `statement`, `{theta}` stands for a coordinate (under the variant's name), `{angle_from}`
     for an option's choice (as `wording[option][choice]` reads, else the choice itself), and
     `{a}` for a parameter whose name is also an English word; handouts set coordinates and
@@ -180,6 +117,16 @@ class Scene:
     lagrangian: Callable[[SimpleNamespace], sp.Expr] | None = None
     figure: Callable[[Mapping[str, str]], FigureHint] = lambda options: FigureHint()
     source: str = ""
+    coordinate_domains: Mapping[str, Domain] = field(default_factory=dict)
+    relations: tuple[sp.Expr, ...] = ()
+    rename_sets: tuple[tuple[str, ...], ...] = ()
+    dissipation: Callable[[SimpleNamespace], sp.Expr] | None = None
+    forces: Callable[[SimpleNamespace], Mapping[str, sp.Expr]] | None = None
+
+    @property
+    def nonconservative(self) -> bool:
+        """The scene declares a dissipation function or generalized forces."""
+        return self.dissipation is not None or self.forces is not None
 
     @property
     def given_by_lagrangian(self) -> bool:
@@ -204,6 +151,9 @@ class Scene:
                 problems.append(
                     f"renames: the first name for {canonical!r} must be {canonical!r} itself"
                 )
+        for name in self.coordinate_domains:
+            if name not in self.coordinates:
+                problems.append(f"domains: {name!r} is not a coordinate")
         for name, choices in self.options.items():
             if not choices:
                 problems.append(f"options: {name!r} offers no choice")
@@ -222,12 +172,26 @@ class Scene:
         """A reproducible variant: coordinate names, options and (if `numeric`) parameter values
         drawn from the declared pools with a generator seeded by (scene id, seed)."""
         rng = random.Random(f"{self.id}:{seed}")
-        names = {c: rng.choice(choices) for c, choices in sorted(self.renames.items())}
+        if self.rename_sets:  # one consistent set of names (x, y or q_1, q_2)
+            names = dict(zip(self.coordinates, rng.choice(self.rename_sets), strict=True))
+        else:
+            names = {c: rng.choice(choices) for c, choices in sorted(self.renames.items())}
         options = {o: rng.choice(choices) for o, choices in sorted(self.options.items())}
         values = {}
         if numeric:
-            values = {p.name: rng.choice(p.values) for p in self.parameters if p.values}
+            values = self._values(rng)
         return SceneVariant(self, seed=seed, names=names, options=options, values=values)
+
+    def _values(self, rng: random.Random) -> dict[str, float]:
+        """Parameter values drawn from the pools, again until they keep the scene's relations
+        (b < R; a scene without relations draws once, as it always has)."""
+        symbols = {p.name: p.domain.symbol(p.name) for p in self.parameters}
+        for _ in range(RELATION_DRAWS):
+            values = {p.name: rng.choice(p.values) for p in self.parameters if p.values}
+            if keeps(self.relations, {symbols[n]: v for n, v in values.items()}):
+                return values
+        kept = ", ".join(f"{r} > 0" for r in self.relations)
+        raise SceneError(self.id, [f"relations: no values drawn from the pools keep {kept}"])
 
 
 class _Declared(SimpleNamespace):
@@ -300,6 +264,36 @@ class SceneVariant:
         return {p.name: p.domain for p in self.scene.parameters}
 
     @cached_property
+    def coordinate_domains(self) -> dict[str, Domain]:
+        """Each coordinate's declared domain, keyed by this variant's name for it (a coordinate
+        declared without one is real)."""
+        return {self.names[c]: d for c, d in self.scene.coordinate_domains.items()}
+
+    def within_domains(self, expr: sp.Expr, then=lambda e: e) -> sp.Expr:
+        """expr simplified as the coordinates' domains allow (√(r²) = r for r > 0), and by
+        `then` under their assumptions."""
+        declared = self.coordinate_domains
+        signs = {j.q: declared[j.name] for j in self.jets if j.name in declared}
+        return within(expr, signs, then)
+
+    @cached_property
+    def sample_box(self) -> dict[sp.Symbol, tuple[float, float]]:
+        """Where the scene's own checks draw generic points: the parameters and the declared
+        coordinates inside their domains, the other coordinates over ±2.5 (both signs: a
+        constraint that holds only for r > 0 needs r's domain declared), q̇ in ±2, t in (0.1, 3)."""
+        box = {s: self.domains[str(s)].sample_range() for s in self.parameter_symbols.values()}
+        for j in self.jets:
+            domain = self.coordinate_domains.get(j.name)
+            box[j.q] = domain.sample_range() if domain is not None else (-2.5, 2.5)
+            box[j.dot] = (-2.0, 2.0)
+        return box | {mech.t: (0.1, 3.0)}
+
+    def vanishes_in_domains(self, expr: sp.Expr) -> bool:
+        """Whether expr is 0 wherever the domains let the coordinates go (numerically): a
+        constraint with √ or atan2 that holds on the physical branch only."""
+        return vanishes_within(expr, self.sample_box, self.scene.relations)
+
+    @cached_property
     def namespace(self) -> SimpleNamespace:
         """What a scene's declarations see: canonical names bound to this variant's symbols."""
         ns: dict[str, Any] = dict(self.parameter_symbols)
@@ -342,6 +336,8 @@ class SceneVariant:
                 eqs[f"{axis}_{b.name}"] = value
             if isinstance(b, RigidBody):
                 eqs[f"phi_{b.name}"] = b.angle
+            if isinstance(b, SpatialRigidBody):
+                eqs |= {f"{a}_{b.name}": e for a, e in zip(b.ANGLES, b.angles, strict=True)}
         return eqs
 
     @cached_property
@@ -350,6 +346,7 @@ class SceneVariant:
         per_body = {}
         for b in self.bodies:
             names = list(AXES) + (["phi"] if isinstance(b, RigidBody) else [])
+            names += list(SpatialRigidBody.ANGLES) if isinstance(b, SpatialRigidBody) else []
             symbols = {a: sp.Symbol(f"{a}_{b.name}", real=True) for a in names}
             per_body[b.name] = _Declared(self.scene.id, f"c.{b.name}", **symbols)
         return _Declared(self.scene.id, "c", **per_body)
@@ -386,6 +383,9 @@ class SceneVariant:
                 subs[getattr(c, axis)] = value
             if isinstance(b, RigidBody):
                 subs[c.phi] = b.angle
+            if isinstance(b, SpatialRigidBody):
+                for a, e in zip(b.ANGLES, b.angles, strict=True):
+                    subs[getattr(c, a)] = e
         return subs
 
     def validate(self) -> None:
@@ -423,11 +423,21 @@ class SceneVariant:
         for i, (label, f) in enumerate(self.constraints):
             if label != "declared":
                 continue
-            residual = sp.simplify(sp.expand_trig(f.xreplace(subs)))
-            if residual != 0:
+            residual = self.within_domains(
+                f.xreplace(subs), lambda e: sp.simplify(sp.expand_trig(e))
+            )
+            if residual != 0 and not self.vanishes_in_domains(residual):
+                hint = (
+                    ""
+                    if self.coordinate_domains or not branched(residual)
+                    else (
+                        " (if it holds where the coordinates live, declare their domains: "
+                        'domains = { r = "positive" })'
+                    )
+                )
                 problems.append(
                     f"constraints: constraint {i + 1} ({f} = 0) is not satisfied by the "
-                    f"transformation equations; it leaves {residual}"
+                    f"transformation equations; it leaves {residual}{hint}"
                 )
         if self.dof != len(self.jets):
             problems.append(
@@ -466,7 +476,12 @@ class SceneVariant:
             s: rng.uniform(*self.domains[str(s)].sample_range())
             for s in self.parameter_symbols.values()
         }
-        point |= {j.q: rng.uniform(0.2, 1.2) for j in self.jets} | {mech.t: 0.7}
+        point |= {
+            j.q: rng.uniform(*self.coordinate_domains[j.name].sample_range())
+            if j.name in self.coordinate_domains
+            else rng.uniform(0.2, 1.2)
+            for j in self.jets
+        } | {mech.t: 0.7}
         numeric = J.xreplace(point).evalf()
         import numpy as np
 
@@ -492,7 +507,7 @@ class SceneVariant:
         if self._presented is not self:
             return self._presented.kinetic_energy
         T = sum((b.kinetic_energy(self.jets) for b in self.bodies), sp.S.Zero)
-        return _tidy(T)
+        return _tidy(self.within_domains(T))
 
     @cached_property
     def potential_energy(self) -> sp.Expr:
@@ -500,7 +515,8 @@ class SceneVariant:
         self._needs_bodies("V")
         if self._presented is not self:
             return self._presented.potential_energy
-        return sp.expand(as_expr(self.scene.potential(self.namespace, self.bodies)))
+        V = as_expr(self.scene.potential(self.namespace, self.bodies))
+        return sp.expand(self.within_domains(V))
 
     @cached_property
     def lagrangian(self) -> sp.Expr:
@@ -511,8 +527,26 @@ class SceneVariant:
 
     @cached_property
     def system(self) -> mech.LagrangianSystem:
-        """The Euler–Lagrange machinery for this L (momenta, EOM, cyclic, h, …), all lazy."""
-        return mech.LagrangianSystem(self.lagrangian, self.jets)
+        """The Euler–Lagrange machinery for this L (momenta, EOM, cyclic, h, …), all lazy; with
+        the scene's dissipation and forces in its equations of motion when it declares them."""
+        if not self.scene.nonconservative:
+            return mech.LagrangianSystem(self.lagrangian, self.jets)
+        return DissipativeSystem(
+            self.lagrangian, self.jets, self.dissipation, self.generalized_forces
+        )
+
+    @cached_property
+    def dissipation(self) -> sp.Expr:
+        """Rayleigh's dissipation function F(q, q̇, t) (0 when the scene declares none)."""
+        if self.scene.dissipation is None:
+            return sp.S.Zero
+        return sp.expand(self.within_domains(as_expr(self.scene.dissipation(self.namespace))))
+
+    @cached_property
+    def generalized_forces(self) -> tuple[sp.Expr, ...]:
+        """The given generalized forces Q_j, one per coordinate (0 where none is given)."""
+        given = {} if self.scene.forces is None else self.scene.forces(self.namespace)
+        return tuple(as_expr(given.get(c, 0)) for c in self.scene.coordinates)
 
     # --- conveniences -------------------------------------------------------------------------
     @property
@@ -578,38 +612,3 @@ class SceneVariant:
     def statement(self) -> str:
         """The problem text with this variant's coordinate names and option words filled in."""
         return self.scene.statement.format(**self.statement_fill)
-
-
-def _body_fields(body: Body) -> list[tuple[str, tuple]]:
-    """A body's declared expressions by field: position, mass, and a rigid body's inertia and
-    angle."""
-    fields = [("position", tuple(body.position)), ("mass", (body.mass,))]
-    if isinstance(body, RigidBody):
-        fields += [("inertia", (body.inertia,)), ("angle", (body.angle,))]
-    return fields
-
-
-def _normalized(body: Body) -> Body:
-    """A declared body with every field a sympy expression (positions, mass, inertia, angle)."""
-    fields = {**body.__dict__, "position": tuple(as_expr(x) for x in body.position)}
-    fields["mass"] = as_expr(body.mass)
-    if isinstance(body, RigidBody):
-        fields["inertia"], fields["angle"] = as_expr(body.inertia), as_expr(body.angle)
-    return type(body)(**fields)
-
-
-def _tidy(expr: sp.Expr) -> sp.Expr:
-    """T as the lecture writes it: sin² + cos² collapsed, cos a cos b + sin a sin b → cos(a − b).
-
-    A targeted rewrite (Pythagoras both ways, keep the shorter; then fu's TR10i) instead of
-    `trigsimp`, which is ~20× slower and dominated the derivation time of every scene.
-    """
-    expanded = sp.expand(expr)
-    angles = {f.args[0] for f in expanded.atoms(sp.sin, sp.cos)}
-    if not angles:
-        return expanded
-    via_sin = sp.expand(expanded.xreplace({sp.cos(u) ** 2: 1 - sp.sin(u) ** 2 for u in angles}))
-    via_cos = sp.expand(expanded.xreplace({sp.sin(u) ** 2: 1 - sp.cos(u) ** 2 for u in angles}))
-    shortest = min((expanded, via_sin, via_cos), key=sp.count_ops)
-    combined = sp.expand(TR10i(shortest))
-    return combined if sp.count_ops(combined) <= sp.count_ops(shortest) else shortest

@@ -36,7 +36,7 @@ def key_answer(variant: SceneVariant, part: str, quantity: str | None = None) ->
     if part == "cyclic":
         return ", ".join(system.cyclic_coordinates) or "none"
     if part == "conserved":
-        return [plain(q) for q in system.conserved_quantities.values()]
+        return [plain(q) for q in system.conserved_quantities.values()] or ["none"]
     if part == "expression":
         if quantity is None or quantity not in variant.quantities:
             raise KeyError(f"scene {variant.scene.id!r} has no quantity {quantity!r}")

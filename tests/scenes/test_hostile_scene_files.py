@@ -57,6 +57,15 @@ CASES = [
     ("gravity without g", PENDULUM.replace("g = {", "G = {"), "gravity needs a parameter g"),
     ("a reserved name", PENDULUM.replace("l = {", "pi = {"), "'pi' is reserved"),
     ("choices that bind different names", PENDULUM + '[options.o.a]\nlet = { u = "1" }\n[options.o.b]\n', "every choice must bind the same names"),
+    ("a domain for no coordinate", 'domains = { psi = "positive" }\n' + PENDULUM, "domains.psi: 'psi' is not a coordinate"),
+    ("a domain that is code", 'domains = { theta = "__import__(1)" }\n' + PENDULUM, "domains.theta: unknown domain"),
+    ("domains that are not a table", 'domains = ["positive"]\n' + PENDULUM, "domains: ['positive'] is not a table"),
+    ("code in a dissipation function", 'dissipation = "exec(theta_dot)"\n' + PENDULUM, "Unknown symbol 'exec'"),
+    ("a Cartesian coordinate in a dissipation function", 'dissipation = "x_bob^2"\n' + PENDULUM, "dissipation: uses x_bob"),
+    ("a force along no coordinate", 'forces = { psi = "1" }\n' + PENDULUM, "forces.psi: 'psi' is not a coordinate"),
+    ("a force that is a table", 'forces = { theta = { a = 1 } }\n' + PENDULUM, "forces.theta: {'a': 1} is not an expression"),
+    ("a body in space with two angles", PENDULUM.replace('position = ["l sin(theta)", "-l cos(theta)"]', 'position = ["l sin(theta)", "-l cos(theta)", 0]\ninertia = ["m", "m", "m"]\nangles = ["theta", 0]'), "bodies.bob.angles: a rigid body in space declares a list of 3"),
+    ("a body in space in a plane", PENDULUM.replace('position = ["l sin(theta)", "-l cos(theta)"]', 'position = ["l sin(theta)", "-l cos(theta)"]\ninertia = ["m", "m", "m"]\nangles = ["theta", 0, 0]'), "a rigid body in space: give x, y and z"),
 ]  # fmt: skip
 
 

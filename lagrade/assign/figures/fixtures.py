@@ -15,7 +15,9 @@ import sympy as sp
 from lagrade.assign.figures.geometry import Geometry
 from lagrade.assign.figures.primitives import arc_arrow, incline_angle, pivot, put_text
 from lagrade.assign.figures.style import ACCENT, GREY, INK
+from lagrade.mechanics import lagrange as mech
 from lagrade.mechanics.figure import Anchor, Fixture
+from lagrade.mechanics.scene import as_expr
 from lagrade.notation.printer import name_latex
 
 _FILL = "#e4e4e4"
@@ -64,14 +66,16 @@ def rope(ax: Any, unit: float, pts: np.ndarray) -> None:
     ax.plot(*pts.T, color=INK, linewidth=1.0, zorder=2)
 
 
-def pulley(ax: Any, unit: float, centre: np.ndarray, radius: float) -> None:
-    """A pulley on its axle, hung from a hatched ceiling by a strut."""
+def pulley(ax: Any, unit: float, centre: np.ndarray, radius: float, fixed: bool = True) -> None:
+    """A pulley on its axle: a fixed one hung from a hatched ceiling by a strut, a moving one
+    (centred on a body, or where a coordinate puts it) on its own, held by its rope."""
     from matplotlib.patches import Circle
 
-    top = centre + np.array([0.0, radius + 0.12 * unit])
-    ax.plot(*np.array([centre, top]).T, color=INK, linewidth=1.4, zorder=2)
-    half = np.array([max(radius, 0.06 * unit), 0.0])
-    hatched(ax, unit, top - half, top + half, side=1)
+    if fixed:
+        top = centre + np.array([0.0, radius + 0.12 * unit])
+        ax.plot(*np.array([centre, top]).T, color=INK, linewidth=1.4, zorder=2)
+        half = np.array([max(radius, 0.06 * unit), 0.0])
+        hatched(ax, unit, top - half, top + half, side=1)
     ax.add_patch(Circle(tuple(centre), radius, facecolor=_FILL, edgecolor=INK, lw=1.2, zorder=3))
     ax.plot(*centre, marker="o", markersize=3, color=INK, zorder=4)
 
@@ -130,7 +134,17 @@ def anchor(g: Geometry, anchor: Anchor) -> np.ndarray:
     return np.array([g.number(c) for c in g.project(anchor)])
 
 
-def _draw(g: Geometry, f: Fixture, pts: np.ndarray, ns: SimpleNamespace) -> Callable:
+def moves(g: Geometry, anchor: Anchor) -> bool:
+    """The anchor moves with the system: a body's name, or a point a coordinate or t places."""
+    if isinstance(anchor, str):
+        return True
+    moving = [j.q for j in g.jets] + [mech.t]
+    return any(as_expr(c).has(s) for c in anchor for s in moving)
+
+
+def _draw(
+    g: Geometry, f: Fixture, pts: np.ndarray, ns: SimpleNamespace, fixed: bool = True
+) -> Callable:
     """The drawing operation of one fixture, its anchors already numbers."""
     label = f"${name_latex(f.label)}$" if f.label else ""
     if f.kind == "spring":
@@ -139,7 +153,7 @@ def _draw(g: Geometry, f: Fixture, pts: np.ndarray, ns: SimpleNamespace) -> Call
         return lambda ax, u: rope(ax, u, pts)
     if f.kind == "pulley":
         radius = g.number(f.radius(ns)) if f.radius else 0.05 * g.scale
-        return lambda ax, u: pulley(ax, u, pts[0], radius)
+        return lambda ax, u: pulley(ax, u, pts[0], radius, fixed)
     if f.kind == "wall":
         return lambda ax, u: hatched(ax, u, pts[0], pts[-1], f.side)
     if f.kind == "surface":
@@ -161,6 +175,8 @@ def plan_fixtures(
     """Every fixture the hint declares, as a drawing operation of its kind; its anchors count
     toward the figure's extent."""
     for k, f in enumerate(g.hint.fixtures(ns)):
-        pts = np.array([anchor(g, a) for a in f.points(ns)])
+        anchors = f.points(ns)
+        pts = np.array([anchor(g, a) for a in anchors])
         add_points(pts)
-        add(f.kind, f.body or f.label or f"{f.kind}{k + 1}", _draw(g, f, pts, ns))
+        fixed = not moves(g, anchors[0])
+        add(f.kind, f.body or f.label or f"{f.kind}{k + 1}", _draw(g, f, pts, ns, fixed))

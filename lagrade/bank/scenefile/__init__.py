@@ -139,7 +139,13 @@ def presentations(scene: Scene) -> list[dict[str, str]]:
 
 def _check_presentations(scene: Scene, problems: Problems) -> None:
     """Each presentation valid (`SceneVariant.validate`), its quantities closed forms in the
-    parameters."""
+    parameters; the value pools able to keep the relations (b < R)."""
+    if scene.relations:
+        try:
+            scene.variant(0)
+        except SceneError as error:
+            for p in error.problems:
+                problems.add("", p)
     for options in presentations(scene):
         where = "".join(f" (with {o} = {c})" for o, c in options.items())
         try:

@@ -29,6 +29,7 @@ from lagrade.mechanics.scene import (
     Quantity,
     RigidBody,
     Scene,
+    SpatialRigidBody,
 )
 
 
@@ -41,9 +42,19 @@ class _Body:
     position: tuple[sp.Expr, ...]
     inertia: sp.Expr | None = None
     angle: sp.Expr | None = None
+    moments: tuple[sp.Expr, ...] | None = None
+    angles: tuple[sp.Expr, ...] | None = None
 
-    def make(self, put: Callable[[sp.Expr], sp.Expr]) -> PointMass | RigidBody:
+    def make(self, put: Callable[[sp.Expr], sp.Expr]) -> PointMass | RigidBody | SpatialRigidBody:
         position = tuple(put(x) for x in self.position)
+        if self.moments is not None and self.angles is not None:
+            return SpatialRigidBody(
+                self.name,
+                put(self.mass),
+                position,  # type: ignore[arg-type]
+                tuple(put(x) for x in self.moments),  # type: ignore[arg-type]
+                tuple(put(x) for x in self.angles),  # type: ignore[arg-type]
+            )
         if self.inertia is None or self.angle is None:
             return PointMass(self.name, put(self.mass), position)
         return RigidBody(self.name, put(self.mass), position, put(self.inertia), put(self.angle))  # type: ignore[arg-type]
@@ -106,6 +117,12 @@ def assemble(scene_id: str, d: Declaration, source: str, problems: Problems) -> 
     _body_names(d, problems)
     potential = reader.read(d.potential, "potential", scene_bodies)
     lagrangian = reader.read(d.lagrangian, "lagrangian")
+    relations = [
+        (reader.read(small, "relation"), reader.read(large, "relation"))
+        for small, large in d.relations
+    ]
+    dissipation = reader.read(d.dissipation, "dissipation")
+    forces = {c: reader.read(x, "dissipation") for c, x in d.forces.items()}
     constraints = [reader.read(x, "constraint", scene_bodies) for x in d.constraints]
     quantities = {q.name: reader.read(q.value, "quantity") for q in d.quantities}
     claims = {q.name: read_claim(q, d, reader, problems) for q in d.quantities if q.check}
@@ -118,6 +135,10 @@ def assemble(scene_id: str, d: Declaration, source: str, problems: Problems) -> 
             problems.add("potential", "gravity needs a parameter g (gravitational acceleration)")
     _statement_fields(d, problems)
     if problems.blocking or None in bodies or None in constraints or None in quantities.values():
+        return None
+    if (d.dissipation is not None and dissipation is None) or None in forces.values():
+        return None
+    if any(None in pair for pair in relations):
         return None
     if any(
         None in c.constraints or None in c.bodies for cs in choices.values() for c in cs.values()
@@ -134,6 +155,10 @@ def assemble(scene_id: str, d: Declaration, source: str, problems: Problems) -> 
         scene_kwargs["bodies"] = lambda s: _bodies(s, sub, bodies)  # type: ignore[arg-type]
         scene_kwargs["potential"] = lambda s, made: _potential(s, sub, potential, made, g)
         scene_kwargs["constraints"] = lambda s, c: _constraints(s, sub, constraints)  # type: ignore[arg-type]
+    if dissipation is not None:
+        scene_kwargs["dissipation"] = lambda s: _put(sub(s))(dissipation)
+    if forces:
+        scene_kwargs["forces"] = lambda s: {c: _put(sub(s))(q) for c, q in forces.items()}
     wording = {
         o: {c.name: c.wording or c.name for c in decls}
         for o, decls in d.options.items()
@@ -145,8 +170,11 @@ def assemble(scene_id: str, d: Declaration, source: str, problems: Problems) -> 
             title=d.title,
             statement=d.statement,
             coordinates=tuple(d.coordinates),
+            coordinate_domains=dict(d.domains),
+            relations=tuple(large - small for small, large in relations),  # type: ignore[operator]
             parameters=parameters,
             renames=dict(d.renames),
+            rename_sets=tuple(d.rename_sets),
             options={o: tuple(c.name for c in decls) for o, decls in d.options.items()},
             quantities=tuple(
                 Quantity(
@@ -172,6 +200,13 @@ def assemble(scene_id: str, d: Declaration, source: str, problems: Problems) -> 
 
 
 def _read_body(b: BodyDecl, reader: Reader) -> _Body | None:
+    if b.moments is not None and b.angles is not None:
+        read = [reader.read(x, "body") for x in [b.mass, *b.position, *b.moments, *b.angles]]
+        if any(x is None for x in read):
+            return None
+        return _Body(
+            b.name, read[0], tuple(read[1:4]), moments=tuple(read[4:7]), angles=tuple(read[7:10])
+        )  # type: ignore[arg-type]
     fields = [b.mass, *b.position] + ([b.inertia, b.angle] if b.inertia is not None else [])
     read = [reader.read(x, "body") for x in fields]
     if any(x is None for x in read):
@@ -210,6 +245,9 @@ def _potential(
             cartesian[sp.Symbol(f"{axis}_{b.name}", real=True)] = value
         if isinstance(b, RigidBody):
             cartesian[sp.Symbol(f"phi_{b.name}", real=True)] = b.angle
+        if isinstance(b, SpatialRigidBody):
+            for a, e in zip(b.ANGLES, b.angles, strict=True):
+                cartesian[sp.Symbol(f"{a}_{b.name}", real=True)] = e
     gravity = sp.Symbol("gravity", real=True)
     if V.has(gravity):
         cartesian[gravity] = sum((b.mass * g * b.position[-1] for b in bodies), sp.S.Zero)

@@ -171,7 +171,9 @@ def check_claim(variant: Any, claim: Claim) -> list[str]:
         rng = random.Random(1000 + n)
         point = dict(params)
         for j in variant.jets:
-            point[j.q] = claim.at.get(j.q, sp.Float(rng.uniform(0.2, 1.2), _DIGITS))
+            domain = variant.coordinate_domains.get(j.name)  # where the coordinate lives
+            span = domain.sample_range() if domain is not None else (0.2, 1.2)
+            point[j.q] = claim.at.get(j.q, sp.Float(rng.uniform(*span), _DIGITS))
             point[j.dot] = claim.at.get(j.dot, sp.Float(rng.uniform(-1.0, 1.0), _DIGITS))
         point[mech.t] = sp.Float(rng.uniform(0, 1), _DIGITS)
         try:

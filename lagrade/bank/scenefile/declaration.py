@@ -25,18 +25,22 @@ TOP_KEYS = (
     "statement",
     "tags",
     "coordinates",
+    "domains",
     "renames",
     "parameters",
+    "relations",
     "bodies",
     "potential",
     "lagrangian",
     "constraints",
+    "dissipation",
+    "forces",
     "options",
     "quantities",
     "figure",
 )
 PARAMETER_KEYS = ("domain", "unit", "values", "description")
-BODY_KEYS = ("mass", "position", "inertia", "angle")
+BODY_KEYS = ("mass", "position", "inertia", "angle", "angles")
 CHOICE_KEYS = ("wording", "let", "bodies", "constraints", "figure")
 QUANTITY_KEYS = ("description", "value", "unit", "check")
 CHECK_KEYS = ("at", "accelerations", "frequencies")
@@ -53,6 +57,7 @@ LIMITS = {
     "quantities": 32,
     "tags": 16,
     "renames": 8,
+    "relations": 16,
 }
 MAX_TEXT = 5_000  # characters of a title, statement, wording or description
 MAX_VALUES = 64  # numbers in a parameter's value pool
@@ -74,6 +79,9 @@ class BodyDecl:
     position: list[Text]
     inertia: Text | None = None
     angle: Text | None = None
+    #: A rigid body in space: its principal moments (I₁, I₂, I₃) and Z-X-Z Euler angles.
+    moments: list[Text] | None = None
+    angles: list[Text] | None = None
 
 
 @dataclass
@@ -116,12 +124,21 @@ class Declaration:
     statement: str = ""
     tags: tuple[str, ...] = ()
     coordinates: list[str] = field(default_factory=list)
+    #: Where each coordinate lives (`r = "positive"`): the coordinates without one are real.
+    domains: dict[str, Domain] = field(default_factory=dict)
     renames: dict[str, tuple[str, ...]] = field(default_factory=dict)
+    #: Renames as consistent sets (`[["x", "y"], ["q_1", "q_2"]]`): a variant takes one whole.
+    rename_sets: list[tuple[str, ...]] = field(default_factory=list)
     parameters: list[ParameterDecl] = field(default_factory=list)
+    #: Inequalities between parameters (`b < R`), each as (smaller side, larger side).
+    relations: list[tuple[Text, Text]] = field(default_factory=list)
     bodies: list[BodyDecl] = field(default_factory=list)
     potential: Text | None = None
     lagrangian: Text | None = None
     constraints: list[Text] = field(default_factory=list)
+    #: Rayleigh's dissipation function F(q, q̇, t), and given generalized forces Q_j by coordinate.
+    dissipation: Text | None = None
+    forces: dict[str, Text] = field(default_factory=dict)
     options: dict[str, list[ChoiceDecl]] = field(default_factory=dict)
     quantities: list[QuantityDecl] = field(default_factory=list)
     figure: dict[str, Any] = field(default_factory=dict)
@@ -130,6 +147,8 @@ class Declaration:
 def cartesian_axes(body: BodyDecl) -> tuple[str, ...]:
     """The Cartesian names a body brings (`x`, `y`, `z`, and `phi` for a rigid body), as the
     transformation part names them (`x_bead`, `phi_wheel`)."""
+    if body.angles is not None:
+        return ("x", "y", "z", "phi", "theta", "psi")
     return ("x", "y", "z", "phi") if body.inertia is not None else ("x", "y", "z")
 
 
@@ -236,7 +255,9 @@ def read_declaration(data: Mapping[str, Any], problems: Problems) -> Declaration
     tags = _list(data.get("tags", []), "tags", problems, LIMITS["tags"]) or []
     d.tags = tuple(t for i, t in enumerate(tags) if _name(t, f"tags[{i + 1}]", "tag", problems))
     _coordinates(data, d, problems)
+    _domains(data, d, problems)
     _parameters(data, d, problems)
+    _relations(data, d, problems)
     _renames(data, d, problems)
     raw_bodies = data.get("bodies", {})
     if (table := _table(raw_bodies, "bodies", problems)) is not None:
@@ -245,6 +266,7 @@ def read_declaration(data: Mapping[str, Any], problems: Problems) -> Declaration
         if key in data:
             setattr(d, key, expression(data[key], key, problems))
     d.constraints = _expressions(data.get("constraints", []), "constraints", problems)
+    _dissipation(data, d, problems)
     if d.lagrangian is not None:
         for key in ("bodies", "potential", "constraints"):
             if key in data:
@@ -287,6 +309,57 @@ def _coordinates(data: Mapping[str, Any], d: Declaration, problems: Problems) ->
                 d.coordinates.append(name)
     if raw is not None and not items:
         problems.add("coordinates", "empty: a scene has at least one coordinate")
+
+
+def _domains(data: Mapping[str, Any], d: Declaration, problems: Problems) -> None:
+    """`domains = { r = "positive", theta = "(-pi/2, pi/2)" }`: where each coordinate lives."""
+    table = _table(data.get("domains", {}), "domains", problems) or {}
+    for name, text in table.items():
+        key = f"domains.{name}"
+        if name not in d.coordinates:
+            problems.add(key, f"{_shown(name)} is not a coordinate")
+            continue
+        try:
+            d.domains[name] = Domain.parse(text)
+        except LagradeError as error:
+            problems.add(key, str(error))
+
+
+_INEQUALITY = re.compile(r"(<=|>=|<|>)")
+
+
+def _relations(data: Mapping[str, Any], d: Declaration, problems: Problems) -> None:
+    """`relations = ["b < R"]`: each one inequality between two expressions in the parameters
+    (`<` and `<=` alike: a drawn value never lands on the boundary)."""
+    items = _list(data.get("relations", []), "relations", problems, LIMITS["relations"]) or []
+    for i, raw in enumerate(items, 1):
+        key = f"relations[{i}]"
+        if not isinstance(raw, str):
+            problems.add(key, f'{_shown(raw)} is not an inequality such as "b < R"')
+            continue
+        parts = _INEQUALITY.split(raw)
+        if len(parts) != 3 or not parts[0].strip() or not parts[2].strip():
+            problems.add(key, f'{_shown(raw)} is not one inequality such as "b < R"')
+            continue
+        left, sign, right = parts
+        small, large = (left, right) if sign.startswith("<") else (right, left)
+        d.relations.append((Text(key, small), Text(key, large)))
+
+
+def _dissipation(data: Mapping[str, Any], d: Declaration, problems: Problems) -> None:
+    """Rayleigh's function `dissipation = "b x_dot^2/2"` and the generalized forces
+    `forces = { x = "F_0 cos(omega t)" }`, one per coordinate they act along."""
+    if "dissipation" in data:
+        d.dissipation = expression(data["dissipation"], "dissipation", problems)
+    table = _table(data.get("forces", {}), "forces", problems) or {}
+    for name, value in table.items():
+        key = f"forces.{name}"
+        if name not in d.coordinates:
+            problems.add(
+                key, f"{_shown(name)} is not a coordinate (a force is given per coordinate)"
+            )
+        elif (text := expression(value, key, problems)) is not None:
+            d.forces[name] = text
 
 
 def _parameters(data: Mapping[str, Any], d: Declaration, problems: Problems) -> None:
@@ -334,6 +407,9 @@ def _values(raw: Any, key: str, domain: Domain, problems: Problems) -> tuple[flo
 
 
 def _renames(data: Mapping[str, Any], d: Declaration, problems: Problems) -> None:
+    if isinstance(data.get("renames"), list):
+        _rename_sets(data["renames"], d, problems)
+        return
     table = _table(data.get("renames", {}), "renames", problems) or {}
     for coordinate, names in table.items():
         key = f"renames.{coordinate}"
@@ -354,6 +430,32 @@ def _renames(data: Mapping[str, Any], d: Declaration, problems: Problems) -> Non
             problems.add(key, "a name is offered twice")
             continue
         d.renames[coordinate] = tuple(items)
+
+
+def _rename_sets(raw: list, d: Declaration, problems: Problems) -> None:
+    """`renames = [["x", "y"], ["q_1", "q_2"]]`: each set names every coordinate, in order, and a
+    variant takes one set whole (no `q_1` beside `y`); the first set is the coordinates."""
+    sets = _list(raw, "renames", problems, LIMITS["renames"]) or []
+    found: list[tuple[str, ...]] = []
+    for i, names in enumerate(sets, 1):
+        key = f"renames[{i}]"
+        if not isinstance(names, list) or len(names) != len(d.coordinates):
+            problems.add(
+                key, f"a set of names gives one name per coordinate ({len(d.coordinates)})"
+            )
+            return
+        if not all(_name(n, key, "coordinate", problems) for n in names):
+            return
+        if len(set(names)) != len(names) or tuple(names) in found:
+            problems.add(key, "a name is given twice, or the set is")
+            return
+        found.append(tuple(names))
+    if found and found[0] != tuple(d.coordinates):
+        problems.add("renames[1]", f"the first set must be the coordinates {d.coordinates}")
+        return
+    d.rename_sets = found
+    for k, coordinate in enumerate(d.coordinates):
+        d.renames[coordinate] = tuple(dict.fromkeys(names[k] for names in found))
 
 
 def _bodies(table: Mapping[str, Any], where: str, problems: Problems) -> list[BodyDecl]:
@@ -380,6 +482,11 @@ def _bodies(table: Mapping[str, Any], where: str, problems: Problems) -> list[Bo
             for i, x in enumerate(raw, 1):
                 if (text := expression(x, f"{key}.position[{i}]", problems)) is not None:
                     position.append(text)
+        if "angles" in spec:  # a rigid body in space
+            spatial = _spatial(spec, key, raw, problems)
+            if mass is not None and spatial is not None and len(position) == 3:
+                bodies.append(BodyDecl(name, key, mass, position, None, None, *spatial))
+            continue
         rigid = [k for k in ("inertia", "angle") if k in spec]
         inertia = angle = None
         if len(rigid) == 1:
@@ -393,6 +500,34 @@ def _bodies(table: Mapping[str, Any], where: str, problems: Problems) -> list[Bo
         if mass is not None and len(position) == len(raw or ()) and position:
             bodies.append(BodyDecl(name, key, mass, position, inertia, angle))
     return bodies
+
+
+def _spatial(
+    spec: Mapping[str, Any], key: str, position: Any, problems: Problems
+) -> tuple[list[Text], list[Text]] | None:
+    """A rigid body in space: `inertia` its 3 principal moments about the centre of mass,
+    `angles` its 3 Z-X-Z Euler angles (φ, θ, ψ), `position` its centre of mass (x, y, z)."""
+    found = []
+    for name, what in (("inertia", "principal moments I_1, I_2, I_3"), ("angles", "Euler angles")):
+        raw = spec.get(name)
+        if not isinstance(raw, list) or len(raw) != 3:
+            problems.add(
+                f"{key}.{name}",
+                f"a rigid body in space declares a list of 3 {what} (angles: phi, theta, psi, "
+                "turned about z, then the new x, then the body's axis 3)",
+            )
+            return None
+        texts = [expression(x, f"{key}.{name}[{i}]", problems) for i, x in enumerate(raw, 1)]
+        if None in texts:
+            return None
+        found.append(texts)
+    if "angle" in spec:
+        problems.add(f"{key}.angle", "a rigid body in space declares angles, not angle")
+        return None
+    if not isinstance(position, list) or len(position) != 3:
+        problems.add(f"{key}.position", "a rigid body in space: give x, y and z")
+        return None
+    return found[0], found[1]  # type: ignore[return-value]
 
 
 def _expressions(raw: Any, key: str, problems: Problems) -> list[Text]:

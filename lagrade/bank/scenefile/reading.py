@@ -26,9 +26,11 @@ ALLOWED = {
     "body": {"coordinate", "parameter", "time", "let"},
     "potential": {"coordinate", "velocity", "parameter", "time", "let", "cartesian", "gravity"},
     "lagrangian": {"coordinate", "velocity", "parameter", "time", "let"},
+    "dissipation": {"coordinate", "velocity", "parameter", "time", "let"},
     "constraint": {"parameter", "time", "let", "cartesian"},
     "let": {"coordinate", "velocity", "parameter", "time"},
     "quantity": {"parameter", "let"},
+    "relation": {"parameter"},
     "figure": {"coordinate", "parameter", "time", "let"},
     "state": {"coordinate", "velocity", "parameter", "let", "quantity"},
 }
@@ -49,11 +51,14 @@ _FIELD = {
     "potential": "a potential uses the coordinates and velocities, the bodies' Cartesian "
     "coordinates (x_bead, …), gravity, parameters, t and the names options bind",
     "lagrangian": "a Lagrangian uses the coordinates and velocities, parameters and t",
+    "dissipation": "a dissipation function or a generalized force uses the coordinates and "
+    "velocities, parameters, t and the names options bind",
     "constraint": "a constraint is written in the bodies' Cartesian coordinates (x_bead, …), "
     "parameters and t",
     "let": "a name an option binds is an expression in the coordinates, velocities, parameters "
     "and t",
     "quantity": "a quantity is a closed form in the parameters",
+    "relation": "a relation is an inequality between expressions in the parameters",
     "figure": "a figure's expressions use the coordinates, parameters, t and the names options "
     "bind",
     "state": "a state gives coordinates and velocities in the parameters and quantities",

@@ -24,6 +24,13 @@ position {x} and the angle {theta} between the pendulum and the {angle_from}."""
 # coordinate itself).
 coordinates = ["x", "theta"]
 renames = { x = ["x", "s"], theta = ["theta", "phi"] }
+# Where a coordinate lives, when a constraint holds only there (a length under a square root:
+# domains = { r = "positive" }); the others are real.
+
+# Friction and drives, if any: Rayleigh's dissipation function and generalized forces enter the
+# equations of motion as E_j + dF/dq_j_dot = Q_j:
+# dissipation = "b x_dot^2/2"
+# forces = { x = "F_0 cos(omega t)" }
 
 # V: "gravity" is m g (height) for every body (y up in a plane, z up in space); or write an
 # expression in the coordinates, velocities, parameters, t and the bodies' Cartesian
@@ -47,7 +54,8 @@ g = { domain = "positive", unit = "m/s^2", values = [9.81], description = "free-
 
 # Bodies: a point mass has a mass and a position of 2 (x, y; y up) or 3 (x, y, z; z up)
 # components in the coordinates, parameters and t. A rigid body adds inertia (about its centre
-# of mass) and angle (how far it is turned).
+# of mass) and angle (how far it is turned); one turning in space gives 3 principal moments as
+# inertia and its Z-X-Z Euler angles as angles = ["phi", "theta", "psi"].
 [bodies.collar]
 mass = "M"
 position = ["x", 0]

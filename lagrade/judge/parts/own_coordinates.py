@@ -124,6 +124,16 @@ def _choose(problem: Problem, positions: Mapping[str, sp.Expr], canonical: str) 
             if relation.same:
                 return Choice("statement", problem)
             description = relation.description
+            if problem.variant.scene.nonconservative:
+                # F and Q are written in the statement's coordinates and velocities; carrying
+                # them over would need a pullback like a potential's, not built for them
+                return Choice(
+                    "not_followed",
+                    problem,
+                    description,
+                    "this problem's dissipation and forces are written in the statement's "
+                    "coordinates",
+                )
             pullback, missing = _pullback(problem, relation.closed_form, positions)
             if pullback is None:
                 names = ", ".join(symbol_text(j.name) for j in missing)
@@ -145,6 +155,7 @@ def _choose(problem: Problem, positions: Mapping[str, sp.Expr], canonical: str) 
                 problem.values,
                 lagrangian=variant.lagrangian,
                 variant=variant,
+                relations=problem.relations,
                 unit=problem.unit,
                 budget=budget,
             )

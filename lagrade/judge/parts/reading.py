@@ -452,8 +452,11 @@ def read_single(problem: Problem, answer: Any, part: str, label: str) -> Read:
 
 def own_lagrangian(problem: Problem, given: Mapping | None) -> Compiled | None:
     """The student's own L from `given`, compiled, when it parses (follow-through is best
-    effort)."""
+    effort). None for a scene with dissipation or given forces: its motion is not the own L's
+    alone, and an own L's motion would "conserve" what the damped motion does not."""
     if not given or "lagrangian" not in given:
+        return None
+    if problem.variant is not None and problem.variant.scene.nonconservative:
         return None
     try:
         with reading_notes():  # the notes belong to the lagrangian part, not to this one
