@@ -11,7 +11,7 @@ from dataclasses import dataclass
 import sympy as sp
 from sympy.simplify.fu import TR10i
 
-from lagrade.mechanics import lagrange as mech
+import lagrade.mechanics.lagrange as mech
 
 AXES = ("x", "y", "z")
 

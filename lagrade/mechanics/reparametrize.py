@@ -23,7 +23,7 @@ from functools import cached_property
 
 import sympy as sp
 
-from lagrade.mechanics import lagrange as mech
+import lagrade.mechanics.lagrange as mech
 from lagrade.mechanics.scene import (
     AXES,
     Body,

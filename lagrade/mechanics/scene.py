@@ -20,7 +20,7 @@ from typing import Any
 import sympy as sp
 
 from lagrade.errors import SceneError
-from lagrade.mechanics import lagrange as mech
+import lagrade.mechanics.lagrange as mech
 
 # the bodies live in `bodies`; their names stay importable from here, where scenes are made
 from lagrade.mechanics.bodies import (  # noqa: F401
