@@ -23,7 +23,7 @@ from lagrade.judge.parts.reading import Read
 from lagrade.judge.problem import Problem
 from lagrade.judge.rows import equation_rows
 from lagrade.judge.sampling import Points
-from lagrade.judge.situation import angles, rounded, situation, symbol_text
+from lagrade.judge.situation import coordinate_units, rounded, situation, symbol_text
 from lagrade.judge.tolerances import AS_TYPED, SAME_VALUE
 from lagrade.judge.verdict import Verdict
 
@@ -136,6 +136,9 @@ def _handout_point(problem: Problem, points: Points, i: int, symbols: set) -> di
     motion = {j.q for j in problem.jets} | {j.dot for j in problem.jets}
     if not symbols & motion:
         return env
+    # the state as the sentence quotes it (three significant figures: `situation.rounded`), so
+    # that what is computed there is what a student computes from the quoted numbers
+    env.update({s: np.array([float(f"{env[s][0]:.3g}")]) for s in motion if s in env})
     if any(s not in problem.values for s in problem.domains):
         return None
     env.update({s: np.array([float(v)]) for s, v in problem.values.items()})
@@ -250,7 +253,8 @@ def acceleration_text(
 
 
 def _acceleration_unit(problem: Problem, name: str) -> str:
-    return " rad/s²" if name in angles(problem) else ""
+    unit = coordinate_units(problem)[name][2]
+    return f" {unit}" if unit else ""
 
 
 def method_name(*outcomes: Outcome) -> str:
