@@ -19,8 +19,8 @@ from typing import Any
 
 import sympy as sp
 
-from lagrade.errors import SceneError
 import lagrade.mechanics.lagrange as mech
+from lagrade.errors import SceneError
 
 # the bodies live in `bodies`; their names stay importable from here, where scenes are made
 from lagrade.mechanics.bodies import (  # noqa: F401
