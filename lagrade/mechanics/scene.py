@@ -24,6 +24,7 @@ from lagrade.errors import SceneError
 from lagrade.mechanics import lagrange as mech
 from lagrade.mechanics.domains import Domain
 from lagrade.mechanics.figure import FigureHint
+from lagrade.mechanics.vanishing import without_absent
 
 AXES = ("x", "y", "z")
 #: What a scene given by its Lagrangian alone can be asked (everything that follows from L).
@@ -300,6 +301,17 @@ class SceneVariant:
         return {p.name: p.domain for p in self.scene.parameters}
 
     @cached_property
+    def ranges(self) -> dict[sp.Symbol, tuple[float, float]]:
+        """Where the facts (`vanishing`) draw each parameter: inside its domain."""
+        return {s: self.domains[n].sample_range() for n, s in self.parameter_symbols.items()}
+
+    def _written_plainly(self, expr: sp.Expr) -> sp.Expr:
+        """expr without the coordinates and t that it prints but does not depend on (by values):
+        a potential in Cartesian form keeps sqrt(r² sin²θ + r² cos²θ), which is |r|. The key,
+        the facts and the judge then read one L in which a cyclic coordinate is not printed."""
+        return without_absent(expr, [*(j.q for j in self.jets), mech.t], self.ranges)
+
+    @cached_property
     def namespace(self) -> SimpleNamespace:
         """What a scene's declarations see: canonical names bound to this variant's symbols."""
         ns: dict[str, Any] = dict(self.parameter_symbols)
@@ -478,25 +490,27 @@ class SceneVariant:
         """T = Σ ½ m |ṙ|² (+ ½ I φ̇² for rigid bodies), expanded and trig-simplified."""
         self._needs_bodies("T")
         T = sum((b.kinetic_energy(self.jets) for b in self.bodies), sp.S.Zero)
-        return _tidy(T)
+        return self._written_plainly(_tidy(T))
 
     @cached_property
     def potential_energy(self) -> sp.Expr:
         """V as declared (a generalized potential may depend on velocities)."""
         self._needs_bodies("V")
-        return sp.expand(as_expr(self.scene.potential(self.namespace, self.bodies)))
+        V = sp.expand(as_expr(self.scene.potential(self.namespace, self.bodies)))
+        return self._written_plainly(V)
 
     @cached_property
     def lagrangian(self) -> sp.Expr:
         """L = T − V, or the scene's own L (expanded) when it is given by its Lagrangian."""
         if self.scene.lagrangian is not None:
-            return sp.expand(as_expr(self.scene.lagrangian(self.namespace)))
-        return mech.lagrangian(self.kinetic_energy, self.potential_energy)
+            given = sp.expand(as_expr(self.scene.lagrangian(self.namespace)))
+            return self._written_plainly(given)
+        return self._written_plainly(mech.lagrangian(self.kinetic_energy, self.potential_energy))
 
     @cached_property
     def system(self) -> mech.LagrangianSystem:
         """The Euler–Lagrange machinery for this L (momenta, EOM, cyclic, h, …), all lazy."""
-        return mech.LagrangianSystem(self.lagrangian, self.jets)
+        return mech.LagrangianSystem(self.lagrangian, self.jets, self.ranges)
 
     # --- conveniences -------------------------------------------------------------------------
     @property
