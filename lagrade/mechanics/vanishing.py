@@ -8,7 +8,8 @@ The rule. The expression is evaluated with mpmath at `POINTS` seeded points insi
 its symbols, at `LOW_DIGITS` and again at `HIGH_DIGITS` significant digits (the points are exact
 binary numbers, so both evaluations see the same point). At a point the value is *rounding
 noise* when it shrinks with the precision (|v_high| ≤ `SHRINK` · |v_low|) or is negligible
-against the expression's own terms (|v_high| ≤ `NEGLIGIBLE` · Σ|term|); a value that is not
+against the size of its terms (|v_high| ≤ `NEGLIGIBLE` · size, the size summing the sizes of
+the terms of every sum in it, so that no cancellation hides it); a value that is not
 noise at any point is a proof, up to evaluation error far below these tolerances, that the
 expression is not zero there. The expression is identically zero when it is noise at every
 point that has a value (at least `MIN_POINTS` of them): a true nonzero value would have to lie
@@ -127,6 +128,18 @@ def sample_points(
     return points
 
 
+def _size(expr: sp.Basic, point: Mapping, memo: dict) -> mpmath.mpf:
+    """The size of expr's value without cancellation: sums of sizes for sums, products for
+    products, |value| for anything else (what rounding errors are measured against)."""
+    if expr.is_Add:
+        return mpmath.fsum(_size(a, point, memo) for a in expr.args)
+    if expr.is_Mul:
+        return mpmath.fprod(_size(a, point, memo) for a in expr.args)
+    if expr.is_Pow and expr.exp.is_Integer and expr.exp > 0:
+        return _size(expr.base, point, memo) ** int(expr.exp)
+    return abs(_value(expr, point, memo))
+
+
 def _noise_at(expr: sp.Expr, point: Mapping[sp.Symbol, float]) -> bool:
     """Whether expr's value at `point` is rounding noise (see the module's rule); _Undefined
     when it has no value there."""
@@ -135,8 +148,7 @@ def _noise_at(expr: sp.Expr, point: Mapping[sp.Symbol, float]) -> bool:
     with mpmath.workdps(HIGH_DIGITS):
         at, memo = {s: mpmath.mpf(x) for s, x in point.items()}, {}
         high = _value(expr, at, memo)
-        terms = expr.args if expr.is_Add else (expr,)
-        size = mpmath.fsum(abs(_value(a, at, memo)) for a in terms)
+        size = _size(expr, at, memo)
     if high == 0:
         return True
     return abs(high) <= SHRINK * abs(low) or abs(high) <= NEGLIGIBLE * size
@@ -147,8 +159,10 @@ def identically_zero(expr: sp.Expr, ranges: Ranges | None = None, seed: int = 0)
     its symbols in their ranges, decided by its values at seeded points (the module's rule).
 
     >>> theta, r = sp.symbols("theta r", real=True)
-    >>> identically_zero(sp.diff(1 / sp.sqrt(r**2 * sp.sin(theta)**2 + r**2 * sp.cos(theta)**2), theta))
+    >>> identically_zero(sp.sin(2 * theta) - 2 * sp.sin(theta) * sp.cos(theta))
     True
+    >>> identically_zero(sp.sin(2 * theta) - sp.sin(theta) * sp.cos(theta))
+    False
     """
     expr = sp.sympify(expr) if isinstance(expr, int) else expr
     if expr == 0:

@@ -35,6 +35,7 @@ EXPORTS = {
         "RigidBody",
         "Scene",
         "SceneVariant",
+        "identically_zero",
         "jet",
         "total_derivative",
     ],
