@@ -8,6 +8,7 @@ from lagrade.judge.parts import PARTS, run_checker
 from lagrade.judge.problem import Problem, build_problem
 from lagrade.judge.verdict import Verdict
 from lagrade.judge.verify import verify_variant
+from lagrade.judge.worker import deriving
 
 __all__ = [
     "PARTS",
@@ -15,6 +16,7 @@ __all__ = [
     "Verdict",
     "build_problem",
     "check",
+    "deriving",
     "key_answer",
     "run_checker",
     "verify_variant",

@@ -35,7 +35,7 @@ from multiprocessing.connection import Connection, wait
 from multiprocessing.reduction import ForkingPickler
 from typing import Any
 
-from lagrade.errors import LagradeError
+from lagrade.errors import DerivationLimit, LagradeError
 
 _FORK = mp.get_context("fork")
 
@@ -49,6 +49,14 @@ ORPHAN_CHECK = 1.0
 #: Seconds of instructor-side work a question may take in one process (deriving its reference,
 #: sample points and, for wrong answers, its mistake catalogue): its `Budget`.
 PREPARE_LIMIT = 60.0
+
+
+#: What deriving one scene may take (`scene check`, `generate`, a request's own scene text):
+#: seconds of work and MiB of memory beyond what the process holds when it starts. The
+#: environment variables LAGRADE_DERIVE_SECONDS and LAGRADE_DERIVE_MEMORY_MIB lower or raise
+#: them (a test sets a small one).
+DERIVE_LIMIT = PREPARE_LIMIT
+DERIVE_MEMORY_MIB = 2048
 
 
 class PartTimeout(BaseException):
@@ -142,6 +150,55 @@ def time_limit(seconds: float | None):
     finally:
         signal.setitimer(signal.ITIMER_REAL, 0)
         signal.signal(signal.SIGALRM, previous)
+
+
+def derivation_limits() -> Limits:
+    """The seconds and memory a scene's derivation may take, read from the environment when it
+    says (LAGRADE_DERIVE_SECONDS, LAGRADE_DERIVE_MEMORY_MIB), else `DERIVE_LIMIT` and
+    `DERIVE_MEMORY_MIB`."""
+    seconds, memory = DERIVE_LIMIT, DERIVE_MEMORY_MIB
+    try:
+        seconds = float(os.environ.get("LAGRADE_DERIVE_SECONDS", seconds))
+        memory = int(os.environ.get("LAGRADE_DERIVE_MEMORY_MIB", memory))
+    except ValueError:
+        pass  # an unreadable setting keeps the defaults
+    return Limits(seconds=max(seconds, 0.01), memory_mib=max(memory, 1))
+
+
+@contextmanager
+def deriving(what: str, limits: Limits | None = None):
+    """Derive `what` (a scene, named as its reader knows it: "scene file ps/hoop.toml") under
+    the rule, in this process: the alarm after `limits.seconds` for Python-level work (sympy is
+    Python) and at most `limits.memory_mib` more address space; raise DerivationLimit, one
+    sentence naming `what` and what ran out. Default limits: `derivation_limits()`.
+
+    A scene file is text from outside like an answer: `(a + m + g + omega + r)^40` in a
+    position expands into 10⁵ terms and held `scene check` for minutes."""
+    limits = limits or derivation_limits()
+    previous = resource.getrlimit(resource.RLIMIT_AS)
+    try:
+        ceiling = _address_space_in_use() + limits.memory_mib * 1024 * 1024
+        hard = previous[1]
+        soft = ceiling if hard == resource.RLIM_INFINITY else min(ceiling, hard)
+        resource.setrlimit(resource.RLIMIT_AS, (soft, hard))
+    except (ValueError, OSError):
+        previous = None  # a platform without the limit still has the alarm
+    try:
+        with time_limit(limits.seconds):
+            yield
+    except PartTimeout:
+        raise DerivationLimit(
+            f"{what} could not be derived: its time ran out (limit {limits.seconds:g} s); "
+            "simplify its expressions"
+        ) from None
+    except MemoryError:
+        raise DerivationLimit(
+            f"{what} could not be derived: its memory ran out (limit {limits.memory_mib} MiB "
+            "more); simplify its expressions"
+        ) from None
+    finally:
+        if previous is not None:
+            resource.setrlimit(resource.RLIMIT_AS, previous)
 
 
 _parent: Connection | None = None  # set inside a worker: where deadline() reports to

@@ -54,6 +54,7 @@ EXPORTS = {
         "Verdict",
         "build_problem",
         "check",
+        "deriving",
         "key_answer",
         "run_checker",
         "verify_variant",
