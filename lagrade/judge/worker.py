@@ -191,7 +191,7 @@ def deriving(what: str, limits: Limits | None = None):
             f"{what} could not be derived: its time ran out (limit {limits.seconds:g} s); "
             "simplify its expressions"
         ) from None
-    except MemoryError:
+    except (MemoryError, SystemError):  # an allocation refused in C can surface as either
         raise DerivationLimit(
             f"{what} could not be derived: its memory ran out (limit {limits.memory_mib} MiB "
             "more); simplify its expressions"

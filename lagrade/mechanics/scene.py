@@ -305,12 +305,6 @@ class SceneVariant:
         """Where the facts (`vanishing`) draw each parameter: inside its domain."""
         return {s: self.domains[n].sample_range() for n, s in self.parameter_symbols.items()}
 
-    def _written_plainly(self, expr: sp.Expr) -> sp.Expr:
-        """expr without the coordinates and t that it prints but does not depend on (by values):
-        a potential in Cartesian form keeps sqrt(r² sin²θ + r² cos²θ), which is |r|. The key,
-        the facts and the judge then read one L in which a cyclic coordinate is not printed."""
-        return without_absent(expr, [*(j.q for j in self.jets), mech.t], self.ranges)
-
     @cached_property
     def namespace(self) -> SimpleNamespace:
         """What a scene's declarations see: canonical names bound to this variant's symbols."""
@@ -422,7 +416,7 @@ class SceneVariant:
                         problems.append(
                             f"bodies: {b.name}.{label} uses {s}, which is not a declared parameter"
                         )
-        V = self.potential_energy
+        V = self._declared_potential
         used |= V.free_symbols
         for s in sorted(V.free_symbols - known, key=str):
             problems.append(f"potential: uses {s}, which is not a declared parameter")
@@ -490,22 +484,50 @@ class SceneVariant:
         """T = Σ ½ m |ṙ|² (+ ½ I φ̇² for rigid bodies), expanded and trig-simplified."""
         self._needs_bodies("T")
         T = sum((b.kinetic_energy(self.jets) for b in self.bodies), sp.S.Zero)
-        return self._written_plainly(_tidy(T))
+        return _tidy(T)
+
+    @cached_property
+    def _declared_potential(self) -> sp.Expr:
+        """V as the scene declares it, expanded."""
+        self._needs_bodies("V")
+        return sp.expand(as_expr(self.scene.potential(self.namespace, self.bodies)))
 
     @cached_property
     def potential_energy(self) -> sp.Expr:
-        """V as declared (a generalized potential may depend on velocities)."""
-        self._needs_bodies("V")
-        V = sp.expand(as_expr(self.scene.potential(self.namespace, self.bodies)))
-        return self._written_plainly(V)
+        """V as declared (a generalized potential may depend on velocities), written without
+        the coordinates (and t) that L's facts show absent and V does not depend on either."""
+        V = self._declared_potential
+        return without_absent(V, self._absent, self.ranges) if self._absent else V
+
+    @cached_property
+    def _derived_lagrangian(self) -> sp.Expr:
+        """L = T − V, or the scene's own L, expanded, as derived (before `_absent` is written
+        out)."""
+        if self.scene.lagrangian is not None:
+            return sp.expand(as_expr(self.scene.lagrangian(self.namespace)))
+        return mech.lagrangian(self.kinetic_energy, self._declared_potential)
+
+    @cached_property
+    def _absent(self) -> list[sp.Symbol]:
+        """The coordinates (and t) L prints but does not depend on, by its facts (decided by
+        values: ∂L/∂q_j, which the equations of motion need anyway, shared by canonical form):
+        a potential in Cartesian form keeps sqrt(r² sin²θ + r² cos²θ), in which θ is absent."""
+        L = self._derived_lagrangian
+        facts = mech.LagrangianSystem(L, self.jets, self.ranges)
+        cyclic = set(facts.cyclic_coordinates)
+        absent = [j.q for j in self.jets if j.name in cyclic and L.has(j.q)]
+        if L.has(mech.t) and facts.is_time_independent:
+            absent.append(mech.t)
+        return absent
 
     @cached_property
     def lagrangian(self) -> sp.Expr:
-        """L = T − V, or the scene's own L (expanded) when it is given by its Lagrangian."""
-        if self.scene.lagrangian is not None:
-            given = sp.expand(as_expr(self.scene.lagrangian(self.namespace)))
-            return self._written_plainly(given)
-        return self._written_plainly(mech.lagrangian(self.kinetic_energy, self.potential_energy))
+        """L = T − V, or the scene's own L (expanded) when it is given by its Lagrangian, written
+        without the coordinates (and t) it prints but does not depend on (sqrt(r² sin²θ +
+        r² cos²θ) is |r|), each replaced by a value at which L is unchanged by values: the key,
+        the facts and the judge read one L in which a cyclic coordinate is not printed."""
+        L = self._derived_lagrangian
+        return without_absent(L, self._absent, self.ranges) if self._absent else L
 
     @cached_property
     def system(self) -> mech.LagrangianSystem:

@@ -14,7 +14,7 @@ noise at any point is a proof, up to evaluation error far below these tolerances
 expression is not zero there. The expression is identically zero when it is noise at every
 point that has a value (at least `MIN_POINTS` of them): a true nonzero value would have to lie
 more than 30 digits below the size of its terms at every random point to pass, while a true
-zero's rounding error drops by 30 orders between the two precisions. An expression that is
+zero's rounding error drops by 40 orders between the two precisions. An expression that is
 structurally 0 needs no points.
 
 What is evaluated here is only ever derived by lagrade (∂L/∂q of a scene's L, which the safe
@@ -34,9 +34,11 @@ POINTS = 6
 MIN_POINTS = 3
 #: Working precisions (significant decimal digits) of the two evaluations.
 LOW_DIGITS = 30
-HIGH_DIGITS = 60
-#: A value that shrinks by this factor from the low to the high precision is rounding noise.
-SHRINK = 1e-20
+HIGH_DIGITS = 70
+#: A value that shrinks by this factor from the low to the high precision is rounding noise (a
+#: true zero's shrinks by 10⁻⁴⁰, 10⁻²⁰ under a square root; a nonzero value's does not unless it
+#: lies 38 digits below the size of its terms).
+SHRINK = 1e-8
 #: A value this small against the sum of its terms' sizes is rounding noise.
 NEGLIGIBLE = 1e-45
 #: Where a symbol without a given range is drawn: a positive one in (0.5, 3), any other in
@@ -140,17 +142,24 @@ def _size(expr: sp.Basic, point: Mapping, memo: dict) -> mpmath.mpf:
     return abs(_value(expr, point, memo))
 
 
+def _at(expr: sp.Expr, point: Mapping[sp.Symbol, float], digits: int, memo: dict) -> object:
+    with mpmath.workdps(digits):
+        return _value(expr, {s: mpmath.mpf(x) for s, x in point.items()}, memo)
+
+
 def _noise_at(expr: sp.Expr, point: Mapping[sp.Symbol, float]) -> bool:
     """Whether expr's value at `point` is rounding noise (see the module's rule); _Undefined
-    when it has no value there."""
-    with mpmath.workdps(LOW_DIGITS):
-        low = _value(expr, {s: mpmath.mpf(x) for s, x in point.items()}, {})
-    with mpmath.workdps(HIGH_DIGITS):
-        at, memo = {s: mpmath.mpf(x) for s, x in point.items()}, {}
-        high = _value(expr, at, memo)
-        size = _size(expr, at, memo)
+    when it has no value there. A low-precision value that is exactly 0 says nothing of how
+    the noise shrinks: the middle precision stands in for it."""
+    low = _at(expr, point, LOW_DIGITS, {})
+    if low == 0:
+        low = _at(expr, point, (LOW_DIGITS + HIGH_DIGITS) // 2, {})
+    memo: dict = {}
+    high = _at(expr, point, HIGH_DIGITS, memo)
     if high == 0:
         return True
+    with mpmath.workdps(HIGH_DIGITS):
+        size = _size(expr, {s: mpmath.mpf(x) for s, x in point.items()}, memo)
     return abs(high) <= SHRINK * abs(low) or abs(high) <= NEGLIGIBLE * size
 
 
