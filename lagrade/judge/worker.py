@@ -25,6 +25,7 @@ import multiprocessing as mp
 import os
 import resource
 import signal
+import threading
 import time
 import traceback
 from collections import deque
@@ -174,6 +175,9 @@ def deriving(what: str, limits: Limits | None = None):
 
     A scene file is text from outside like an answer: `(a + m + g + omega + r)^40` in a
     position expands into 10⁵ terms and held `scene check` for minutes."""
+    if threading.current_thread() is not threading.main_thread():
+        yield  # the alarm rings in the main thread only: a thread's caller bounds its work
+        return
     limits = limits or derivation_limits()
     previous = resource.getrlimit(resource.RLIMIT_AS)
     try:
