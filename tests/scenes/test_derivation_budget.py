@@ -1,8 +1,9 @@
-"""A scene whose derivation runs out of time or memory (issue 35): `scene check` and `generate`
-refuse it in one sentence naming the scene and what ran out (exit status 2), and a request that
-carries it as `scene_text` gets a verdict saying the question — not the answer — could not be
-derived. The limits are the scene rule's (`lagrade.judge.worker.deriving`); the tests lower them
-with LAGRADE_DERIVE_SECONDS / LAGRADE_DERIVE_MEMORY_MIB so that they stay quick.
+"""A scene whose derivation runs out of time or memory (issue 35): `scene check`, `generate`
+and `bank show` refuse it in one sentence naming the scene and what ran out (exit status 2), and
+a request that carries it as `scene_text` gets a verdict saying the question — not the answer —
+could not be derived. The limits are the scene rule's (`lagrade.judge.worker.deriving`); the
+tests lower them with LAGRADE_DERIVE_SECONDS / LAGRADE_DERIVE_MEMORY_MIB so that they stay
+quick.
 
 The hostile position is the issue's: (a + m + g + omega + r)^40 expands into C(44, 4) = 135,751
 terms, which held `scene check` and `generate` past 100 s."""
@@ -57,6 +58,13 @@ def test_scene_check_refuses_a_scene_that_runs_out_of_time(hostile, monkeypatch,
     line = _one_sentence(err)
     assert f"scene file {hostile} could not be derived: its time ran out (limit 1 s)" in line
     assert out == "" and not (hostile.parent / "hostile.svg").exists()
+
+
+def test_bank_show_refuses_it_too(hostile, monkeypatch, capsys):
+    monkeypatch.setenv("LAGRADE_DERIVE_SECONDS", "1")
+    assert main(["bank", "show", str(hostile)]) == 2
+    line = _one_sentence(capsys.readouterr().err)
+    assert f"scene {hostile} could not be derived: its time ran out (limit 1 s)" in line
 
 
 def test_scene_check_refuses_a_scene_that_runs_out_of_memory(hostile, monkeypatch, capsys):
