@@ -153,6 +153,34 @@ def time_limit(seconds: float | None):
         signal.signal(signal.SIGALRM, previous)
 
 
+#: Seconds between rings of an alarm that was not heard (`_insistent_alarm`).
+RING_AGAIN = 0.5
+
+
+@contextmanager
+def _insistent_alarm(seconds: float):
+    """`time_limit` for work with no parent to kill it (a command deriving in its own process):
+    after `seconds` the alarm rings, and rings again every `RING_AGAIN` seconds until the block
+    has ended, for a PartTimeout raised where Python swallows it (a finalizer run by the
+    collector, whose exceptions are only printed) would otherwise leave the work running."""
+
+    def ring(signum, frame):
+        raise PartTimeout
+
+    previous = signal.signal(signal.SIGALRM, ring)
+    signal.setitimer(signal.ITIMER_REAL, seconds, RING_AGAIN)
+    try:
+        yield
+    finally:
+        while True:  # a ring may come while the alarm is being put away: put it away again
+            try:
+                signal.setitimer(signal.ITIMER_REAL, 0)
+                signal.signal(signal.SIGALRM, previous)
+                break
+            except PartTimeout:
+                continue
+
+
 def derivation_limits() -> Limits:
     """The seconds and memory a scene's derivation may take, read from the environment when it
     says (LAGRADE_DERIVE_SECONDS, LAGRADE_DERIVE_MEMORY_MIB), else `DERIVE_LIMIT` and
@@ -188,7 +216,7 @@ def deriving(what: str, limits: Limits | None = None):
     except (ValueError, OSError):
         previous = None  # a platform without the limit still has the alarm
     try:
-        with time_limit(limits.seconds):
+        with _insistent_alarm(limits.seconds):
             yield
     except PartTimeout:
         raise DerivationLimit(
