@@ -5,6 +5,7 @@
     ├── SceneError                  an inconsistent scene declaration (lists every problem)
     │   └── SceneFileError          a scene file that cannot be used (every problem, by key)
     ├── UnknownSceneError           a scene id the bank does not have (lists the ids)
+    ├── DerivationLimit             a scene whose derivation ran out of time or memory (names it)
     ├── AssignmentError             an assignment file, roster, manifest or folder unusable as given
     ├── UnreadableInput             bytes that are not the text they claim to be (not UTF-8, a lone
     │                               surrogate, nesting or a number past the bounds, not JSON/TOML)
@@ -46,6 +47,11 @@ class SceneError(LagradeError):
 
     def __reduce__(self):
         return (SceneError, (self.scene_id, self.problems))
+
+
+class DerivationLimit(LagradeError):
+    """A scene whose derivation ran out of time or memory: one sentence naming the scene and
+    what ran out (`lagrade.judge.deriving.deriving`)."""
 
 
 class SceneFileError(SceneError):

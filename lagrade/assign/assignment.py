@@ -22,11 +22,13 @@ from __future__ import annotations
 
 import datetime as dt
 from collections.abc import Callable, Mapping
+from contextlib import AbstractContextManager
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
 import lagrade.untrusted as untrusted
+from lagrade.assign.solution import solution_data
 from lagrade.bank.registry import find_scene, get_scene, is_scene_path, scene_ids
 from lagrade.bank.scenefile import scene_from_text, scene_id_of, sha256
 from lagrade.errors import AssignmentError, LagradeError, UnreadableInput
@@ -136,22 +138,40 @@ class Assignment:
 
 #: Resolves an assignment's `scene` (as written) to a Scene.
 SceneResolver = Callable[[str], Scene]
+#: Runs a scene's derivation under a time and memory limit, naming the scene when it runs out
+#: (`lagrade.judge.deriving`, which the command line passes: this layer cannot import it).
+Within = Callable[[str], AbstractContextManager]
 
 
 def scene_resolver(
     base: Path | None = None,
     scenes_dir: Path | None = None,
     texts: Mapping[str, str] | None = None,
+    within: Within | None = None,
 ) -> SceneResolver:
     """How `scene = "..."` is found: in `texts` (a manifest's carried scene files, by the
     `scene` as written), else as a file relative to `base` (the assignment's folder), else as
-    `<id>.toml` in `scenes_dir`, else in the bank."""
+    `<id>.toml` in `scenes_dir`, else in the bank. With `within`, the scene is read and its
+    default variant's five-step solution derived under that limit (the variants derived later
+    share its derivation), so that a scene that cannot be derived in time is refused before
+    anything is written."""
 
-    def resolve(ref: str) -> Scene:
+    def find(ref: str) -> Scene:
         if texts is not None and ref in texts:
             scene_id = scene_id_of(ref) if is_scene_path(ref) else ref
             return scene_from_text(texts[ref], scene_id, origin=ref, validate=False)
         return find_scene(ref, base, scenes_dir)
+
+    def resolve(ref: str) -> Scene:
+        if within is None:
+            return find(ref)
+        with within(f"scene {ref!r}"):
+            scene = find(ref)
+            try:
+                solution_data(scene.default)
+            except (ArithmeticError, TypeError, ValueError):
+                pass  # not a limit: the step that needs the failing part reports it
+        return scene
 
     return resolve
 
@@ -160,12 +180,15 @@ def load_assignment(
     path: str | Path,
     scenes_dir: str | Path | None = None,
     scene_texts: Mapping[str, str] | None = None,
+    within: Within | None = None,
 ) -> Assignment:
     """Read and check an assignment file; one AssignmentError lists every problem in it. Its
     scene files are found relative to its folder, or in `scenes_dir`, or in `scene_texts` (a
-    manifest's copies, by the `scene` as written)."""
+    manifest's copies, by the `scene` as written); `within` bounds each scene's derivation
+    (`scene_resolver`)."""
     path = Path(path)
-    resolve = scene_resolver(path.parent, Path(scenes_dir) if scenes_dir else None, scene_texts)
+    folder = Path(scenes_dir) if scenes_dir else None
+    resolve = scene_resolver(path.parent, folder, scene_texts, within)
     return parse_assignment(assignment_table(path), source=str(path), resolve=resolve)
 
 

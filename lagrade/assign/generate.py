@@ -12,7 +12,7 @@ from __future__ import annotations
 from collections.abc import Iterable
 from pathlib import Path
 
-from lagrade.assign.assignment import Assignment, load_assignment
+from lagrade.assign.assignment import Assignment, Within, load_assignment
 from lagrade.assign.pipeline import GenerateResult, Generator, Progress, Verifier
 from lagrade.assign.roster import Student, load_roster
 from lagrade.assign.templating import environment
@@ -48,6 +48,7 @@ def generate(
     progress: Progress | None = None,
     verify: Verifier | None = None,
     scenes_dir: str | Path | None = None,
+    within: Within | None = None,
 ) -> GenerateResult:
     """Write handouts, keys, answer sheets, figures and `manifest.json` for every student.
 
@@ -55,12 +56,14 @@ def generate(
     assignment (or a scene file it names), roster, formats, templates or output folder cannot be
     used, or when `verify` reports a variant whose key the grader would not accept. Scene files
     are found relative to the assignment file, or by id in `scenes_dir`, else in the bank.
+    `within` bounds each scene's derivation (time and memory; the command line passes
+    `lagrade.judge.deriving`): a scene that runs out is one of the problems listed.
     """
     out = Path(out_dir)
     errors: list[str] = []
     assignment = roster = chosen = None
     for attempt in (
-        lambda: load_assignment(assignment_path, scenes_dir),
+        lambda: load_assignment(assignment_path, scenes_dir, within=within),
         lambda: load_roster(roster_path),
         lambda: parse_formats(formats),
     ):

@@ -22,15 +22,18 @@ def bank_list(args: argparse.Namespace) -> int:
 def bank_show(args: argparse.Namespace) -> int:
     from lagrade.assign import solution as export
     from lagrade.bank.registry import find_scene
+    from lagrade.judge import deriving
 
-    scene = find_scene(args.scene)
-    variant = scene.default if args.seed is None else scene.variant(args.seed)
     render = {
         "text": export.solution_text,
         "json": export.solution_json,
         "latex": export.solution_latex,
     }
-    print(render[args.format](variant))
+    with deriving(f"scene {args.scene}"):  # a scene file is text from outside: the same limits
+        scene = find_scene(args.scene)
+        variant = scene.default if args.seed is None else scene.variant(args.seed)
+        shown = render[args.format](variant)
+    print(shown)
     return 0
 
 

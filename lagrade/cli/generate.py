@@ -10,7 +10,7 @@ from pathlib import Path
 def run(args: argparse.Namespace) -> int:
     from lagrade.assign.generate import generate
     from lagrade.cli.progress import ProgressBar
-    from lagrade.judge.verify import verify_variant
+    from lagrade.judge import deriving, verify_variant
 
     with ProgressBar() as bar:
         result = generate(
@@ -24,6 +24,7 @@ def run(args: argparse.Namespace) -> int:
             progress=bar,
             verify=None if args.no_verify else verify_variant,
             scenes_dir=args.scenes,
+            within=deriving,
         )
     for warning in result.warnings:
         print(f"warning: {warning}", file=sys.stderr)

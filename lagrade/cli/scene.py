@@ -9,8 +9,11 @@ from pathlib import Path
 
 def scene_check(args: argparse.Namespace) -> int:
     from lagrade.assign.scene_check import check_scene_file
+    from lagrade.judge import deriving
 
-    report = check_scene_file(args.file, args.figure)
+    # the whole check is the scene's derivation (in every presentation): one limit for it
+    with deriving(f"scene file {args.file}"):
+        report = check_scene_file(args.file, args.figure)
     print(report.text)
     if report.failures:
         print(f"\n{len(report.failures)} check(s) failed; see above")

@@ -23,7 +23,8 @@ from collections import OrderedDict
 from collections.abc import Mapping
 from typing import Any
 
-from lagrade.errors import LagradeError, ReferenceUndefined, RequestError
+import lagrade.untrusted as untrusted
+from lagrade.errors import DerivationLimit, LagradeError, ReferenceUndefined, RequestError
 from lagrade.judge.clocks import (
     GRACE,
     PREPARE_LIMIT,
@@ -34,9 +35,11 @@ from lagrade.judge.clocks import (
     set_aside,
     time_limit,
 )
+from lagrade.judge.deriving import derivation_limits, deriving
 from lagrade.judge.parts import PARTS, run_checker
 from lagrade.judge.problem import Problem, build_problem, problem_key
 from lagrade.judge.verdict import Verdict, timeout_verdict
+from lagrade.judge.worker import Limits
 
 #: Questions kept per process (most recently used last).
 _CACHE_SIZE = 256
@@ -47,6 +50,8 @@ _VERDICT_CACHE_SIZE = 4_096
 
 _problems: OrderedDict[str, Problem] = OrderedDict()
 _prepared: set[tuple[str, str]] = set()
+#: Questions that could not be derived within the scene rule's limits, with why.
+_underived: OrderedDict[str, DerivationLimit] = OrderedDict()
 
 
 def cached_problem(spec: Any) -> Problem:
@@ -109,6 +114,7 @@ def forget_problems() -> None:
     _problems.clear()
     _prepared.clear()
     _verdicts.clear()
+    _underived.clear()
 
 
 # --- answers seen before -------------------------------------------------------------------------
@@ -179,6 +185,17 @@ def judge(
             ms = (time.perf_counter() - received) * 1e3
             return Verdict(**{**_verdicts[seen].__dict__, "ms": ms, "prepare_ms": 0.0})
         new = key is not None and key not in _problems
+        if key in _underived:
+            return _underivable(part, _underived[key], 0.0)
+        if new and limit is not None:  # a question read now is derived under the scene rule
+            try:
+                with deriving(_question_named(spec), _reading_limits()):
+                    cached_problem(spec)
+            except DerivationLimit as error:
+                _underived[key] = error
+                if len(_underived) > _CACHE_SIZE:
+                    _underived.popitem(last=False)
+                return _underivable(part, error, time.perf_counter() - received)
         problem = cached_problem(spec)
         budget = problem.budget
         spent = 0.0 if new else budget.spent  # a question read just now: its reading counts
@@ -210,6 +227,34 @@ def judge(
     verdict = Verdict(**{**verdict.__dict__, "ms": ms, "prepare_ms": prepare_ms})
     _remember(seen, verdict)
     return verdict
+
+
+def _question_named(spec: Any) -> str:
+    """How a refusal names the question being read: its scene (and that it came as text)."""
+    if isinstance(spec, Mapping) and isinstance(spec.get("scene"), str):
+        carried = " (its scene_text)" if "scene_text" in spec else ""
+        return f"the question's scene {untrusted.clip(spec['scene'], 40)!r}{carried}"
+    return "the question"
+
+
+def _reading_limits() -> Limits:
+    """Deriving a question read from a request: the scene rule's limits, within its budget."""
+    limits = derivation_limits()
+    return Limits(seconds=min(limits.seconds, PREPARE_LIMIT), memory_mib=limits.memory_mib)
+
+
+def _underivable(part: str, error: DerivationLimit, seconds: float) -> Verdict:
+    """The verdict of an answer to a question that could not be derived in time or memory: the
+    question ran out, not the answer (every later answer to it gets the same at once)."""
+    return Verdict(
+        part,
+        "timeout",
+        0.0,
+        (f"This question could not be derived, so no answer to it can be checked: {error}.",),
+        "",
+        "timeout",
+        prepare_ms=seconds * 1e3,
+    )
 
 
 def _diagnose(problem: Problem, part: str, budget: Budget, limit: float | None) -> None:

@@ -135,7 +135,14 @@ class Problem:
             raise RequestError("this problem gives an expression, not a Lagrangian")
         if self.variant is not None:
             return self.variant.system
-        return LagrangianSystem(self.lagrangian, self.jets)
+        # its facts (cyclic, ∂L/∂t ≡ 0) are decided at points inside the declared domains
+        ranges = {s: d.sample_range() for s, d in self.domains.items()}
+        ranges |= {
+            j.q: self.coordinate_domains[j.name]
+            for j in self.jets
+            if j.name in (self.coordinate_domains or {})
+        }
+        return LagrangianSystem(self.lagrangian, self.jets, ranges)
 
     @cached_property
     def space(self) -> Space:

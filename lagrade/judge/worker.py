@@ -68,7 +68,7 @@ class Outcome:
     seconds: float = 0.0
 
 
-def _address_space_in_use() -> int:
+def address_space_in_use() -> int:
     """Virtual memory of this process in bytes (Linux), so a memory limit adds to it."""
     try:
         with open("/proc/self/statm") as f:
@@ -85,7 +85,7 @@ def _serve(conn: Connection, work: Callable[[Any], Any], limits: Limits) -> None
     # by the fork), which would raise KeyboardInterrupt and print a traceback from the child.
     signal.signal(signal.SIGTERM, signal.SIG_DFL)
     try:
-        ceiling = _address_space_in_use() + limits.memory_mib * 1024 * 1024
+        ceiling = address_space_in_use() + limits.memory_mib * 1024 * 1024
         resource.setrlimit(resource.RLIMIT_AS, (ceiling, ceiling))
     except (ValueError, OSError):
         pass  # a platform without the limit still has the wall-clock kill

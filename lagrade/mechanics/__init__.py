@@ -5,6 +5,7 @@ its errors."""
 from lagrade.mechanics.domains import Domain
 from lagrade.mechanics.lagrange import Jet, LagrangianSystem, jet, total_derivative
 from lagrade.mechanics.scene import PointMass, Quantity, RigidBody, Scene, SceneVariant
+from lagrade.mechanics.vanishing import identically_zero
 
 __all__ = [
     "Domain",
@@ -15,6 +16,7 @@ __all__ = [
     "RigidBody",
     "Scene",
     "SceneVariant",
+    "identically_zero",
     "jet",
     "total_derivative",
 ]

@@ -26,7 +26,7 @@ from functools import cached_property
 
 import sympy as sp
 
-from lagrade.mechanics.lagrange import Jet, LagrangianSystem
+from lagrade.mechanics.lagrange import Jet, LagrangianSystem, Ranges
 
 
 class DissipativeSystem(LagrangianSystem):
@@ -40,8 +40,9 @@ class DissipativeSystem(LagrangianSystem):
         jets: Sequence[Jet],
         dissipation: sp.Expr = sp.S.Zero,
         forces: Sequence[sp.Expr] = (),
+        ranges: Ranges | None = None,
     ):
-        super().__init__(L, jets)
+        super().__init__(L, jets, ranges)
         self.dissipation = sp.expand(dissipation)
         self.forces = tuple(sp.expand(q) for q in forces) or (sp.S.Zero,) * len(self.jets)
         if len(self.forces) != len(self.jets):

@@ -10,8 +10,11 @@ Glossary (q = (q_1 … q_n), sums over j):
 - generalized_momenta    p_j = ∂L/∂q̇_j
 - euler_lagrange         E_j = D_t(∂L/∂q̇_j) − ∂L/∂q_j   (the equations of motion are E_j = 0)
 - mass_matrix, forcing   E = A(q, q̇, t) q̈ − b(q, q̇, t), so the motion solves A q̈ = b
-- cyclic_coordinates     q_j with ∂L/∂q_j = 0 (p_j is then conserved)
-- energy_function        h = Σ q̇_j p_j − L   (conserved when ∂L/∂t = 0)
+- cyclic_coordinates     q_j with ∂L/∂q_j ≡ 0 (p_j is then conserved)
+- energy_function        h = Σ q̇_j p_j − L   (conserved when ∂L/∂t ≡ 0)
+
+"≡ 0" is decided by values (`vanishing.identically_zero`), never by whether L prints the symbol:
+a potential written in Cartesian form keeps sqrt(r² sin²θ + r² cos²θ), in which θ is absent.
 
 Example, a simple pendulum (length l, angle θ from the downward vertical):
 L = ½ m l² θ̇² + m g l cos θ, p_θ = m l² θ̇, E_θ = m l² θ̈ + m g l sin θ, h = ½ m l² θ̇² − m g l cos θ.
@@ -26,6 +29,8 @@ from dataclasses import dataclass
 from functools import cached_property
 
 import sympy as sp
+
+from lagrade.mechanics.vanishing import Ranges, identically_zero
 
 #: Time. Scenes with explicit time dependence (a driven support, a rotating hoop) use it.
 t = sp.Symbol("t", real=True)
@@ -99,9 +104,14 @@ def forcing(equations: Sequence[sp.Expr], jets: Sequence[Jet]) -> sp.Matrix:
     return sp.Matrix([-e.xreplace(at_rest) for e in equations])
 
 
-def cyclic_coordinates(L: sp.Expr, jets: Sequence[Jet]) -> tuple[str, ...]:
-    """Names of the q_j that L does not contain (∂L/∂q_j = 0), so p_j is conserved."""
-    return tuple(j.name for j in jets if not L.has(j.q))
+def cyclic_coordinates(
+    L: sp.Expr, jets: Sequence[Jet], ranges: Ranges | None = None
+) -> tuple[str, ...]:
+    """Names of the q_j with ∂L/∂q_j ≡ 0 (by values, `ranges` where the symbols are drawn), so
+    p_j is conserved."""
+    return tuple(
+        j.name for j in jets if not L.has(j.q) or identically_zero(sp.diff(L, j.q), ranges)
+    )
 
 
 def energy_function(L: sp.Expr, jets: Sequence[Jet]) -> sp.Expr:
@@ -178,12 +188,15 @@ class LagrangianSystem:
     """Everything the five-step method derives from L and the coordinates, each computed lazily.
 
     A question that asks only for the momenta never forms the mass matrix; a question about the
-    mass matrix never solves for q̈.
+    mass matrix never solves for q̈. Its facts (cyclic coordinates, ∂L/∂t ≡ 0) are decided by
+    values at points drawn from `ranges` (each parameter's domain; a symbol without a range is
+    drawn by its sign assumption).
     """
 
-    def __init__(self, L: sp.Expr, jets: Sequence[Jet]):
+    def __init__(self, L: sp.Expr, jets: Sequence[Jet], ranges: Ranges | None = None):
         self.L = L
         self.jets = tuple(jets)
+        self.ranges = dict(ranges or {})
 
     @property
     def coordinates(self) -> tuple[str, ...]:
@@ -228,8 +241,12 @@ class LagrangianSystem:
 
     @cached_property
     def cyclic_coordinates(self) -> tuple[str, ...]:
-        """Coordinates absent from L; their momenta are conserved."""
-        return cyclic_coordinates(self.L, self.jets)
+        """Coordinates with ∂L/∂q_j ≡ 0 (by values); their momenta are conserved."""
+        return tuple(
+            j.name
+            for k, j in enumerate(self.jets)
+            if not self.L.has(j.q) or identically_zero(self.generalized_forces[k], self.ranges)
+        )
 
     @cached_property
     def energy_function(self) -> sp.Expr:
@@ -238,8 +255,8 @@ class LagrangianSystem:
 
     @cached_property
     def is_time_independent(self) -> bool:
-        """∂L/∂t = 0, so h is conserved."""
-        return not self.L.has(t)
+        """∂L/∂t ≡ 0 (by values), so h is conserved."""
+        return not self.L.has(t) or identically_zero(sp.diff(self.L, t), self.ranges)
 
     @cached_property
     def conserved_quantities(self) -> dict[str, sp.Expr]:

@@ -219,9 +219,10 @@ class Reparametrized(SceneVariant):
         return tuple(made)
 
     @cached_property
-    def potential_energy(self) -> sp.Expr:
+    def _declared_potential(self) -> sp.Expr:
         """V(r'(q')): the Cartesian potential on these positions, and each coordinate the scene's
-        potential names itself carried over (simultaneously: the names are shared)."""
+        potential names itself carried over (simultaneously: the names are shared). What the
+        variant's `potential_energy` and L are made from, as the declared V is for a variant."""
         symbols = cartesian_symbols(self.base)
         put = {symbols[name]: self.positions[name] for name in symbols}
         return sp.expand(cartesian_potential(self.base).xreplace({**self.pullback, **put}))

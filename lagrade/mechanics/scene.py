@@ -46,6 +46,7 @@ from lagrade.mechanics.domains import (  # noqa: F401 (Parameter, param: made he
     within,
 )
 from lagrade.mechanics.figure import FigureHint
+from lagrade.mechanics.vanishing import without_absent
 
 #: Draws from the value pools before a scene's relations are taken as impossible to keep.
 RELATION_DRAWS = 64
@@ -294,6 +295,17 @@ class SceneVariant:
         return vanishes_within(expr, self.sample_box, self.scene.relations)
 
     @cached_property
+    def ranges(self) -> dict[sp.Symbol, tuple[float, float]]:
+        """Where the facts (`vanishing`) draw each parameter and each coordinate that declares a
+        domain: inside it."""
+        box = {s: self.domains[n].sample_range() for n, s in self.parameter_symbols.items()}
+        for j in self.jets:
+            domain = self.coordinate_domains.get(j.name)
+            if domain is not None:
+                box[j.q] = domain.sample_range()
+        return box
+
+    @cached_property
     def namespace(self) -> SimpleNamespace:
         """What a scene's declarations see: canonical names bound to this variant's symbols."""
         ns: dict[str, Any] = dict(self.parameter_symbols)
@@ -410,7 +422,7 @@ class SceneVariant:
                         problems.append(
                             f"bodies: {b.name}.{label} uses {s}, which is not a declared parameter"
                         )
-        V = self.potential_energy
+        V = self._declared_potential
         used |= V.free_symbols
         for s in sorted(V.free_symbols - known, key=str):
             problems.append(f"potential: uses {s}, which is not a declared parameter")
@@ -510,8 +522,8 @@ class SceneVariant:
         return _tidy(self.within_domains(T))
 
     @cached_property
-    def potential_energy(self) -> sp.Expr:
-        """V as declared (a generalized potential may depend on velocities)."""
+    def _declared_potential(self) -> sp.Expr:
+        """V as the scene declares it, expanded."""
         self._needs_bodies("V")
         if self._presented is not self:
             return self._presented.potential_energy
@@ -519,20 +531,50 @@ class SceneVariant:
         return sp.expand(self.within_domains(V))
 
     @cached_property
-    def lagrangian(self) -> sp.Expr:
-        """L = T − V, or the scene's own L (expanded) when it is given by its Lagrangian."""
+    def potential_energy(self) -> sp.Expr:
+        """V as declared (a generalized potential may depend on velocities), written without
+        the coordinates (and t) that L's facts show absent and V does not depend on either."""
+        V = self._declared_potential
+        return without_absent(V, self._absent, self.ranges) if self._absent else V
+
+    @cached_property
+    def _derived_lagrangian(self) -> sp.Expr:
+        """L = T − V, or the scene's own L, expanded, as derived (before `_absent` is written
+        out)."""
         if self.scene.lagrangian is not None:
             return sp.expand(as_expr(self.scene.lagrangian(self.namespace)))
-        return mech.lagrangian(self.kinetic_energy, self.potential_energy)
+        return mech.lagrangian(self.kinetic_energy, self._declared_potential)
+
+    @cached_property
+    def _absent(self) -> list[sp.Symbol]:
+        """The coordinates (and t) L prints but does not depend on, by its facts (decided by
+        values: ∂L/∂q_j, which the equations of motion need anyway, shared by canonical form):
+        a potential in Cartesian form keeps sqrt(r² sin²θ + r² cos²θ), in which θ is absent."""
+        L = self._derived_lagrangian
+        facts = mech.LagrangianSystem(L, self.jets, self.ranges)
+        cyclic = set(facts.cyclic_coordinates)
+        absent = [j.q for j in self.jets if j.name in cyclic and L.has(j.q)]
+        if L.has(mech.t) and facts.is_time_independent:
+            absent.append(mech.t)
+        return absent
+
+    @cached_property
+    def lagrangian(self) -> sp.Expr:
+        """L = T − V, or the scene's own L (expanded) when it is given by its Lagrangian, written
+        without the coordinates (and t) it prints but does not depend on (sqrt(r² sin²θ +
+        r² cos²θ) is |r|), each replaced by a value at which L is unchanged by values: the key,
+        the facts and the judge read one L in which a cyclic coordinate is not printed."""
+        L = self._derived_lagrangian
+        return without_absent(L, self._absent, self.ranges) if self._absent else L
 
     @cached_property
     def system(self) -> mech.LagrangianSystem:
         """The Euler–Lagrange machinery for this L (momenta, EOM, cyclic, h, …), all lazy; with
         the scene's dissipation and forces in its equations of motion when it declares them."""
         if not self.scene.nonconservative:
-            return mech.LagrangianSystem(self.lagrangian, self.jets)
+            return mech.LagrangianSystem(self.lagrangian, self.jets, self.ranges)
         return DissipativeSystem(
-            self.lagrangian, self.jets, self.dissipation, self.generalized_forces
+            self.lagrangian, self.jets, self.dissipation, self.generalized_forces, self.ranges
         )
 
     @cached_property

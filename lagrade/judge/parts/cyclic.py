@@ -1,4 +1,5 @@
-"""The `cyclic` part: the set of coordinates that L does not contain."""
+"""The `cyclic` part: the set of coordinates q_j with ∂L/∂q_j ≡ 0, the facts of the question's
+system (decided by values, `lagrade.mechanics.identically_zero`, as the key's are)."""
 
 from __future__ import annotations
 
@@ -12,6 +13,7 @@ from lagrade.judge.parts.items import list_items, without_none
 from lagrade.judge.parts.reading import own_lagrangian, read_names
 from lagrade.judge.problem import Problem
 from lagrade.judge.verdict import Verdict
+from lagrade.mechanics import LagrangianSystem, identically_zero
 from lagrade.notation.parse import NameRead
 from lagrade.notation.printer import plain
 
@@ -44,18 +46,19 @@ def check_cyclic(problem: Problem, answer: Any, given: Mapping | None) -> Verdic
         if name.order == 1:
             velocity_named.append(name.coordinate)
     claimed = set(names)
-    L = sp.expand(problem.system.L)
-    truth = set(problem.system.cyclic_coordinates)
+    system = problem.system
+    L = sp.expand(system.L)
+    truth = set(system.cyclic_coordinates)
     feedback, mistakes = [], []
     for name in velocity_named:
         feedback.append(f"A cyclic coordinate is a coordinate ({name}), not its velocity.")
     right = 0
-    for j in problem.jets:
+    for k, j in enumerate(problem.jets):
         if (j.name in claimed) == (j.name in truth):
             right += 1
             continue
         if j.name in claimed:
-            if not L.has(j.dot):
+            if identically_zero(system.generalized_momenta[k], system.ranges):
                 feedback.append(
                     f"{j.name} is not cyclic: L contains {j.name} itself (only its "
                     f"velocity {j.name}_dot is missing); cyclic means ∂L/∂{j.name} = 0."
@@ -68,8 +71,8 @@ def check_cyclic(problem: Problem, answer: Any, given: Mapping | None) -> Verdic
                 mistakes.append("not_cyclic")
         else:
             feedback.append(
-                f"{j.name} is cyclic: L contains its velocity {j.name}_dot but not "
-                f"{j.name} itself, so p_{j.name} is conserved."
+                f"{j.name} is cyclic: L contains its velocity {j.name}_dot but does not "
+                f"depend on {j.name} itself, so p_{j.name} is conserved."
             )
             mistakes.append("missed_cyclic")
     n = len(problem.jets)
@@ -77,7 +80,8 @@ def check_cyclic(problem: Problem, answer: Any, given: Mapping | None) -> Verdic
     follows = False
     own = own_lagrangian(problem, given)
     if right < n and own is not None:
-        own_cyclic = {j.name for j in problem.jets if not sp.expand(own.expr).has(j.q)}
+        own_system = LagrangianSystem(sp.expand(own.expr), problem.jets, system.ranges)
+        own_cyclic = set(own_system.cyclic_coordinates)
         if own_cyclic == claimed and own_cyclic != truth:
             follows = True
             feedback.append(
