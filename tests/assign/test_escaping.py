@@ -99,3 +99,21 @@ def test_a_wrapped_sheet_reads_back_the_same(values, width):
     )
     wrapped = toml_wrapped(sheet, width)
     assert tomllib.loads(wrapped) == tomllib.loads(sheet)
+
+
+def test_a_formula_s_outer_brackets_round_a_sum_let_tex_break_inside() -> None:
+    """sympy's `\\left( … \\right)` is one box TeX cannot break; round a sum outside any braces
+    it becomes `\\bigl( … \\bigr)` (`\\biggl` round a fraction) so the key's long L can wrap. A
+    function's argument (inside braces) and a bracket round a product are kept."""
+    from lagrade.assign.templating import tex_breakable
+
+    assert tex_breakable(
+        r"- g \left(l_{1} \cos{\left(\theta_{1} - \theta_{2} \right)} + l_{2}\right)"
+        r" + \left(\frac{a}{b} - c\right)^{2} + \left(x y\right)^{2}"
+    ) == (
+        r"- g \bigl(l_{1} \cos{\left(\theta_{1} - \theta_{2} \right)} + l_{2}\bigr)"
+        r" + \biggl(\frac{a}{b} - c\biggr)^{2} + \left(x y\right)^{2}"
+    )
+    assert tex_breakable(r"\left(- x\right) + \left(a \left(b + c\right)\right)") == (
+        r"\left(- x\right) + \left(a \left(b + c\right)\right)"
+    )
