@@ -41,7 +41,8 @@ def test_every_row_s_columns_start_at_the_same_terminal_column() -> None:
     }  # fmt: skip
     assert starts == {8 + 1 + 28 + 1}, rows
     assert rows[0] == "s01      王小明" + " " * 22 + " graded        3.5 / 7  "
-    assert rows[5].startswith("s06      欧阳娜娜欧阳娜娜欧阳娜娜欧…  graded")  # 27 columns and a space
+    # 13 wide characters, …, a space: 28 columns
+    assert rows[5].startswith("s06      欧阳娜娜欧阳娜娜欧阳娜娜欧…  graded")
 
 
 def test_width_counts_wide_as_two_and_combining_marks_as_none() -> None:
