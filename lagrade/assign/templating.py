@@ -28,6 +28,8 @@ _TEX_SPECIALS = {
     "<": r"\textless{}",
     ">": r"\textgreater{}",
     "|": r"\textbar{}",
+    "\u00a0": "~",  # a no-break space, as TeX writes one (both engines)
+    "\u2212": r"\ensuremath{-}",  # a minus sign (pdflatex's utf8 has no text minus of its own)
 }
 _MD_SPECIALS = re.compile(r"([\\`*_{}\[\]#!|<>&~$])")
 _MD_LINE_START = re.compile(r"^(\s*)([-+=]|\d+(?=[.)]))")
