@@ -99,4 +99,12 @@ def generate(
     ).run(force)
 
 
-__all__ = ["DEFAULT_FORMATS", "FORMATS", "GenerateResult", "Progress", "Verifier", "generate", "parse_formats"]
+__all__ = [
+    "DEFAULT_FORMATS",
+    "FORMATS",
+    "GenerateResult",
+    "Progress",
+    "Verifier",
+    "generate",
+    "parse_formats",
+]

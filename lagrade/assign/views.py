@@ -294,8 +294,8 @@ def _parts(problem: Problem, variant: SceneVariant) -> list[dict[str, Any]]:
             q = declared[part.quantity]
             prompt = _described(
                 variant,
-                f"Find {_with_article(variant, q.description)}: a closed form in the parameters (or its value for "
-                "your parameter values).",
+                f"Find {_with_article(variant, q.description)}: a closed form in the "
+                "parameters (or its value for your parameter values).",
             )
             unit = unit_formats(q.unit) if q.unit else None
         else:
