@@ -57,6 +57,15 @@ CASES = [
     ("gravity without g", PENDULUM.replace("g = {", "G = {"), "gravity needs a parameter g"),
     ("a reserved name", PENDULUM.replace("l = {", "pi = {"), "'pi' is reserved"),
     ("choices that bind different names", PENDULUM + '[options.o.a]\nlet = { u = "1" }\n[options.o.b]\n', "every choice must bind the same names"),
+    ("a line break in a unit", PENDULUM.replace('unit = "kg"', 'unit = "kg\\nkg"'), "parameters.m.unit: holds a line break (\\n) at character 3"),
+    ("a line separator in a unit", PENDULUM.replace('unit = "kg"', 'unit = "kg\\u2028evil"'), "parameters.m.unit: holds a line break (\\u2028)"),
+    ("a paragraph separator in a title", PENDULUM.replace('title = "Pendulum"', 'title = "Pen\\u2029dulum"'), "title: holds a line break (\\u2029)"),
+    ("an escape sequence in a title", PENDULUM.replace('title = "Pendulum"', 'title = "\\u001b[2JPendulum"'), "title: holds an invisible control character (\\x1b)"),
+    ("a C1 control in a description", PENDULUM.replace('unit = "m", ', 'unit = "m", description = "length\\u0085of the rod", '), "parameters.l.description: holds a line break (\\x85)"),
+    ("a right-to-left override in a unit", PENDULUM.replace('unit = "kg"', 'unit = "\\u202egk"'), "parameters.m.unit: holds an invisible control character (\\u202e)"),
+    ("a tab in a quantity's description", PENDULUM + '[quantities.w]\ndescription = "angular\\tfrequency"\nvalue = "sqrt(g/l)"\n', "quantities.w.description: holds a tab"),
+    ("a control character in a statement", PENDULUM.replace("Use {theta}.", "Use {theta}.\\u0007"), "statement: holds an invisible control character (\\x07)"),
+    ("a line break in an option's wording", PENDULUM + '[options.o.a]\nwording = "one\\ntwo"\n[options.o.b]\n', "wording: holds a line break"),
 ]  # fmt: skip
 
 
