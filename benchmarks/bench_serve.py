@@ -3,7 +3,8 @@
 20 students (20 rounds each) alone, and the same 20 while two others attack: each sends, again
 and again, a preview whose check holds a worker in C code for about 20 s (the limit is 3 s).
 
-Run: python benchmarks/bench_serve.py [--rounds 4] [--jobs 2]
+Run: python benchmarks/bench_serve.py [--rounds 4] [--jobs 2] [--baseline PATH]
+    python benchmarks/bench_serve.py --only opening --baseline PATH   (that row alone)
 
 Each simulated student opens their page, then `--rounds` times: previews three answers of
 the kinds students type (right in plain text, LaTeX, a sign mistake, an unreadable one) and
@@ -14,6 +15,11 @@ Reports per level: requests, wall time, median and p99 latency of previews and s
 Latencies include queueing: with 200 students on 2 cores, a preview waits for the workers.
 Under attack, the attackers' replies are reported too: each should be `timeout` within the
 preview's limit + grace (5 s).
+
+A class opening at once: a server just started, 30 students open their pages together (30
+variants whose views nobody has drawn yet) while one more student, whose page is open, saves:
+the openers' median and slowest page, and the bystander's save. With `--baseline PATH` (another
+checkout of lagrade) the same row is measured on a server run from that tree, side by side.
 """
 
 from __future__ import annotations
@@ -82,9 +88,12 @@ def make_class(root: Path, students: int) -> Path:
     return root / "ps" / "manifest.json"
 
 
-def start(manifest: Path, sheets: Path, links: Path, jobs: int) -> tuple[subprocess.Popen, str]:
-    """The server, its output in a log file (a pipe nobody reads would fill and stall it)."""
-    log = manifest.parent / "server.log"
+def start(
+    manifest: Path, sheets: Path, links: Path, jobs: int, tree: Path = REPOSITORY
+) -> tuple[subprocess.Popen, str]:
+    """The server (lagrade from `tree`), its output in a log file (a pipe nobody reads would
+    fill and stall it)."""
+    log = manifest.parent / f"server-{sheets.name}.log"
     process = subprocess.Popen(
         [
             sys.executable,
@@ -103,7 +112,11 @@ def start(manifest: Path, sheets: Path, links: Path, jobs: int) -> tuple[subproc
         ],
         stdout=log.open("w"),
         stderr=subprocess.STDOUT,
-        env={**os.environ, "PYTHONPATH": str(REPOSITORY)},
+        cwd=tree,  # `python -c` puts the working folder first on sys.path
+        env={
+            **os.environ,
+            "PYTHONPATH": os.pathsep.join(dict.fromkeys([str(tree), str(REPOSITORY)])),
+        },
     )
     deadline = time.monotonic() + 120
     while time.monotonic() < deadline and process.poll() is None:
@@ -255,15 +268,133 @@ def run_level(
     }
 
 
+#: A class opening its pages at once (see the module docstring), with an assignment of four
+#: problems whose variants differ (names, options, values), as an instructor's would.
+OPENING = 30
+OPENING_ASSIGNMENT = """\
+title = "A class opening its pages"
+
+[[problems]]
+scene = "simple_pendulum"
+parts = ["dof", "lagrangian", "momenta"]
+
+[[problems]]
+scene = "spherical_pendulum"
+parts = ["lagrangian", "eom"]
+
+[[problems]]
+scene = "double_pendulum"
+parts = ["lagrangian"]
+
+[[problems]]
+scene = "pendulum_on_cart"
+parts = ["lagrangian", "conserved"]
+"""
+
+
+def make_opening_class(root: Path) -> Path:
+    folder = root / "opening"
+    folder.mkdir()
+    (folder / "assignment.toml").write_text(OPENING_ASSIGNMENT)
+    rows = ["id,name"] + [f"o{k:03d},Student {k}" for k in range(OPENING + 1)]
+    (folder / "roster.csv").write_text("\n".join(rows) + "\n")
+    generate(folder / "assignment.toml", folder / "roster.csv", 11, folder / "ps", formats=("md",))
+    return folder / "ps" / "manifest.json"
+
+
+def class_opening(manifest: Path, jobs: int, tree: Path, name: str) -> dict:
+    """A fresh server from `tree`; OPENING students open their pages together while a
+    bystander whose page is open saves again and again (0.5 s after its last save was
+    answered) until every page has come."""
+    sheets = manifest.parent / f"sheets-{name}"
+    links_file = manifest.parent / f"links-{name}.csv"
+    process, _ = start(manifest, sheets, links_file, jobs, tree)
+    try:
+        links = list(csv.DictReader(links_file.open()))
+        bystander = Student(links[0]["url"], 0, seed=0)
+        conn = http.client.HTTPConnection(bystander.host, bystander.port, timeout=300)
+        bystander.request(conn, "GET", bystander.path)
+        pages: list[float] = []
+        go = threading.Barrier(OPENING + 1)
+
+        def open_page(url: str) -> None:
+            student = Student(url, 0, seed=0)
+            c = http.client.HTTPConnection(student.host, student.port, timeout=300)
+            go.wait()
+            pages.append(student.request(c, "GET", student.path))
+            c.close()
+
+        openers = [
+            threading.Thread(target=open_page, args=(row["url"],), daemon=True)
+            for row in links[1 : OPENING + 1]
+        ]
+        for t in openers:
+            t.start()
+        start_at = time.perf_counter()
+        go.wait()
+        saves: list[float] = []
+        statuses: set[int] = set()
+        while any(t.is_alive() for t in openers) or not saves:
+            time.sleep(0.5)  # a student pressing save now and then
+            answers = {"1": {"dof": "1", "momenta": f"p_theta = m l^2 theta_dot  # {len(saves)}"}}
+            saves.append(
+                bystander.request(conn, "POST", bystander.path + "/save", {"answers": answers})
+            )
+            statuses.add(bystander.status)
+        all_open = time.perf_counter() - start_at
+        for t in openers:
+            t.join()
+        conn.close()
+        return {
+            "tree": name,
+            "saves": len(saves),
+            "save_max_ms": max(saves) * 1e3,
+            "save_median_ms": statistics.median(saves) * 1e3,
+            "ok": statuses == {200} and len(pages) == OPENING,
+            "page_median_ms": statistics.median(pages) * 1e3,
+            "page_max_ms": max(pages) * 1e3,
+            "all_open_s": all_open,
+        }
+    finally:
+        process.send_signal(signal.SIGTERM)
+        process.wait(timeout=60)
+
+
+def report_opening(manifest: Path, jobs: int, baseline: Path | None) -> None:
+    trees = [("this tree", REPOSITORY)] + ([("baseline", baseline)] if baseline else [])
+    print(f"\na class of {OPENING} opening its pages at once, one bystander saving:")
+    print(
+        f"{'tree':>10} {'saves':>6} {'save med ms':>12} {'save max ms':>12} {'page med ms':>12} "
+        f"{'page max ms':>12} {'all open s':>10}"
+    )
+    for name, tree in trees:
+        r = class_opening(manifest, jobs, tree, name.replace(" ", "-"))
+        print(
+            f"{name:>10} {r['saves']:>6} {r['save_median_ms']:>12.0f} {r['save_max_ms']:>12.0f} "
+            f"{r['page_median_ms']:>12.0f} {r['page_max_ms']:>12.0f} {r['all_open_s']:>10.1f}"
+            + ("" if r["ok"] else "  (errors)"),
+            flush=True,
+        )
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--rounds", type=int, default=4, help="preview-and-save rounds each")
     parser.add_argument("--jobs", type=int, default=2, help="the server's worker processes")
+    parser.add_argument(
+        "--baseline", type=Path, default=None, help="another lagrade checkout, for the opening row"
+    )
+    parser.add_argument(
+        "--only", choices=("opening",), default=None, help="run only the class-opening row"
+    )
     args = parser.parse_args()
     with tempfile.TemporaryDirectory() as tmp:
         root = Path(tmp)
         print(f"generating a class of {max(LEVELS)} (not timed)…", flush=True)
         manifest = make_class(root, max(LEVELS))
+        report_opening(make_opening_class(root), args.jobs, args.baseline)
+        if args.only:
+            return
         process, base = start(manifest, root / "sheets", root / "links.csv", args.jobs)
         try:
             links = list(csv.DictReader((root / "links.csv").open()))
@@ -297,7 +428,7 @@ def main() -> None:
             process.wait(timeout=30)
             problems = [
                 ln
-                for ln in (manifest.parent / "server.log").read_text().splitlines()
+                for ln in (manifest.parent / "server-sheets.log").read_text().splitlines()
                 if "Error" in ln or "Traceback" in ln
             ]
             print(

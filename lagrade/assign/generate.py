@@ -19,6 +19,10 @@ from lagrade.assign.templating import environment
 from lagrade.errors import AssignmentError, LagradeError
 
 FORMATS: tuple[str, ...] = ("md", "html", "tex", "pdf")
+#: What `generate` writes unless told: Markdown and HTML to read, print or paste into an LMS
+#: page, and the LaTeX source of the PDFs, which costs nothing and needs no TeX here (`pdf`
+#: compiles it, where TeX Live is installed).
+DEFAULT_FORMATS: tuple[str, ...] = ("md", "html", "tex")
 
 
 def parse_formats(formats: str | Iterable[str]) -> tuple[str, ...]:
@@ -42,7 +46,7 @@ def generate(
     roster_path: str | Path,
     seed: int,
     out_dir: str | Path,
-    formats: str | Iterable[str] = ("md", "html", "tex"),
+    formats: str | Iterable[str] = DEFAULT_FORMATS,
     templates_dir: str | Path | None = None,
     force: bool = False,
     progress: Progress | None = None,
@@ -98,4 +102,12 @@ def generate(
     ).run(force)
 
 
-__all__ = ["FORMATS", "GenerateResult", "Progress", "Verifier", "generate", "parse_formats"]
+__all__ = [
+    "DEFAULT_FORMATS",
+    "FORMATS",
+    "GenerateResult",
+    "Progress",
+    "Verifier",
+    "generate",
+    "parse_formats",
+]

@@ -28,6 +28,8 @@ _TEX_SPECIALS = {
     "<": r"\textless{}",
     ">": r"\textgreater{}",
     "|": r"\textbar{}",
+    "\u00a0": "~",  # a no-break space, as TeX writes one (both engines)
+    "\u2212": r"\ensuremath{-}",  # a minus sign (pdflatex's utf8 has no text minus of its own)
 }
 _MD_SPECIALS = re.compile(r"([\\`*_{}\[\]#!|<>&~$])")
 _MD_LINE_START = re.compile(r"^(\s*)([-+=]|\d+(?=[.)]))")
@@ -190,6 +192,73 @@ def toml_literal(value: str | list[str], multiline: bool = False) -> str:
     return f"'{text}'"
 
 
+_LEFT = re.compile(r"\\left(\(|\[)")
+_RIGHT = re.compile(r"\\right(\)|\])")
+
+
+def tex_breakable(latex: str) -> str:
+    """A formula TeX may break across lines at every sum's `+` and `-`, for the `\\formula` of
+    the LaTeX templates (a display too wide for the page is set as a paragraph of math, which
+    TeX breaks only at binary operators of its outer list). sympy writes brackets as
+    `\\left(` … `\\right)`, which make their content one unbreakable box: a bracket outside
+    any `{…}` whose content is a sum becomes `\\bigl(` … `\\bigr)` (`\\biggl` round a
+    fraction), which leaves the sum in the outer list. Everything else is kept as it is."""
+    out: list[str] = []
+    at, depth = 0, 0
+    while at < len(latex):
+        opened = _LEFT.match(latex, at) if depth == 0 else None
+        if opened:
+            end = _matching_right(latex, opened.end())
+            if end is not None:
+                inner = latex[opened.end() : end.start()]
+                if _is_sum(inner):
+                    size = r"\biggl" if r"\frac" in inner else r"\bigl"
+                    out.append(f"{size}{opened.group(1)}{tex_breakable(inner)}")
+                    out.append(f"{size[:-1]}r{end.group(1)}")
+                else:  # a box anyway: nothing inside could break
+                    out.append(latex[at : end.end()])
+                at = end.end()
+                continue
+        ch = latex[at]
+        depth += (ch == "{") - (ch == "}") if at == 0 or latex[at - 1] != "\\" else 0
+        out.append(ch)
+        at += 1
+    return "".join(out)
+
+
+def _matching_right(latex: str, start: int) -> re.Match[str] | None:
+    """The `\\right)` that closes the `\\left(` whose content starts at `start`."""
+    level, at = 1, start
+    while at < len(latex):
+        if latex.startswith(r"\left", at):
+            level += 1
+            at += 5
+        elif (closing := _RIGHT.match(latex, at)) or latex.startswith(r"\right", at):
+            level -= 1
+            if level == 0:
+                return closing
+            at += 6
+        else:
+            at += 1
+    return None
+
+
+def _is_sum(inner: str) -> bool:
+    """Whether LaTeX from sympy is a sum at its own outer level (a binary ` + ` or ` - `
+    outside braces and inner brackets; a leading `- ` is a sign)."""
+    depth = 0
+    for at, ch in enumerate(inner):
+        if inner.startswith(r"\left", at):
+            depth += 1
+        elif inner.startswith(r"\right", at):
+            depth -= 1
+        elif ch in "{}" and (at == 0 or inner[at - 1] != "\\"):
+            depth += 1 if ch == "{" else -1
+        elif depth == 0 and at > 0 and inner[at - 1 : at + 2] in (" + ", " - "):
+            return True
+    return False
+
+
 def format_points(value: float) -> str:
     return f"{value:g}"
 
@@ -237,6 +306,7 @@ def environment(templates_dir: str | Path | None = None) -> jinja2.Environment:
     )
     env.filters.update(
         tex=tex_escape,
+        breakable=tex_breakable,
         ttcopy=tt_copy,
         tomlwrap=toml_wrapped,
         md=md_escape,

@@ -8,7 +8,7 @@ from typing import Any
 
 from markupsafe import Markup, escape
 
-from lagrade.assign.templating import tex_escape
+from lagrade.assign.templating import md_escape, tex_escape
 
 #: A unit's tokens: a factor with an optional exponent (`s^2`, `s**-1`), `/`, `*`, parentheses,
 #: or the space that multiplies two factors (`kg s^2`).
@@ -39,14 +39,17 @@ def _tokens(unit: str) -> list[tuple[str, str, str]] | None:
 
 
 def unit_formats(unit: str) -> dict[str, Any]:
-    """The unit in each format: `plain` as declared, `text` with Unicode superscripts (for
-    Markdown and plain text), `html` (safe markup), `tex` (a math-mode `\\mathrm{…}` for LaTeX)."""
+    """The unit in each format: `plain` as declared, `text` with Unicode superscripts (plain
+    text), `md` the same made inert for Markdown (a unit is an instructor's text: `<img …>` in
+    one is shown, never run, where the handout is pasted), `html` (safe markup), `tex` (a
+    math-mode `\\mathrm{…}` for LaTeX)."""
     tokens = _tokens(unit.strip()) if unit.strip() else None
     if not tokens:
         fallback = unit.replace("^", "")
         return {
             "plain": unit,
             "text": fallback,
+            "md": md_escape(fallback),
             "html": escape(fallback),
             "tex": tex_escape(fallback),
         }
@@ -64,6 +67,7 @@ def unit_formats(unit: str) -> dict[str, Any]:
     return {
         "plain": unit,
         "text": "".join(text),
+        "md": md_escape("".join(text)),
         "html": Markup("".join(html)),
         "tex": rf"$\mathrm{{{''.join(tex)}}}$",
     }

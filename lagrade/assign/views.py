@@ -32,16 +32,18 @@ from lagrade.mechanics.scene import (
 from lagrade.notation import printer as rm
 from lagrade.notation.keys import key_answer
 
+#: Formulas in prompts are held together: no-break spaces round the signs, and a minus sign
+#: (U+2212), not a hyphen, so that no line is broken inside "DOF = 3N − k" or "L = T − V".
 PROMPTS: dict[str, str] = {
-    "dof": "Count the constraints and give the number of degrees of freedom (DOF = 3N - k), "
-    "as a whole number, e.g. 2.",
+    "dof": "Count the constraints and give the number of degrees of freedom "
+    "(DOF\u00a0=\u00a03N\u00a0\u2212\u00a0k), as a whole number, e.g. 2.",
     "coordinates": "Name the generalized coordinates (use the ones named in the statement).",
     "transformation": "Write the transformation equations: each body's Cartesian coordinates "
     "in terms of the generalized coordinates (and t).",
     "T": "Write the kinetic energy T.",
     "V": "Write the potential energy V.",
-    "lagrangian": "Write the Lagrangian L = T - V.",
-    "eom": "Derive the Euler-Lagrange equations of motion, one per coordinate.",
+    "lagrangian": "Write the Lagrangian L\u00a0=\u00a0T\u00a0\u2212\u00a0V.",
+    "eom": "Derive the Euler\u2013Lagrange equations of motion, one per coordinate.",
     "momenta": "Give the generalized momentum of each coordinate.",
     "cyclic": "Which coordinates are cyclic? (Write none if there are none.)",
     "conserved": "Give the conserved quantities as functions of the coordinates and velocities. "
@@ -78,6 +80,31 @@ def _statement(variant: SceneVariant) -> dict[str, Any]:
 def _described(variant: SceneVariant, text: str) -> Prose:
     """A description (of a quantity, a parameter) with its parameter names set as math."""
     return render_prose(text, names=variant.parameter_symbols)
+
+
+#: Words a description may start with that need no article before it in a sentence.
+_DETERMINERS = frozenset({"the", "a", "an", "how", "which", "what", "when", "where", "its"})
+
+
+def _first_word(text: str) -> str:
+    return text.split(maxsplit=1)[0] if text.split() else ""
+
+
+def _with_article(variant: SceneVariant, description: str) -> str:
+    """A quantity's description as the object of "Find …": "angular frequency of small
+    oscillations" takes "the"; "the rate lambda …", "how fast …" and a formula's name do not."""
+    word = _first_word(description)
+    if word.lower() in _DETERMINERS or word in variant.parameter_symbols:
+        return description
+    return f"the {description}"
+
+
+def _heading(variant: SceneVariant, description: str) -> str:
+    """A description as a heading: its first letter a capital, unless it starts with a name
+    (a parameter `m_1` stays as it is)."""
+    if _first_word(description) in variant.parameter_symbols:
+        return description
+    return description[:1].upper() + description[1:]
 
 
 def _body_kind(body: Any) -> str:
@@ -250,6 +277,7 @@ def _quantities(
         quantities[q.name] = {
             "name": q.name,
             "description": _described(variant, q.description),
+            "heading": _described(variant, _heading(variant, q.description)),
             "unit": q.unit,
             "units": unit_formats(q.unit),
             "formula": rm.named_equation(q.name, expr, variant.coordinates),
@@ -276,8 +304,8 @@ def _parts(problem: Problem, variant: SceneVariant) -> list[dict[str, Any]]:
             q = declared[part.quantity]
             prompt = _described(
                 variant,
-                f"Find {q.description}: a closed form in the parameters (or its value for "
-                "your parameter values).",
+                f"Find {_with_article(variant, q.description)}: a closed form in the "
+                "parameters (or its value for your parameter values).",
             )
             unit = unit_formats(q.unit) if q.unit else None
         elif part.part == "conserved" and not part.all:

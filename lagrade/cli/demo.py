@@ -71,7 +71,7 @@ def add_parser(commands: argparse._SubParsersAction) -> None:
     demo = commands.add_parser(
         "demo",
         help="generate, submit and grade a synthetic class of 30 end to end",
-        description="In FOLDER: write a demo assignment and a roster of 30, generate handouts "
+        description="In DIR: write a demo assignment and a roster of 30, generate handouts "
         "and keys, write synthetic submissions (varied notation, common mistakes, blank parts, "
         "one malformed file, one missing), grade them and print the results.",
     )

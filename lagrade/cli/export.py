@@ -52,7 +52,7 @@ def run(args: argparse.Namespace) -> int:
 def _gradescope(args: argparse.Namespace) -> int:
     from lagrade.grading.gradescope import export_gradescope
 
-    out = export_gradescope(Path(args.source), args.out)
+    out = export_gradescope(Path(args.source), args.out, trust_sheet=args.trust_sheet)
     print(
         f"{out}: Gradescope autograder (setup.sh, run_autograder, the lagrade wheel, the "
         "manifest); upload it under Configure Autograder (README.txt inside says more)"
@@ -72,7 +72,10 @@ def add_parser(commands: argparse._SubParsersAction) -> None:
         "parts graded by lagrade. OUT may be the course's own folder.\n"
         "gradescope: an autograder zip (--out autograder.zip) that grades each student's\n"
         "uploaded answer sheet against their own variant, as `lagrade grade` does (give it\n"
-        "the manifest.json).",
+        "the manifest.json). The student is the Gradescope account's, found in the roster\n"
+        "by email, then by Gradescope's student ID; an account on no roster row, or a sheet\n"
+        "naming another student, scores 0 with a sentence (--trust-sheet: take the sheet's\n"
+        "student_id when the account matches no roster row).",
         epilog="examples:\n"
         "  lagrade export prairielearn examples/assignment.toml --seed 2025 --out pl-course\n"
         "  lagrade export gradescope ps3/manifest.json --out autograder.zip",
@@ -93,5 +96,11 @@ def add_parser(commands: argparse._SubParsersAction) -> None:
         type=Path,
         default=None,
         help="folder of scene files the assignment names by id (prairielearn)",
+    )
+    export.add_argument(
+        "--trust-sheet",
+        action="store_true",
+        help="gradescope: when a Gradescope account matches no roster student (by email or "
+        "student ID), grade the student the uploaded sheet's student_id names",
     )
     export.set_defaults(run=run)

@@ -18,7 +18,7 @@ def run(args: argparse.Namespace) -> int:
             args.roster,
             args.seed,
             args.out,
-            formats=args.formats,
+            **({"formats": args.formats} if args.formats else {}),
             templates_dir=args.templates,
             force=args.force,
             progress=bar,
@@ -57,8 +57,9 @@ def add_parser(commands: argparse._SubParsersAction) -> None:
     generate.add_argument("--out", type=Path, required=True, help="output folder (must not exist)")
     generate.add_argument(
         "--formats",
-        default="md,html,tex",
-        help="comma list of md,html,tex,pdf (default md,html,tex)",
+        default=None,
+        help="comma list of md,html,tex,pdf (default md,html,tex: Markdown and HTML, and the "
+        "LaTeX source; pdf compiles it where TeX Live is installed)",
     )
     generate.add_argument("--templates", type=Path, default=None, help="folder of *.j2 overrides")
     generate.add_argument(

@@ -18,7 +18,11 @@ SHOWN_STRAY = 20
 def summary_table(summary: BatchSummary) -> str:
     """A plain-text table of every student's status and score, the files of the submissions
     folder that were not graded, and the totals (printed by `grade` and by `demo`)."""
-    lines = [f"{'student':8} {'name':28} {'status':8} {'score':>12}  reason"]
+    from lagrade.cli.terminal import cell, display_width, shown
+
+    # ids are never cut (they name the file to look at); names are, to 28 columns
+    ids = max([8, *(display_width(shown(r["student"]["id"])) for r in summary.results)])
+    lines = [f"{cell('student', ids)} {'name':28} {'status':8} {'score':>12}  reason"]
     others = {}
     for r in summary.results:
         score = f"{r['score']:g} / {r['max_score']:g}"
@@ -29,8 +33,8 @@ def summary_table(summary: BatchSummary) -> str:
                 f"; {reason}" if reason else ""
             )
         lines.append(
-            f"{r['student']['id']:8} {r['student']['name'][:28]:28} {r['status']:8} "
-            f"{score:>12}  {reason[:60]}"
+            f"{cell(r['student']['id'], ids)} {cell(r['student']['name'], 28)} "
+            f"{cell(r['status'], 8)} {cell(score, 12, '>')}  {reason[:60]}"
         )
     if summary.stray:
         lines.append("\nnot graded (no roster student's sheet):")

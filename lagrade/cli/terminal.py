@@ -64,3 +64,42 @@ def guarded() -> Iterator[None]:
 def raw_stream(stream: TextIO) -> TextIO:
     """The stream under a VisibleText (for the progress bar's carriage return), or `stream`."""
     return stream.raw if isinstance(stream, VisibleText) else stream
+
+
+def display_width(text: str) -> int:
+    """The columns a terminal gives `text`: an East Asian wide or fullwidth character (王, Ｂ)
+    two, a combining mark or other zero-width character (the dot of a decomposed ạ, U+200B)
+    none, any other one (Unicode's East Asian Width, UAX #11, as wcwidth counts)."""
+    import unicodedata
+
+    width = 0
+    for ch in text:
+        if unicodedata.combining(ch) or unicodedata.category(ch) in ("Mn", "Me", "Cf"):
+            continue
+        width += 2 if unicodedata.east_asian_width(ch) in ("W", "F") else 1
+    return width
+
+
+def shown(value: object) -> str:
+    """`value` as a table shows it: on one line, control characters as escapes."""
+    from lagrade.untrusted import visible
+
+    return visible(" ".join(str(value).split()))
+
+
+def cell(value: object, width: int, align: str = "<") -> str:
+    """`value` as one cell of a table of `width` columns: on one line, control characters shown
+    as escapes, cut with "…" where it is wider, and padded to `width` by display width (so a
+    row of Chinese names lines up with a row of Latin ones)."""
+    text = shown(value)
+    if display_width(text) > width:
+        kept, used = [], 0
+        for ch in text:
+            w = display_width(ch)
+            if used + w > width - 1:
+                break
+            kept.append(ch)
+            used += w
+        text = "".join(kept) + "…"
+    pad = " " * (width - display_width(text))
+    return pad + text if align == ">" else text + pad

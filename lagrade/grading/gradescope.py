@@ -9,9 +9,14 @@ the zip's contents are in `/autograder/source`, the student's upload in
 
 `run_autograder` here grades with `lagrade grade` itself, on a manifest narrowed to the one
 student, so a sheet earns on Gradescope exactly what it earns in `lagrade grade`. The student is
-the roster student whose email is the Gradescope account's; failing that, the `student_id` in
-the sheet, then the sheet's file name. `LAGRADE_AUTOGRADER_ROOT` moves `/autograder` elsewhere
-(the tests run the autograder in a folder laid out like Gradescope's).
+the Gradescope account's: the roster student whose email is the account's (`users[].email`),
+failing that the one whose id is the account's student ID (`users[].sid`, the SID column of
+Gradescope's roster). An uploaded sheet is text the student controls, so it never chooses the
+variant by itself: an account that matches no roster student, or a sheet whose `student_id`
+names another roster student, scores 0 with a sentence, unless the instructor exported with
+`--trust-sheet` (written into the zip as SETTINGS), which goes back to the sheet's `student_id`
+and file name. `LAGRADE_AUTOGRADER_ROOT` moves `/autograder` elsewhere (the tests run the
+autograder in a folder laid out like Gradescope's).
 """
 
 from __future__ import annotations
@@ -32,6 +37,7 @@ import lagrade.grading.report as report
 import lagrade.untrusted as untrusted
 from lagrade.errors import AssignmentError, LagradeError
 from lagrade.grading.batch import grade
+from lagrade.grading.canvas import SIS_USER_ID
 from lagrade.grading.lms import roster_value
 from lagrade.grading.manifest import load_manifest
 from lagrade.grading.moodle import EMAIL
@@ -44,6 +50,10 @@ DEFAULT_ROOT = "/autograder"
 VENV = "lagrade-venv"
 #: Files looked at in an upload, at most (a student may upload a folder of anything).
 MAX_CANDIDATES = 200
+#: The instructor's choices made at export, inside the zip beside the manifest.
+SETTINGS = "lagrade-gradescope.json"
+#: Roster columns that may hold the student ID Gradescope's roster has (besides `id`).
+SID_COLUMNS = ("sid", "student id", *SIS_USER_ID)
 _EPOCH = (1980, 1, 1, 0, 0, 0)
 
 SETUP_SH = """\
@@ -104,9 +114,11 @@ exec "$ROOT/lagrade-venv/bin/python" -c \\
 # --- the export ----------------------------------------------------------------------------------
 
 
-def export_gradescope(manifest_path: Path, out: Path) -> Path:
+def export_gradescope(manifest_path: Path, out: Path, *, trust_sheet: bool = False) -> Path:
     """Write the autograder zip for a generated assignment: setup.sh, run_autograder, the
-    lagrade wheel, the manifest and the files `grade` reads beside it, and a README."""
+    lagrade wheel, the manifest and the files `grade` reads beside it, and a README.
+    `trust_sheet`: when the account matches no roster student, take the student the sheet
+    names (for a roster without emails or Gradescope's student IDs; see the module docstring)."""
     manifest_path = Path(manifest_path)
     if manifest_path.suffix != ".json":
         raise AssignmentError(
@@ -118,7 +130,8 @@ def export_gradescope(manifest_path: Path, out: Path) -> Path:
         "setup.sh": (SETUP_SH.encode(), 0o755),
         "run_autograder": (RUN_AUTOGRADER.encode(), 0o755),
         "manifest.json": (manifest_path.read_bytes(), 0o644),
-        "README.txt": (_readme(manifest).encode(), 0o644),
+        "README.txt": (_readme(manifest, trust_sheet).encode(), 0o644),
+        SETTINGS: (json.dumps({"trust_sheet": trust_sheet}).encode(), 0o644),
     }
     for name in _files_grade_reads(manifest):
         path = manifest_path.parent / name
@@ -143,8 +156,22 @@ def _files_grade_reads(manifest: Mapping[str, Any]) -> list[str]:
     return [str(manifest["assignment"].get("file", "assignment.toml"))]
 
 
-def _readme(manifest: Mapping[str, Any]) -> str:
+def _readme(manifest: Mapping[str, Any], trust_sheet: bool) -> str:
     title = manifest["assignment"].get("title", "")
+    if trust_sheet:
+        who = """\
+The student is found by the email of their Gradescope account in the roster's email column,
+then by the account's Student ID (SID) in the roster's id (or sid) column; failing both, this
+autograder was exported with --trust-sheet: it takes the student_id in the sheet, then the
+file's name. A sheet whose student_id names someone else is graded as the account's student,
+with a warning."""
+    else:
+        who = """\
+The student is found by the email of their Gradescope account in the roster's email column,
+then by the account's Student ID (SID) in the roster's id (or sid) column. An account that
+matches neither, or a sheet whose student_id names another student, scores 0 with a sentence
+saying why (export with --trust-sheet to take the sheet's student_id when the account matches
+no one)."""
     return f"""\
 Gradescope autograder for {title!r}, written by `lagrade export gradescope`.
 
@@ -154,9 +181,8 @@ Python 3.11 when the image has an older one) > Update Autograder.
 
 Students upload their answer sheet: the <id>.toml that `lagrade generate` wrote for them, filled
 in (or the same fields as .json). Each is graded against their own variant, as `lagrade grade`
-grades it. The student is found by the email of their Gradescope account in the roster's email
-column; failing that, by the student_id in the sheet, then by the file's name. A sheet whose
-student_id names someone else is graded as the account's student, with a warning.
+grades it.
+{who}
 
 results.json gives one test per part: the points, and lagrade's feedback as plain text.
 """
@@ -205,7 +231,13 @@ def grade_submission(root: Path) -> dict[str, Any]:
     """The results.json for the upload in `root/submission` (see the module docstring)."""
     manifest_path = root / "source" / "manifest.json"
     manifest = load_manifest(manifest_path)
-    found = identify(manifest, _metadata(root / "submission_metadata.json"), root / "submission")
+    settings = _json_object(root / "source" / SETTINGS)
+    found = identify(
+        manifest,
+        _json_object(root / "submission_metadata.json"),
+        root / "submission",
+        trust_sheet=settings.get("trust_sheet") is True,
+    )
     if found.student is None:
         return _message(found.how)
     student = found.student
@@ -243,33 +275,48 @@ def grade_submission(root: Path) -> dict[str, Any]:
     return payload
 
 
-def identify(manifest: Mapping[str, Any], metadata: Mapping[str, Any], upload: Path) -> Identified:
-    """The roster student and the sheet of an upload (see the module docstring)."""
+def identify(
+    manifest: Mapping[str, Any],
+    metadata: Mapping[str, Any],
+    upload: Path,
+    *,
+    trust_sheet: bool = False,
+) -> Identified:
+    """The roster student and the sheet of an upload (see the module docstring); a student of
+    None means nothing is graded and `how` is the sentence to show."""
     students = manifest["students"]
     sheets = _candidate_sheets(upload)
     by_id = {s["id"].casefold(): s for s in students}
-    by_email = {}
-    for s in students:
-        email = roster_value(s.get("extra") or {}, EMAIL).casefold()
-        if email:
-            by_email.setdefault(email, s)
     claims = {path: _claimed_id(path) for path in sheets}
 
     def named(path: Path, sid: str) -> bool:
         return path.stem.casefold() == sid.casefold() or claims[path] == sid.casefold()
 
-    for user in metadata.get("users") or []:
-        email = str(user.get("email", "") if isinstance(user, Mapping) else "").casefold()
-        student = by_email.get(email)
-        if student is None:
-            continue
-        how = "the student whose email is your Gradescope account's"
+    account = _account_student(students, metadata)
+    if account is not None:
+        student, how = account
         mine = [p for p in sheets if named(p, student["id"])] or (
             sheets if len(sheets) == 1 else []
         )
         if len(mine) != 1 and sheets:
             return Identified(student, None, how, (_which_file(sheets),))
-        return Identified(student, mine[0] if mine else None, how, _no_sheet(sheets))
+        sheet = mine[0] if mine else None
+        claimed = claims.get(sheet, "") if sheet is not None else ""
+        if claimed in by_id and claimed != student["id"].casefold() and not trust_sheet:
+            other = by_id[claimed]["id"]
+            return Identified(
+                None,
+                None,
+                f"Not graded: your file {sheet.name} is the answer sheet of another student "
+                f"(student_id = {other!r}), and your Gradescope account is {student['name']} "
+                f"({student['id']}) on the class roster. Upload your own answer sheet, "
+                f"{student['id']}.toml, with its student_id line as it came.",
+            )
+        return Identified(student, sheet, how, _no_sheet(sheets))
+    if not sheets:
+        return Identified(None, None, _no_sheet(sheets)[0])
+    if not trust_sheet:
+        return Identified(None, None, _unknown_account(metadata))
     owners = {}
     for path in sheets:
         sid = claims[path] or path.stem.casefold()
@@ -279,16 +326,69 @@ def identify(manifest: Mapping[str, Any], metadata: Mapping[str, Any], upload: P
         path, student = next(iter(owners.items()))
         source = "the student_id in" if claims[path] in by_id else "the name of"
         return Identified(student, path, f"{source} your file {path.name}")
-    if not sheets:
-        return Identified(None, None, _no_sheet(sheets)[0])
     if len(owners) > 1:
         return Identified(None, None, _which_file(sheets))
     return Identified(
         None,
         None,
-        "lagrade could not tell whose answer sheet this is: your Gradescope email is not on "
+        "lagrade could not tell whose answer sheet this is: your Gradescope account is not on "
         "the class roster, and the file names no student on it. Keep the student_id line the "
         "answer sheet came with (or name the file <your id>.toml) and submit again.",
+    )
+
+
+def _account_student(
+    students: Sequence[Mapping[str, Any]], metadata: Mapping[str, Any]
+) -> tuple[Mapping[str, Any], str] | None:
+    """The roster student of the submitting Gradescope account, and how it was found: by the
+    account's email in the roster's email column, then by its student ID (`sid`, as Gradescope's
+    roster has it) in the roster's `id` or sid column. Each is tried over every user of a group
+    submission before the next, so an email match always wins."""
+    users = [u for u in metadata.get("users") or [] if isinstance(u, Mapping)]
+    by_email: dict[str, Mapping[str, Any]] = {}
+    by_sid: dict[str, Mapping[str, Any]] = {}
+    for s in students:
+        extra = s.get("extra") or {}
+        email = roster_value(extra, EMAIL).casefold()
+        if email:
+            by_email.setdefault(email, s)
+        for sid in (roster_value(extra, SID_COLUMNS), s["id"]):
+            if sid:
+                by_sid.setdefault(sid.casefold(), s)
+    for user in users:
+        student = by_email.get(_text(user.get("email")))
+        if student is not None:
+            return student, "the student whose email is your Gradescope account's"
+    for user in users:
+        student = by_sid.get(_text(user.get("sid")))
+        if student is not None:
+            return student, "the student whose id is your Gradescope account's student ID"
+    return None
+
+
+def _text(value: Any) -> str:
+    """A metadata field as a casefolded string ("" when absent); a sid may come as a number."""
+    if isinstance(value, bool) or value is None:
+        return ""
+    return str(value).strip().casefold() if isinstance(value, str | int) else ""
+
+
+def _unknown_account(metadata: Mapping[str, Any]) -> str:
+    users = [u for u in metadata.get("users") or [] if isinstance(u, Mapping)]
+    shown = "; ".join(
+        ", ".join(
+            f"{label} {str(user[key]).strip()}"
+            for key, label in (("email", "email"), ("sid", "student ID"))
+            if _text(user.get(key))
+        )
+        or "no email or student ID"
+        for user in users
+    )
+    account = f" ({shown})" if shown else ""
+    return (
+        f"Not graded: your Gradescope account{account} matches no student on the class roster, "
+        "so lagrade cannot tell which variant of the assignment is yours. Ask your instructor "
+        "to add your email (or Gradescope student ID) to the roster; your submission is kept."
     )
 
 
@@ -348,8 +448,9 @@ def _which_file(sheets: Sequence[Path]) -> str:
     )
 
 
-def _metadata(path: Path) -> Mapping[str, Any]:
-    """submission_metadata.json, or {} when it is absent or unreadable."""
+def _json_object(path: Path) -> Mapping[str, Any]:
+    """A JSON object from a file (submission_metadata.json, the settings), or {} when it is
+    absent or unreadable."""
     try:
         data = json.loads(path.read_text(encoding="utf-8"))
     except (OSError, ValueError):

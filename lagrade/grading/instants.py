@@ -7,6 +7,11 @@ instant to the page that refuses a save and to the grade that picks the last sav
                                 (`[answer_page] timezone`, default: this computer's)
     2025-03-14 23:59            the same (a space for the T, seconds optional)
     2025-03-14                  the end of that day (every save on the 14th is on time)
+
+A wall-clock time the zone's clocks never showed (the hour skipped when daylight saving
+begins: 2026-03-08T02:30 in America/New_York) or showed twice (the hour repeated when it ends:
+2026-11-01T01:30 there) names no single instant: it is refused, saying which it is and how to
+write the instant meant (with its offset, which a time written with one always has).
 """
 
 from __future__ import annotations
@@ -62,9 +67,48 @@ def read_instant(text: str, where: dt.tzinfo | None = None) -> dt.datetime:
         raise RequestError(f"{text[:60]!r} is not a valid date and time ({error})") from None
     if moment.tzinfo is not None:
         return moment
+    _one_instant(moment, where, text[:60])
     if where is None:
         return moment.astimezone()  # a naive time is this computer's local time (DST included)
     return moment.replace(tzinfo=where)
+
+
+def _one_instant(wall: dt.datetime, where: dt.tzinfo | None, text: str) -> None:
+    """RequestError when the wall-clock time `wall` in `where` (None: this computer's zone)
+    is in a daylight-saving gap or fold. Python reads such a time either way (`fold` 0 and 1
+    give different instants); a time the clocks showed once reads back as itself both ways."""
+    readings = [_reading(wall.replace(fold=fold), where) for fold in (0, 1)]
+    if readings[0] == readings[1]:
+        return
+    shows = [r.astimezone(where).replace(tzinfo=None) == wall for r in readings]
+    place = getattr(where, "key", None) or "this computer's time zone"
+    first, second = (r.astimezone(where) for r in readings)
+    if all(shows):  # a fold: the clocks showed this time twice
+        raise RequestError(
+            f"{text!r} happens twice in {place}, when the clocks go back (at "
+            f"{_offset(first)} {first.strftime('%Z')} and again at {_offset(second)} "
+            f"{second.strftime('%Z')}): write the offset of the one you mean, e.g. "
+            f"{wall.isoformat(timespec='minutes')}{_offset(first)}"
+        )
+    # a gap: fold 0 reads the time with the offset before the jump, which lands after it
+    later, earlier = first, second
+    raise RequestError(
+        f"{text!r} never happens in {place}: the clocks skip that hour when daylight saving "
+        f"begins (from {_offset(earlier)} {earlier.strftime('%Z')} to {_offset(later)} "
+        f"{later.strftime('%Z')}); write a time the clocks show, or an offset"
+    )
+
+
+def _reading(wall: dt.datetime, where: dt.tzinfo | None) -> dt.datetime:
+    """`wall` (with its `fold`) read in `where` as an instant in UTC."""
+    if where is None:
+        return dt.datetime.fromtimestamp(wall.timestamp(), dt.UTC)
+    return wall.replace(tzinfo=where).astimezone(dt.UTC)
+
+
+def _offset(moment: dt.datetime) -> str:
+    """The UTC offset of an aware time as ISO 8601 writes it: `-05:00`."""
+    return moment.isoformat()[-6:]
 
 
 def shown(moment: dt.datetime) -> str:

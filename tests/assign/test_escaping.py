@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import re
 import tomllib
 from pathlib import Path
 
@@ -99,3 +100,78 @@ def test_a_wrapped_sheet_reads_back_the_same(values, width):
     )
     wrapped = toml_wrapped(sheet, width)
     assert tomllib.loads(wrapped) == tomllib.loads(sheet)
+
+
+def test_a_formula_s_outer_brackets_round_a_sum_let_tex_break_inside() -> None:
+    """sympy's `\\left( … \\right)` is one box TeX cannot break; round a sum outside any braces
+    it becomes `\\bigl( … \\bigr)` (`\\biggl` round a fraction) so the key's long L can wrap. A
+    function's argument (inside braces) and a bracket round a product are kept."""
+    from lagrade.assign.templating import tex_breakable
+
+    assert tex_breakable(
+        r"- g \left(l_{1} \cos{\left(\theta_{1} - \theta_{2} \right)} + l_{2}\right)"
+        r" + \left(\frac{a}{b} - c\right)^{2} + \left(x y\right)^{2}"
+    ) == (
+        r"- g \bigl(l_{1} \cos{\left(\theta_{1} - \theta_{2} \right)} + l_{2}\bigr)"
+        r" + \biggl(\frac{a}{b} - c\biggr)^{2} + \left(x y\right)^{2}"
+    )
+    assert tex_breakable(r"\left(- x\right) + \left(a \left(b + c\right)\right)") == (
+        r"\left(- x\right) + \left(a \left(b + c\right)\right)"
+    )
+
+
+#: A scene file an instructor pasted HTML into: a unit, a parameter's description, a title and
+#: a quantity's unit and description (text that passes `scene check`: no control characters).
+HOSTILE_SCENE = """\
+title = "Pendulum <img src=x onerror=alert(1)>"
+statement = "A bob of mass m on a rod of length l. Use {theta}."
+coordinates = ["theta"]
+potential = "gravity"
+constraints = ["x_bob^2 + y_bob^2 - l^2"]
+
+[parameters]
+m = { domain = "positive", unit = "<img src=x onerror=alert(2)>", values = [1.0] }
+l = { domain = "positive", unit = "m", values = [1.0], description = "<b>|length|</b> *of* it" }
+g = { domain = "positive", unit = "m/s^2", values = [9.81] }
+
+[bodies.bob]
+mass = "m"
+position = ["l sin(theta)", "-l cos(theta)"]
+
+[quantities.w]
+description = "frequency <script>alert(3)</script>"
+value = "sqrt(g/l)"
+unit = "<img src=y onerror=alert(4)>"
+"""
+
+
+def test_a_scene_file_s_texts_are_escaped_in_every_format(tmp_path: Path) -> None:
+    """Every text of an instructor's scene file is shown, never run, in each output: the
+    Markdown handout (pasted into an LMS page, where raw HTML would run) and key, the HTML, the
+    LaTeX and the answer sheet's comments."""
+    from lagrade.assign.generate import generate
+
+    (tmp_path / "pendulum.toml").write_text(HOSTILE_SCENE)
+    (tmp_path / "a.toml").write_text(
+        'title = "PS"\n\n[[problems]]\nscene = "pendulum.toml"\n'
+        'parts = ["lagrangian", { quantity = "w" }]\n'
+    )
+    roster = write_roster(tmp_path / "r.csv", [("s1", "Ada")])
+    out = tmp_path / "out"
+    generate(tmp_path / "a.toml", roster, 3, out, "md,html,tex", verify=None)
+    texts = {
+        path.relative_to(out): path.read_text(encoding="utf-8")
+        for folder in ("handouts", "keys", "answer_sheets")
+        for path in (out / folder).iterdir()
+    }
+    for name, text in texts.items():
+        if name.suffix == ".toml":  # a comment of a plain-text file: shown as it is, inert
+            continue
+        # Markdown shows `\<` as a character; anything else would start a tag
+        assert not re.search(r"(?<!\\)<(img|script|b)\b", text), name
+    md = texts[Path("handouts/s1.md")]
+    assert r"\<img src=x onerror=alert(2)\>" in md and r"\<img src=y onerror=alert(4)\>" in md
+    assert "&lt;img src=x onerror=alert(2)&gt;" in texts[Path("handouts/s1.html")]
+    assert r"\textless{}img src=x onerror=alert(2)\textgreater{}" in texts[Path("handouts/s1.tex")]
+    sheet = tomllib.loads(texts[Path("answer_sheets/s1.toml")])
+    assert set(sheet) >= {"problem1"}

@@ -104,3 +104,29 @@ def test_a_quantity_name_is_a_word_not_a_subscript(out: Path) -> None:
     html = (out / "keys" / "s001.html").read_text(encoding="utf-8")
     assert "<mtext>block_acceleration</mtext><mo>=</mo>" in html
     assert "<msub><mi>block</mi>" not in html
+
+
+def test_prompts_read_as_sentences_with_their_formulas_unbroken(out: Path) -> None:
+    """A quantity's prompt takes its article ("Find the angular frequency of small
+    oscillations", not "Find angular frequency …"), the key's heading for it starts with a
+    capital, and the formulas of the prompts hold together: no-break spaces and a minus sign,
+    never a hyphen a browser or TeX may break the line at."""
+    html = (out / "handouts" / "s001.html").read_text(encoding="utf-8")
+    tex = (out / "handouts" / "s001.tex").read_text(encoding="utf-8")
+    md = (out / "handouts" / "s001.md").read_text(encoding="utf-8")
+    for text in (html, md):
+        assert "DOF\u00a0=\u00a03N\u00a0\u2212\u00a0k" in text and "3N - k" not in text
+        assert "L\u00a0=\u00a0T\u00a0\u2212\u00a0V" in text and "L = T - V" not in text
+        assert "Find the angular frequency of small oscillations" in text
+        assert "Find angular" not in text and "Find acceleration" not in text
+        assert "Find the the" not in text and "Find the how" not in text
+        assert "Euler\u2013Lagrange equations" in text
+    assert r"(DOF~=~3N~\ensuremath{-}~k)" in tex and "3N - k" not in tex
+    key = (out / "keys" / "s001.md").read_text(encoding="utf-8")
+    headings = re.findall(r"^### (.*)$", key, flags=re.M)
+    assert "Angular frequency of small oscillations of the pendulum" in headings
+    assert "The lower normal-mode angular frequency" in headings
+    assert not [h for h in headings if h[:1].islower()], headings
+    assert r"\textbf{The lower normal-mode angular frequency.}" in (
+        out / "keys" / "s001.tex"
+    ).read_text(encoding="utf-8")

@@ -6,6 +6,7 @@ import re
 import shutil
 import subprocess
 import tomllib
+import unicodedata
 from pathlib import Path
 
 import pytest
@@ -93,3 +94,74 @@ def test_pdfs_are_byte_identical_across_runs(
     for folder in ("handouts", "keys"):
         a = (tmp_path / "a" / folder / "s001.pdf").read_bytes()
         assert a == (tmp_path / "b" / folder / "s001.pdf").read_bytes()
+
+
+#: A Lagrangian too long for one line of the page: twelve terms in one bracket (which sympy
+#: sets as a single \left( … \right) box) and two after it; each coefficient is a different
+#: prime, so each term can be found in the text of the PDF.
+LONG_L = (
+    "m (x_dot^2 + y_dot^2)/2 - 101 k x^2 - 103 k y^2 - 107 k x y - 109 k x^3 - 113 k y^3"
+    " - 127 k x^2 y - 131 k x y^2 - 137 k x^4 - 139 k y^4 - 149 k x^3 y - 151 k x^2 y^2"
+    " - 157 k x y^3"
+)
+LONG_SCENE = f"""\
+title = "Particle in a polynomial well"
+statement = "A particle of mass m moves in a plane in a polynomial potential. Use {{x}} and {{y}}."
+coordinates = ["x", "y"]
+lagrangian = "{LONG_L}"
+
+[parameters]
+m = {{ domain = "positive", unit = "kg", values = [1.0], description = "mass" }}
+k = {{ domain = "positive", unit = "N/m", values = [2.0], description = "stiffness" }}
+"""
+COEFFICIENTS = ("101", "103", "107", "109", "113", "127", "131", "137", "139", "149", "151", "157")
+#: The right edge of the text on the page: US letter (612 pt) less geometry's 2.3 cm margin.
+RIGHT_EDGE = 612 - 2.3 / 2.54 * 72
+
+
+def words_past_the_margin(pdf: Path) -> list[str]:
+    """Every word pdftotext places right of the text area (what a clipped formula leaves)."""
+    boxes = subprocess.run(
+        ["pdftotext", "-bbox", str(pdf), "-"], capture_output=True, text=True, check=True
+    ).stdout
+    return [
+        f"{word} (ends at {float(x_max):.0f} pt)"
+        for x_max, word in re.findall(
+            r'<word xMin="[\d.]+" yMin="[\d.]+" xMax="([\d.]+)"[^>]*>'
+            r"([^<]*)</word>",
+            boxes,
+        )  # fmt: skip
+        if float(x_max) > RIGHT_EDGE + 1
+    ]
+
+
+@pytest.mark.skipif(shutil.which("pdftotext") is None, reason="no pdftotext (poppler-utils)")
+@needs_pdflatex
+def test_a_long_lagrangian_is_broken_across_lines_never_clipped(tmp_path: Path) -> None:
+    """The key's L and h of a long Lagrangian: every term is in the PDF's text, and no word
+    lies past the right margin (before, the line ran off the page: m ẋ²/2 and m ẏ²/2 lost)."""
+    (tmp_path / "well.toml").write_text(LONG_SCENE)
+    assignment = write_assignment(
+        tmp_path / "a.toml", [{"scene": "well.toml", "parts": ["lagrangian", "eom", "conserved"]}]
+    )
+    roster = write_roster(tmp_path / "r.csv", [("x1", "Zoe")])
+    generate(assignment, roster, 1, tmp_path / "out", "pdf")
+    pdf = tmp_path / "out" / "keys" / "x1.pdf"
+    text = subprocess.run(
+        ["pdftotext", str(pdf), "-"], capture_output=True, text=True, check=True
+    ).stdout
+    text = unicodedata.normalize("NFKC", text)  # ẋ as one character, however the font has it
+    lagrangian = text[text.index("Lagrangian.\n") : text.index("Generalized momenta.")]
+    energy = text[text.index("Conserved quantities.") :]
+    for block in (lagrangian, energy):
+        assert all(c in block for c in COEFFICIENTS), block
+        assert "m\u1e8b2" in block and "m\u1e8f 2" in block, block  # m ẋ²/2, m ẏ²/2
+    assert words_past_the_margin(pdf) == []
+
+
+@pytest.mark.skipif(shutil.which("pdftotext") is None, reason="no pdftotext (poppler-utils)")
+@needs_pdflatex
+def test_no_formula_of_a_bank_key_runs_past_the_margin(bank_pdfs) -> None:
+    """Every scene's key (the double pendulum's L and h were 43 pt too wide)."""
+    out, _ = bank_pdfs
+    assert words_past_the_margin(out / "keys" / "x1.pdf") == []

@@ -27,8 +27,9 @@ import pytest
 
 from lagrade.assign.generate import generate
 from lagrade.cli.demo_class import write_submissions
+from lagrade.cli.main import main
 from lagrade.grading.batch import grade
-from lagrade.grading.gradescope import export_gradescope
+from lagrade.grading.gradescope import SETTINGS, export_gradescope, identify
 from tests.batch.gradescope_schema import problems
 
 ASSIGNMENT = """\
@@ -120,8 +121,34 @@ def autograder(course, tmp_path_factory) -> Path:
     return root
 
 
-def submit(root: Path, files: dict[str, str | bytes], email: str | None = None) -> dict:
-    """One Gradescope run: the upload, the submitter, ./run_autograder; the results.json."""
+def metadata(email: str | None = None, sid: str | int | None = None) -> dict:
+    """submission_metadata.json as Gradescope documents it ("Submission Metadata",
+    gradescope-autograders.readthedocs.io/en/latest/submission_metadata/: id, created_at,
+    assignment, submission_method, users[] with email, id, name), with the user's `sid` (the
+    Student ID of Gradescope's roster, as cs161-staff/gradescope-api's GradescopeStudent and
+    the metadata's users carry it) when given. An account without email still has the key."""
+    user: dict = {"email": email or "", "id": 7, "name": "someone"}
+    if sid is not None:
+        user["sid"] = sid
+    return {
+        "id": 123456,
+        "created_at": "2018-07-01T14:22:32.365935-07:00",
+        "assignment": {"id": 25828, "course_id": 1234, "title": "PS 3", "total_points": "7.0"},
+        "submission_method": "upload",
+        "users": [user] if email or sid is not None else [],
+        "previous_submissions": [],
+    }
+
+
+def submit(
+    root: Path,
+    files: dict[str, str | bytes],
+    email: str | None = None,
+    sid: str | int | None = None,
+    trust_sheet: bool = False,
+) -> dict:
+    """One Gradescope run: the upload, the submitter, ./run_autograder; the results.json.
+    `trust_sheet` writes the setting `export --trust-sheet` puts in the zip."""
     shutil.rmtree(root / "submission")
     shutil.rmtree(root / "results", ignore_errors=True)
     (root / "submission").mkdir()
@@ -129,9 +156,8 @@ def submit(root: Path, files: dict[str, str | bytes], email: str | None = None) 
         path = root / "submission" / name
         path.parent.mkdir(parents=True, exist_ok=True)
         path.write_bytes(data if isinstance(data, bytes) else data.encode())
-    metadata = root / "submission_metadata.json"
-    users = [{"email": email, "id": 7, "name": "someone"}] if email else []
-    metadata.write_text(json.dumps({"id": 1, "users": users, "previous_submissions": []}))
+    (root / "submission_metadata.json").write_text(json.dumps(metadata(email, sid)))
+    (root / "source" / SETTINGS).write_text(json.dumps({"trust_sheet": trust_sheet}))
     run = subprocess.run(
         [str(root / "run_autograder")],
         cwd=root,
@@ -160,6 +186,20 @@ def test_the_zip_has_gradescope_s_two_scripts_at_its_root_and_what_grade_reads(c
         assert zf.read("run_autograder").startswith(b"#!/usr/bin/env bash\n")
     assert modes["setup.sh"] == modes["run_autograder"] == 0o755
     assert {"README.txt", "lagrade-0.1.0-py3-none-any.whl"} <= set(modes)
+
+
+def test_trust_sheet_is_an_instructor_setting_written_into_the_zip(course, tmp_path):
+    """`lagrade export gradescope --trust-sheet` is the one way back to trusting the sheet's
+    student_id; the zip says which choice was made, and its README says what it means."""
+    for flags, trusted in (([], False), (["--trust-sheet"], True)):
+        out = tmp_path / f"{trusted}.zip"
+        args = ["export", "gradescope", str(course / "ps" / "manifest.json"), "--out", str(out)]
+        assert main([*args, *flags]) == 0
+        with zipfile.ZipFile(out) as zf:
+            assert json.loads(zf.read(SETTINGS)) == {"trust_sheet": trusted}
+            readme = zf.read("README.txt").decode()
+        assert ("exported with --trust-sheet" in readme) is trusted
+        assert "Student ID (SID)" in readme
 
 
 def test_setup_installs_lagrade_from_the_wheel(autograder):
@@ -192,16 +232,44 @@ def test_each_sheet_earns_on_gradescope_what_lagrade_grade_gives(course, autogra
         assert payload["output_format"] == "text"
 
 
-def test_without_an_account_match_the_sheet_says_whose_it_is(course, autograder):
-    """Dana has no email on the roster: her sheet's student_id names her; a sheet without one
-    is known by its file name."""
+def test_an_account_without_a_roster_email_is_found_by_gradescope_s_student_id(course, autograder):
+    """Dana has no email on the roster: Gradescope's student ID (sid) finds her, whatever
+    the sheet or its file is called."""
     sheet = (course / "sheets" / "s04.toml").read_text()
     graded = json.loads((course / "grades" / "students" / "s04.json").read_text())
-    by_claim = submit(autograder, {"answers.toml": sheet}, email="dana@elsewhere.org")
+    payload = submit(autograder, {"answers.toml": sheet}, email="dana@elsewhere.org", sid="S04")
+    assert payload["score"] == pytest.approx(graded["score"])
+    assert payload["output"].startswith(
+        "Graded as Dana Scully (s04): the student whose id is your Gradescope account's student ID"
+    )
+
+
+def test_a_classmate_s_sheet_from_an_account_on_no_roster_row_is_not_graded(course, autograder):
+    """The attack: an account the roster does not know uploads Dana's filled-in sheet. It was
+    graded on Dana's variant and its points credited to the uploader; now it scores 0, says
+    why, and names the account as Gradescope gave it."""
+    sheet = (course / "sheets" / "s04.toml").read_text()
+    payload = submit(autograder, {"s04.toml": sheet}, email="mallory@elsewhere.org", sid=99)
+    assert payload["score"] == 0 and payload["tests"] == []
+    assert payload["output"].startswith(
+        "Not graded: your Gradescope account (email mallory@elsewhere.org, student ID 99) "
+        "matches no student on the class roster"
+    )
+    assert "Dana" not in payload["output"] and "s04" not in payload["output"]
+
+
+def test_with_trust_sheet_the_sheet_says_whose_it_is(course, autograder):
+    """`export --trust-sheet`: an account on no roster row is taken at its sheet's
+    student_id; a sheet without one is known by its file name."""
+    sheet = (course / "sheets" / "s04.toml").read_text()
+    graded = json.loads((course / "grades" / "students" / "s04.json").read_text())
+    by_claim = submit(
+        autograder, {"answers.toml": sheet}, email="dana@elsewhere.org", trust_sheet=True
+    )
     assert by_claim["score"] == pytest.approx(graded["score"])
     assert "the student_id in your file answers.toml" in by_claim["output"]
     unsigned = "\n".join(line for line in sheet.splitlines() if not line.startswith("student_id"))
-    by_name = submit(autograder, {"folder/S04.toml": unsigned})
+    by_name = submit(autograder, {"folder/S04.toml": unsigned}, trust_sheet=True)
     assert by_name["score"] == pytest.approx(graded["score"])
     assert "the name of your file S04.toml" in by_name["output"]
 
@@ -209,22 +277,56 @@ def test_without_an_account_match_the_sheet_says_whose_it_is(course, autograder)
 def test_an_upload_lagrade_cannot_place_is_told_what_to_do(course, autograder):
     nothing = submit(autograder, {"notes.txt": "hello"}, email="nobody@uni.edu")
     assert nothing["score"] == 0 and "no answer sheet" in nothing["output"]
-    unknown = submit(autograder, {"answers.toml": "[problem1]\ndof = '1'\n"})
+    unknown = submit(autograder, {"answers.toml": "[problem1]\ndof = '1'\n"}, trust_sheet=True)
     assert unknown["score"] == 0 and "could not tell whose answer sheet" in unknown["output"]
     two = {
         "s01.toml": (course / "sheets" / "s01.toml").read_text(),
         "s02.toml": (course / "sheets" / "s02.toml").read_text(),
     }
-    assert "several answer sheets" in submit(autograder, two)["output"]
+    assert "several answer sheets" in submit(autograder, two, trust_sheet=True)["output"]
     mine = submit(autograder, two, email="ada@uni.edu")  # the account picks its own
     assert mine["output"].startswith("Graded as Ada Lovelace (s01)")
 
 
-def test_a_sheet_naming_someone_else_is_graded_as_the_account_s_student(course, autograder):
+def test_a_sheet_naming_another_student_scores_0_with_a_sentence(course, autograder):
+    """Ada's account uploads Ben's sheet: not graded on either variant, told why."""
     sheet = (course / "sheets" / "s02.toml").read_text()
-    payload = submit(autograder, {"s02.toml": sheet}, email="ada@uni.edu")
+    payload = submit(autograder, {"answers.toml": sheet}, email="ada@uni.edu")
+    assert payload["score"] == 0 and payload["tests"] == []
+    assert payload["output"] == (
+        "Not graded: your file answers.toml is the answer sheet of another student "
+        "(student_id = 's02'), and your Gradescope account is Ada Lovelace (s01) on the class "
+        "roster. Upload your own answer sheet, s01.toml, with its student_id line as it came."
+    )
+
+
+def test_with_trust_sheet_a_sheet_naming_someone_else_is_graded_as_the_account_s_student(
+    course, autograder
+):
+    sheet = (course / "sheets" / "s02.toml").read_text()
+    payload = submit(autograder, {"s02.toml": sheet}, email="ada@uni.edu", trust_sheet=True)
     assert payload["output"].startswith("Graded as Ada Lovelace (s01)")
     assert "Warning:" in payload["output"] and "s02" in payload["output"]
+
+
+def test_email_wins_over_student_id_and_a_numeric_sid_matches(tmp_path):
+    """Identification alone, on Gradescope's documented metadata: a group submission whose
+    second user has the roster email wins over the first user's sid; a sid Gradescope gives as
+    a number matches a roster id typed as digits (or the roster's sid column)."""
+    students = [
+        {"id": "1001", "name": "A", "extra": {"email": ""}},
+        {"id": "x2", "name": "B", "extra": {"email": "b@uni.edu", "SID": "2002"}},
+    ]
+    manifest = {"students": students}
+    upload = tmp_path / "submission"
+    upload.mkdir()
+    (upload / "sheet.toml").write_text("[problem1]\n")
+    group = metadata("nobody@x.org", 1001)
+    group["users"].append({"email": "B@UNI.EDU", "id": 8, "name": "B"})
+    assert identify(manifest, group, upload).student["id"] == "x2"
+    assert identify(manifest, metadata(None, 1001), upload).student["id"] == "1001"
+    assert identify(manifest, metadata(None, "2002"), upload).student["id"] == "x2"
+    assert identify(manifest, metadata(None, True), upload).student is None
 
 
 def test_an_unreadable_sheet_is_plain_text_feedback_not_html(autograder):

@@ -122,3 +122,22 @@ def test_the_console_script_prints_the_version():
         [sys.executable, "-m", "lagrade", "--version"], capture_output=True, text=True
     )
     assert out.returncode == 0 and out.stdout.startswith("lagrade "), out
+
+
+def test_help_and_readme_name_what_the_commands_do(capfd):
+    """`generate`'s default formats are one value, said alike by --help and the README (Markdown,
+    HTML and their LaTeX source); `demo --help` names its folder DIR, as the README's
+    `lagrade demo [DIR]` does, in the usage line and the description alike."""
+    from pathlib import Path
+
+    from lagrade.assign.generate import DEFAULT_FORMATS
+
+    status, out, _ = _run(["generate", "--help"], capfd)
+    assert status == 0
+    assert f"(default {','.join(DEFAULT_FORMATS)}:" in " ".join(out.split())
+    readme = " ".join((Path(__file__).parents[2] / "README.md").read_text().split())
+    assert "Markdown, HTML and their LaTeX source by default" in readme
+    assert DEFAULT_FORMATS == ("md", "html", "tex")
+    status, out, _ = _run(["demo", "--help"], capfd)
+    assert status == 0 and "[DIR]" in out and "In DIR:" in out and "FOLDER" not in out
+    assert "`lagrade demo [DIR]`" in readme

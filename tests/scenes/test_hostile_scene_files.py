@@ -66,6 +66,15 @@ CASES = [
     ("a force that is a table", 'forces = { theta = { a = 1 } }\n' + PENDULUM, "forces.theta: {'a': 1} is not an expression"),
     ("a body in space with two angles", PENDULUM.replace('position = ["l sin(theta)", "-l cos(theta)"]', 'position = ["l sin(theta)", "-l cos(theta)", 0]\ninertia = ["m", "m", "m"]\nangles = ["theta", 0]'), "bodies.bob.angles: a rigid body in space declares a list of 3"),
     ("a body in space in a plane", PENDULUM.replace('position = ["l sin(theta)", "-l cos(theta)"]', 'position = ["l sin(theta)", "-l cos(theta)"]\ninertia = ["m", "m", "m"]\nangles = ["theta", 0, 0]'), "a rigid body in space: give x, y and z"),
+    ("a line break in a unit", PENDULUM.replace('unit = "kg"', 'unit = "kg\\nkg"'), "parameters.m.unit: holds a line break (\\n) at character 3"),
+    ("a line separator in a unit", PENDULUM.replace('unit = "kg"', 'unit = "kg\\u2028evil"'), "parameters.m.unit: holds a line break (\\u2028)"),
+    ("a paragraph separator in a title", PENDULUM.replace('title = "Pendulum"', 'title = "Pen\\u2029dulum"'), "title: holds a line break (\\u2029)"),
+    ("an escape sequence in a title", PENDULUM.replace('title = "Pendulum"', 'title = "\\u001b[2JPendulum"'), "title: holds an invisible control character (\\x1b)"),
+    ("a C1 control in a description", PENDULUM.replace('unit = "m", ', 'unit = "m", description = "length\\u0085of the rod", '), "parameters.l.description: holds a line break (\\x85)"),
+    ("a right-to-left override in a unit", PENDULUM.replace('unit = "kg"', 'unit = "\\u202egk"'), "parameters.m.unit: holds an invisible control character (\\u202e)"),
+    ("a tab in a quantity's description", PENDULUM + '[quantities.w]\ndescription = "angular\\tfrequency"\nvalue = "sqrt(g/l)"\n', "quantities.w.description: holds a tab"),
+    ("a control character in a statement", PENDULUM.replace("Use {theta}.", "Use {theta}.\\u0007"), "statement: holds an invisible control character (\\x07)"),
+    ("a line break in an option's wording", PENDULUM + '[options.o.a]\nwording = "one\\ntwo"\n[options.o.b]\n', "wording: holds a line break"),
 ]  # fmt: skip
 
 

@@ -244,3 +244,57 @@ def test_late_and_timezone_settings():
     assert "late: 'soon' is not a date and time" in message
     assert "timezone: unknown time zone 'Mars/Olympus'" in message
     assert "lates: unknown field" in message
+
+
+#: Daylight-saving transitions of 2026 from the IANA zone database (tzdata): the United States
+#: spring forward on 8 March at 02:00 and fall back on 1 November at 02:00 (Energy Policy Act
+#: of 2005); the European Union on 29 March and 25 October at 01:00 UTC.
+@pytest.mark.parametrize(
+    "text, where, expected",
+    [
+        ("2026-03-08T02:30", "America/New_York", "'2026-03-08T02:30' never happens in "
+         "America/New_York: the clocks skip that hour when daylight saving begins (from -05:00 "
+         "EST to -04:00 EDT)"),
+        ("2026-03-29 02:15", "Europe/Berlin", "never happens in Europe/Berlin"),
+        ("2026-11-01T01:30", "America/New_York", "'2026-11-01T01:30' happens twice in "
+         "America/New_York, when the clocks go back (at -04:00 EDT and again at -05:00 EST): "
+         "write the offset of the one you mean, e.g. 2026-11-01T01:30-04:00"),
+        ("2026-10-25T02:30:00", "Europe/Berlin", "happens twice in Europe/Berlin"),
+    ],
+)  # fmt: skip
+def test_a_time_in_a_daylight_saving_gap_or_fold_is_refused(text, where, expected):
+    with pytest.raises(RequestError) as refused:
+        read_instant(text, zone(where))
+    assert expected in str(refused.value)
+    rule = due_rule(text, settings_from_table({"timezone": where}))
+    assert rule.due is None and expected in rule.unread  # the page says why it keeps no due
+
+
+def test_the_hours_around_a_transition_and_a_written_offset_are_one_instant():
+    new_york = zone("America/New_York")
+    assert read_instant("2026-03-08T01:59", new_york) == dt.datetime(2026, 3, 8, 6, 59, tzinfo=UTC)
+    assert read_instant("2026-03-08T03:00", new_york) == dt.datetime(2026, 3, 8, 7, 0, tzinfo=UTC)
+    assert read_instant("2026-11-01T01:30-05:00", new_york) == dt.datetime(
+        2026, 11, 1, 6, 30, tzinfo=UTC
+    )
+    assert read_instant("2026-11-01T02:30", new_york) == dt.datetime(2026, 11, 1, 7, 30, tzinfo=UTC)
+    assert read_instant("2026-03-08", new_york) == dt.datetime(
+        2026, 3, 9, 3, 59, 59, 999_999, tzinfo=UTC
+    )
+
+
+def test_in_this_computer_s_zone_too(monkeypatch):
+    """No `[answer_page] timezone`: the computer's own zone, with its transitions."""
+    import time
+
+    monkeypatch.setenv("TZ", "America/New_York")
+    time.tzset()
+    try:
+        with pytest.raises(RequestError, match="never happens in this computer's time zone"):
+            read_instant("2026-03-08T02:30")
+        with pytest.raises(RequestError, match="happens twice"):
+            read_instant("2026-11-01T01:30")
+        assert read_instant("2026-03-08T03:30") == dt.datetime(2026, 3, 8, 7, 30, tzinfo=UTC)
+    finally:
+        monkeypatch.undo()
+        time.tzset()

@@ -200,9 +200,26 @@ def _name(value: Any, key: str, what: str, problems: Problems) -> bool:
     return True
 
 
+#: What no text of a scene file may hold: C0 and C1 control characters, DEL, Unicode's line
+#: and paragraph separators, and the bidirectional overrides that reorder what is shown. A
+#: statement may break lines and hold tabs; a title, unit, description or wording is one line
+#: (a line break in a unit ends the answer sheet's comment it is written into, or hides a
+#: line in it).
+_NOT_IN_TEXT = re.compile(
+    "[\x00-\x08\x0b\x0c\x0e-\x1f\x7f-\x9f\u2028\u2029\u202a-\u202e\u2066-\u2069]"
+)
+_NOT_IN_ONE_LINE = re.compile("[\t\n\r]")
+
+
 def _string(
-    table: Mapping, key: str, where: str, problems: Problems, required: bool = False
+    table: Mapping,
+    key: str,
+    where: str,
+    problems: Problems,
+    required: bool = False,
+    lines: bool = False,
 ) -> str | None:
+    """A text of the file; one line unless `lines` (see _NOT_IN_TEXT)."""
     value = table.get(key)
     at = f"{where}.{key}" if where else key
     if value is None:
@@ -214,6 +231,21 @@ def _string(
         return None
     if len(value) > MAX_TEXT:
         problems.add(at, f"longer than {MAX_TEXT:,} characters")
+        return None
+    bad = _NOT_IN_TEXT.search(value) or (None if lines else _NOT_IN_ONE_LINE.search(value))
+    if bad:
+        char = bad.group()
+        kind = (
+            "a line break"
+            if char in "\n\r\u2028\u2029\x85\x0b\x0c"
+            else ("a tab" if char == "\t" else "an invisible control character")
+        )
+        text = "text" if lines else "one line of text"
+        problems.add(
+            at,
+            f"holds {kind} ({char.encode('unicode_escape').decode()}) at character "
+            f"{bad.start() + 1}: write it as {text} without control characters",
+        )
         return None
     return value
 
@@ -251,7 +283,7 @@ def read_declaration(data: Mapping[str, Any], problems: Problems) -> Declaration
     d = Declaration()
     _unknown_keys(data, TOP_KEYS, "", problems)
     d.title = _string(data, "title", "", problems, required=True) or ""
-    d.statement = _string(data, "statement", "", problems, required=True) or ""
+    d.statement = _string(data, "statement", "", problems, required=True, lines=True) or ""
     tags = _list(data.get("tags", []), "tags", problems, LIMITS["tags"]) or []
     d.tags = tuple(t for i, t in enumerate(tags) if _name(t, f"tags[{i + 1}]", "tag", problems))
     _coordinates(data, d, problems)

@@ -91,7 +91,7 @@ def make_app(room: ClassRoom) -> Starlette:
         if student_id is None:
             return _not_found()
         loop = asyncio.get_running_loop()
-        views = await loop.run_in_executor(None, room.problems_of, student_id)
+        views = await room.views(student_id)  # the drawing thread, never the saves' executor
         answers, warnings = saved_answers(room.submissions, room.manifest, student_id)
         used = await loop.run_in_executor(None, room.log.attempts_used, student_id)
         html = page.render(
@@ -147,9 +147,13 @@ def make_app(room: ClassRoom) -> Starlette:
     @contextlib.asynccontextmanager
     async def lifespan(app):
         room.judging().start()  # already started by `lagrade serve`, before it listened
+        drawing = asyncio.create_task(room.draw_all())  # pages ready before they are asked
         try:
             yield
         finally:
+            drawing.cancel()
+            with contextlib.suppress(asyncio.CancelledError, RuntimeError):
+                await drawing
             room.close()
 
     routes = [

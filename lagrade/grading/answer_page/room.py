@@ -1,12 +1,20 @@
 """What the answer page's server knows (`ClassRoom`): the manifest, where sheets go, who each
 token is, the due date, the log of saves and the workers; and the views of each student's
-problems. The web application (`app`) and a save (`saving`) both work on it."""
+problems. The web application (`app`) and a save (`saving`) both work on it.
+
+Drawing a view (a figure by matplotlib, the derived solution by sympy) takes a fraction of a
+second per variant and must not run two at a time; it runs in a thread of its own (`drawer`),
+never in the event loop's default executor, which saves use for the log and the sheet: a class
+opening its pages together queues behind the drawing, a save does not. The server draws every
+student's views in that thread as soon as it starts (`draw_all`), one student at a time, so a
+page asked for meanwhile waits for at most one student's drawing before its own."""
 
 from __future__ import annotations
 
 import asyncio
 import threading
 from collections.abc import Mapping
+from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -43,6 +51,7 @@ class ClassRoom:
     _locks: dict[str, asyncio.Lock] = field(default_factory=dict)
     _views: dict[tuple, dict[str, Any]] = field(default_factory=dict)
     _drawing: threading.Lock = field(default_factory=threading.Lock)
+    _drawer: ThreadPoolExecutor | None = None
 
     def __post_init__(self) -> None:
         self.students = {s["id"]: s for s in self.manifest["students"]}
@@ -59,11 +68,30 @@ class ClassRoom:
         if self._judging is not None:
             self._judging.close()
             self._judging = None
+        if self._drawer is not None:
+            self._drawer.shutdown(wait=False, cancel_futures=True)
+            self._drawer = None
 
     def lock(self, student_id: str) -> asyncio.Lock:
         return self._locks.setdefault(student_id, asyncio.Lock())
 
     # --- one student's problems -----------------------------------------------------------
+    def drawer(self) -> ThreadPoolExecutor:
+        """The one thread that draws views (see the module docstring)."""
+        if self._drawer is None:
+            self._drawer = ThreadPoolExecutor(max_workers=1, thread_name_prefix="lagrade-draw")
+        return self._drawer
+
+    async def views(self, student_id: str) -> list[dict[str, Any]]:
+        """A student's problem views, drawn in the drawing thread when not drawn yet."""
+        loop = asyncio.get_running_loop()
+        return await loop.run_in_executor(self.drawer(), self.problems_of, student_id)
+
+    async def draw_all(self) -> None:
+        """Every student's views, one student at a time (the server starts this at once)."""
+        for student_id in self.students:
+            await self.views(student_id)
+
     def problems_of(self, student_id: str) -> list[dict[str, Any]]:
         """The views of a student's problems (statement, figure, parameters, parts). Built one
         at a time: the figures are drawn by matplotlib, which is not thread-safe; a view is
