@@ -12,13 +12,17 @@ from __future__ import annotations
 from importlib import import_module
 from typing import Any
 
+# `check` names both a module of this package and the function it defines: bound here, so that
+# importing the module (which sets the package's attribute to it) never shadows the function.
+# The module is light (the pool and the request reader; no sympy).
+from lagrade.judge.check import check
+
 #: Each exported name, by the module that defines it.
 _EXPORTS = {
     "PARTS": "lagrade.judge.parts",
     "Problem": "lagrade.judge.problem",
     "Verdict": "lagrade.judge.verdict",
     "build_problem": "lagrade.judge.problem",
-    "check": "lagrade.judge.check",
     "deriving": "lagrade.judge.deriving",
     "key_answer": "lagrade.judge.key",
     "run_checker": "lagrade.judge.parts",
