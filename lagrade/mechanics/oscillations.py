@@ -97,7 +97,7 @@ class SmallOscillations:
         if self.system.L.has(t):
             return "L depends explicitly on time, so nothing stays at rest"
         try:
-            self._phase.velocity_matrix
+            _ = self._phase.velocity_matrix  # raises NotQuadratic
         except NotQuadratic as error:
             return str(error)
         c = self._phase.momentum_offset
