@@ -149,16 +149,14 @@ def check_hamilton_equations(problem: Problem, answer: Any, given: Mapping | Non
     if not wrong and not lines.unreadable:
         feedback.append(
             f"Your equations are right but only {rank} of them are independent; "
-            f"{len(problem.jets)} coordinates need {n2} equations (q̇ and ṗ for each)."
+            f"{_coordinates(problem)} need {n2} equations (q̇ and ṗ for each)."
         )
         mistakes.append("too_few_equations")
         score = rank / n2
     else:
         score = len(right) / max(total, n2)
         if total < n2 and not wrong:
-            feedback.append(
-                f"{len(problem.jets)} coordinates need {n2} equations (q̇ and ṗ for each)."
-            )
+            feedback.append(f"{_coordinates(problem)} need {n2} equations (q̇ and ṗ for each).")
     return Verdict(
         PART,
         "incorrect",
@@ -169,6 +167,11 @@ def check_hamilton_equations(problem: Problem, answer: Any, given: Mapping | Non
         witness=witness,
         mistakes=tuple(mistakes),
     )
+
+
+def _coordinates(problem: Problem) -> str:
+    n = len(problem.jets)
+    return "1 coordinate" if n == 1 else f"{n} coordinates"
 
 
 def _linear(rows, k: int) -> bool:

@@ -59,7 +59,8 @@ def check_hamiltonian(problem: Problem, answer: Any, given: Mapping | None) -> V
             "incorrect",
             0.0,
             (
-                f"H is a function of the coordinates, the momenta and t; it holds no rate ({', '.join(rates)}).",
+                "H is a function of the coordinates, the momenta and t; it holds no rate "
+                f"({', '.join(rates)}).",
             ),
             got.echo,
             "structure",
@@ -138,7 +139,8 @@ def _with_velocities(problem: Problem, got: Read, names: list[str]) -> Verdict:
             same = False
         if same:
             feedback.append(
-                "As a function of the velocities it is the energy function h = Σ p q̇ − L, which is right."
+                "As a function of the velocities it is the energy function h = Σ p q̇ − L, "
+                "which is right."
             )
     return Verdict(
         PART, "incorrect", 0.0, tuple(feedback), got.echo, "structure", mistakes=("velocities",)
@@ -152,7 +154,7 @@ def _velocity_residual(answer: Compiled, reference: Compiled, points: Points, ba
     return a - b, sa + sb
 
 
-# --- the catalogue of named mistakes ---------------------------------------------------------------
+# --- the catalogue of named mistakes ----------------------------------------------------------
 
 
 def _diagnose(problem: Problem, answer: Compiled, points: Points) -> tuple[str, str]:
