@@ -5,7 +5,12 @@ its errors."""
 from lagrade.mechanics.domains import Domain
 from lagrade.mechanics.hamilton import HamiltonianSystem, NotQuadratic, momentum_jet, momentum_name
 from lagrade.mechanics.lagrange import Jet, LagrangianSystem, jet, total_derivative
-from lagrade.mechanics.oscillations import Equilibrium, SmallOscillations, frequencies_from
+from lagrade.mechanics.oscillations import (
+    Equilibrium,
+    SmallOscillations,
+    frequencies_from,
+    variant_oscillations,
+)
 from lagrade.mechanics.scene import PointMass, Quantity, RigidBody, Scene, SceneVariant
 
 __all__ = [
@@ -26,4 +31,5 @@ __all__ = [
     "momentum_jet",
     "momentum_name",
     "total_derivative",
+    "variant_oscillations",
 ]

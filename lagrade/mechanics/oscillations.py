@@ -49,6 +49,26 @@ class Equilibrium:
     stiffness: sp.Matrix
 
 
+def deciding_values(values: Mapping[sp.Symbol, float], domains: Mapping) -> dict[sp.Symbol, float]:
+    """The parameter values that single out the stable equilibrium: a variant's handout values,
+    the middle of its sample range for a parameter without one (the declared form, an ad-hoc
+    Lagrangian). One rule for the key and the judge, so they choose the same equilibrium."""
+    out = {s: float(v) for s, v in values.items()}
+    for s, domain in domains.items():
+        if s not in out:
+            lo, hi = domain.sample_range()
+            out[s] = (lo + hi) / 2
+    return out
+
+
+def variant_oscillations(variant) -> SmallOscillations:
+    """A scene variant's equilibria and normal modes, at its `deciding_values`."""
+    symbols = variant.parameter_symbols
+    values = {symbols[n]: v for n, v in variant.values.items()}
+    domains = {symbols[n]: d for n, d in variant.domains.items()}
+    return variant.system.small_oscillations(deciding_values(values, domains))
+
+
 def _number(expr: sp.Expr, values: Mapping) -> float | None:
     """A real finite value of expr at `values`, or None."""
     try:
@@ -123,7 +143,9 @@ class SmallOscillations:
             return (self._equilibrium({}),)
         gradient = [sp.diff(U, j.q) for j in moving]
         try:
-            found = sp.solve(gradient, [j.q for j in moving], dict=True)
+            found = sp.solve(
+                gradient, [j.q for j in moving], dict=True, check=False, simplify=False
+            )
         except (NotImplementedError, ValueError):
             return ()
         out = []

@@ -44,6 +44,7 @@ EXPORTS = {
         "momentum_jet",
         "momentum_name",
         "total_derivative",
+        "variant_oscillations",
     ],
     "lagrade.bank": ["get_scene", "scene_ids"],
     "lagrade.notation": [
