@@ -121,17 +121,31 @@ class HamiltonianSystem:
 
     @cached_property
     def hamilton_equations(self) -> tuple[sp.Equality, ...]:
-        """q̇_j = ∂H/∂p_j for every j, then ṗ_j = −∂H/∂q_j."""
+        """q̇_j = ∂H/∂p_j for every j, then ṗ_j = −∂H/∂q_j, each collected by the monomials in
+        the momenta with factored coefficients (as a textbook writes them)."""
         H = self.hamiltonian
         forward = [
-            sp.Eq(j.dot, sp.expand(sp.diff(H, p)))
+            sp.Eq(j.dot, self._neat(sp.diff(H, p)))
             for j, p in zip(self.jets, self.momenta, strict=True)
         ]
         back = [
-            sp.Eq(rate, sp.expand(-sp.diff(H, j.q)))
-            for j, rate in zip(self.jets, self.rates, strict=True)
+            sp.Eq(r, self._neat(-sp.diff(H, j.q)))
+            for j, r in zip(self.jets, self.rates, strict=True)
         ]
         return (*forward, *back)
+
+    def _neat(self, expr: sp.Expr) -> sp.Expr:
+        expr = sp.expand(expr)
+        try:
+            monomials = sp.Poly(expr, *self.momenta).monoms()
+        except sp.PolynomialError:
+            return expr
+        powers = [
+            sp.Mul(*[p**k for p, k in zip(self.momenta, m, strict=True)])
+            for m in sorted(set(monomials))
+            if sum(m) > 0
+        ]
+        return sp.collect(expr, powers, sp.factor)
 
     @cached_property
     def is_time_independent(self) -> bool:

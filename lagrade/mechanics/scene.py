@@ -27,7 +27,18 @@ from lagrade.mechanics.figure import FigureHint
 
 AXES = ("x", "y", "z")
 #: What a scene given by its Lagrangian alone can be asked (everything that follows from L).
-LAGRANGIAN_PARTS = ("lagrangian", "eom", "momenta", "cyclic", "conserved", "expression")
+LAGRANGIAN_PARTS = (
+    "lagrangian",
+    "eom",
+    "momenta",
+    "cyclic",
+    "conserved",
+    "hamiltonian",
+    "hamilton_equations",
+    "equilibrium",
+    "normal_modes",
+    "expression",
+)
 
 
 def as_expr(value: object) -> sp.Expr:
