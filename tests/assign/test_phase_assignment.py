@@ -126,3 +126,12 @@ def test_a_scene_without_a_stable_equilibrium_cannot_be_asked_for_one(tmp_path):
     (tmp_path / "r.csv").write_text(ROSTER)
     argv = ["generate", str(tmp_path / "a.toml"), "--roster", str(tmp_path / "r.csv")]
     assert main([*argv, "--seed", "1", "--out", str(tmp_path / "ps")]) != 0
+
+
+def test_a_long_line_without_spaces_after_its_first_cut_is_left_whole():
+    """The key's wrapped TOML (in the PDF key) looped for ever on a line whose rest had no
+    space but the continuation's indentation (a normal-mode frequency of a double pendulum)."""
+    from lagrade.assign.templating import _continued
+
+    pieces = _continued("a" * 50 + " " + "b" * 200, 88)
+    assert pieces == ["a" * 50 + " \\", "  " + "b" * 200]
