@@ -150,9 +150,11 @@ class SmallOscillations:
             return ()
         out = []
         for solution in found:
-            if any(e.has(*(j.q for j in self.jets)) for e in solution.values()):
-                continue  # a family whose members depend on one another: not taken apart here
-            if any(sp.simplify(g.xreplace(solution)) != 0 for g in gradient):
+            # a family (x_1 = x_3, x_2 = x_3: a molecule free to translate): its member with
+            # the coordinates left free at 0; those stay free (zero modes)
+            unsolved = {j.q: sp.S.Zero for j in self.jets if j.q not in solution}
+            solution = {q: sp.S(v).xreplace(unsolved) for q, v in solution.items()}
+            if any(sp.simplify(g.xreplace(solution | unsolved)) != 0 for g in gradient):
                 continue  # sympy's solver drops an equation it cannot meet (a constant slope)
             if all(_number(v, self.values) is not None for v in solution.values()):
                 out.append(self._equilibrium(solution))
