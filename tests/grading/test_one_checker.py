@@ -37,7 +37,10 @@ def _answers() -> list[tuple[str, object]]:
     for part in PARTS:
         if part == "expression":
             continue
-        right = key_answer(VARIANT, part)
+        try:
+            right = key_answer(VARIANT, part)
+        except KeyError:  # the wedge has no stable equilibrium: no equilibrium, no modes
+            continue
         cases.append((part, right))
     cases += [
         ("dof", "3"),
@@ -49,6 +52,8 @@ def _answers() -> list[tuple[str, object]]:
         ("momenta", ["p_x_M = M x_M_dot", "p_q = m q_dot"]),
         ("cyclic", "q"),
         ("conserved", ["x_M_dot"]),
+        ("hamiltonian", "p_q^2/(2 m) + p_x_M^2/(2 M)"),
+        ("hamilton_equations", ["q_dot = p_q/m", "x_M_dot = p_x_M/M"]),
         ("expression", f"{VALUE:.4g}"),
         ("expression", f"{VALUE:.4g} m/s^2"),
         ("expression", f"{1.05 * VALUE:.4g}"),
