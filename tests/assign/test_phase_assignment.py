@@ -135,3 +135,16 @@ def test_a_long_line_without_spaces_after_its_first_cut_is_left_whole():
 
     pieces = _continued("a" * 50 + " " + "b" * 200, 88)
     assert pieces == ["a" * 50 + " \\", "  " + "b" * 200]
+
+
+def test_bank_show_prints_h_the_equilibria_and_the_frequencies_or_why_not(capsys):
+    assert main(["bank", "show", "pendulum_on_cart", "--seed", "2"]) == 0
+    out = capsys.readouterr().out
+    assert "H = " in out and "Hamilton's equations:" in out
+    assert "stable" in out and "unstable" in out
+    assert "normal-mode angular frequencies: 0, " in out and "zero mode" in out
+    assert main(["bank", "show", "kepler", "--seed", "2"]) == 0
+    assert "normal modes: none (U has no stationary point" in capsys.readouterr().out
+    assert main(["bank", "show", "charged_particle", "--format", "json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert "velocity-dependent force" in data["phase_space"]["why_not"]
