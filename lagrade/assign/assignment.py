@@ -27,7 +27,7 @@ from pathlib import Path
 from typing import Any
 
 import lagrade.untrusted as untrusted
-from lagrade.assign.phase_solution import PHASE_PARTS, can_ask
+from lagrade.assign.phase_solution import PHASE_PARTS, can_ask_scene
 from lagrade.bank.registry import find_scene, get_scene, is_scene_path, scene_ids
 from lagrade.bank.scenefile import scene_from_text, scene_id_of, sha256
 from lagrade.errors import AssignmentError, LagradeError, UnreadableInput
@@ -386,7 +386,7 @@ def _scene_can_ask(at: str, name: str, scene: Scene, problems: list[str]) -> boo
         return False
     if name in PHASE_PARTS:
         try:
-            why = can_ask(scene.default, name)
+            why = can_ask_scene(scene, name)
         except Exception as exc:  # a scene's own derivation failing is worth naming here
             why = f"its derivation fails: {exc}"
         if why is not None:

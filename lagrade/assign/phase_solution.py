@@ -8,6 +8,7 @@ computed per variant, not per presentation."""
 
 from __future__ import annotations
 
+import itertools
 from functools import lru_cache
 from typing import Any
 
@@ -42,6 +43,20 @@ def can_ask(variant: SceneVariant, part: str) -> str | None:
         return str(error)
     if part in ("equilibrium", "normal_modes"):
         return variant_oscillations(variant).why_not
+    return None
+
+
+def can_ask_scene(scene: Scene, part: str) -> str | None:
+    """Why `part` cannot be asked of some presentation of `scene` (each combination of its
+    options: a particle in a trap has an equilibrium, the same particle under gravity none),
+    naming the options; None when every presentation can be asked it."""
+    names = sorted(scene.options)
+    for choice in itertools.product(*(scene.options[n] for n in names)):
+        options = dict(zip(names, choice, strict=True))
+        why = can_ask(SceneVariant(scene, options=options), part)
+        if why is not None:
+            shown = ", ".join(f"{k} = {v}" for k, v in options.items())
+            return why + (f" (with {shown})" if shown else "")
     return None
 
 
@@ -140,4 +155,12 @@ def phase_lines(variant: SceneVariant) -> list[str]:
     return lines
 
 
-__all__ = ["PHASE_PARTS", "PHASE_PROMPTS", "can_ask", "phase_data", "phase_lines", "phase_solution"]
+__all__ = [
+    "PHASE_PARTS",
+    "PHASE_PROMPTS",
+    "can_ask",
+    "can_ask_scene",
+    "phase_data",
+    "phase_lines",
+    "phase_solution",
+]

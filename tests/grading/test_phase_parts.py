@@ -196,3 +196,14 @@ def test_no_stable_equilibrium_is_a_request_error(part):
 def test_bad_text_is_invalid_with_a_message(part, answer):
     verdict = _verdict("simple_pendulum", part, answer)
     assert verdict.status in ("invalid", "incorrect") and verdict.feedback
+
+
+def test_the_answer_page_preview_reads_momenta_and_their_rates():
+    from lagrade.grading.answer_page.preview import preview
+
+    entry = {"scene": "simple_pendulum", "seed": 1}
+    part = {"part": "hamilton_equations", "key": "hamilton_equations", "points": 1}
+    got = preview(entry, part | {"quantity": None}, "phi_dot = p_phi/(m l^2)\np_phi_dot = 0")
+    assert got["status"] == "read" and len(got["lines"]) == 2
+    assert all(line["mathml"] for line in got["lines"])  # typeset, with ṗ_φ dotted
+    assert "&#729;" in got["lines"][1]["mathml"] or "\u02d9" in got["lines"][1]["mathml"]

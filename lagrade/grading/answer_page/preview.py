@@ -16,6 +16,7 @@ from lagrade.grading.manifest import entry_spec
 from lagrade.grading.rubric import Rubric
 from lagrade.grading.student import grade_part, question
 from lagrade.judge.parts.reading import heard_notes
+from lagrade.notation import Vocabulary
 from lagrade.notation.parse import parse_answer
 
 #: Seconds one preview may take (a preview is asked at every pause in typing).
@@ -75,6 +76,13 @@ def _mathml(entry: Mapping[str, Any], part: Mapping[str, Any], line: str) -> str
         labels = [f"p_{c}" for c in problem.coordinates] + (
             [part["quantity"]] if part.get("quantity") else []
         )
+        if part["part"] in ("hamiltonian", "hamilton_equations"):  # on phase space: p_q, ṗ_q
+            momenta = tuple(f"p_{c}" for c in problem.coordinates)
+            vocabulary = Vocabulary(
+                problem.coordinates, dict(problem.parameters), ["H"], momenta=True
+            )
+            parsed = parse_answer(line, vocabulary)
+            return str(parsed.mathml((*problem.coordinates, *momenta)))
         parsed = parse_answer(line, problem.vocabulary(labels))
         return str(parsed.mathml(problem.coordinates))
     except (ParseError, LagradeError, ValueError, TypeError):
