@@ -26,6 +26,8 @@ from typing import Any
 import lagrade.untrusted as untrusted
 from lagrade.errors import LagradeError, ReferenceUndefined, RequestError, UnreadableInput
 from lagrade.judge.parts import PARTS, run_checker
+from lagrade.judge.parts.oscillation import prepare_oscillations
+from lagrade.judge.parts.phase import POINTS, phase_points
 from lagrade.judge.problem import Problem, build_problem, problem_key
 from lagrade.judge.verdict import Verdict
 from lagrade.judge.worker import (
@@ -99,6 +101,10 @@ def prepare(problem: Problem, part: str, diagnosis: bool = False) -> None:
                 problem.points(part)
             if part == "conserved":
                 _ = problem.system.conserved_quantities
+            if part in ("hamiltonian", "hamilton_equations"):  # the points on phase space
+                phase_points(problem, problem.points(POINTS))
+            if part in ("equilibrium", "normal_modes"):
+                prepare_oscillations(problem)
         _prepared.add(key)
     if diagnosis:
         if part == "expression":

@@ -207,3 +207,15 @@ def test_the_answer_page_preview_reads_momenta_and_their_rates():
     assert got["status"] == "read" and len(got["lines"]) == 2
     assert all(line["mathml"] for line in got["lines"])  # typeset, with ṗ_φ dotted
     assert "&#729;" in got["lines"][1]["mathml"] or "\u02d9" in got["lines"][1]["mathml"]
+
+
+def test_the_equilibria_are_derived_before_the_students_clock_starts():
+    """sympy's solver takes a second or more for a turning hoop: that is the question's
+    preparation (its own budget), never a student's time limit."""
+    from lagrade.judge.check import check, forget_problems
+
+    forget_problems()
+    spec = {"scene": "hoop", "seed": 4}
+    verdict = check(spec, "equilibrium", "theta = acos(g/(omega^2 R))", time_limit=0.5)
+    assert verdict.status == "correct", verdict
+    assert verdict.prepare_ms > verdict.ms

@@ -131,6 +131,14 @@ def reference_frequencies(problem: Problem, points: Points) -> np.ndarray:
     return problem.cached("frequencies", points, make)
 
 
+def prepare_oscillations(problem: Problem) -> None:
+    """Derive before the student's clock starts what both parts need: the equilibria (sympy's
+    solver: up to a few seconds for a turning hoop), the draws, the reference frequencies.
+    Nothing when the scene has no stable equilibrium (the checker then says why)."""
+    if oscillations(problem).why_not is None:
+        reference_frequencies(problem, oscillation_points(problem))
+
+
 def _parameters_only(problem: Problem, got: Read, what: str) -> None:
     motion = {s for j in problem.jets for s in (j.q, j.dot, j.ddot)}
     if got.symbols & motion:
@@ -366,4 +374,4 @@ def _slip(value: np.ndarray, ref: np.ndarray, modes: list[int]) -> str:
     return ""
 
 
-__all__ = ["check_equilibrium", "check_normal_modes", "oscillations"]
+__all__ = ["check_equilibrium", "check_normal_modes", "oscillations", "prepare_oscillations"]
