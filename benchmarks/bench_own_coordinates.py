@@ -52,7 +52,7 @@ MAPS = {
 
 CHILD = r"""
 import json, sys, time
-from lagrade.judge.check import cached_problem, prepare
+from lagrade.judge.driver import cached_problem, prepare
 from lagrade.judge.key import key_answer
 from lagrade.judge.parts import run_checker
 from lagrade.judge.parts.own_coordinates import chosen_coordinates

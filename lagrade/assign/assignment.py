@@ -28,6 +28,7 @@ from pathlib import Path
 from typing import Any
 
 import lagrade.untrusted as untrusted
+from lagrade.assign.phase_solution import PHASE_PARTS, can_ask_scene
 from lagrade.assign.solution import solution_data
 from lagrade.bank.registry import find_scene, get_scene, is_scene_path, scene_ids
 from lagrade.bank.scenefile import scene_from_text, scene_id_of, sha256
@@ -46,6 +47,7 @@ PARTS: tuple[str, ...] = (
     "momenta",
     "cyclic",
     "conserved",
+    *PHASE_PARTS,
 )
 #: The numeric follow-up part; it names one of the scene's declared `Quantity`s.
 EXPRESSION = "expression"
@@ -417,6 +419,14 @@ def _scene_can_ask(at: str, name: str, scene: Scene, problems: list[str]) -> boo
             f"{name!r} cannot be asked; ask {', '.join(LAGRANGIAN_PARTS[:-1])} or a quantity"
         )
         return False
+    if name in PHASE_PARTS:
+        try:
+            why = can_ask_scene(scene, name)
+        except Exception as exc:  # a scene's own derivation failing is worth naming here
+            why = f"its derivation fails: {exc}"
+        if why is not None:
+            problems.append(f"{at}: scene {scene.id!r} cannot be asked {name!r}: {why}")
+            return False
     if name == "conserved":
         try:
             scene.default.conserved_quantities  # noqa: B018 (derived here to name a failure)

@@ -9,6 +9,7 @@ from typing import Any
 
 import sympy as sp
 
+from lagrade.assign.phase_solution import phase_data, phase_lines
 from lagrade.mechanics.scene import SceneVariant
 from lagrade.notation.printer import symbol_names
 
@@ -89,6 +90,7 @@ def solution_data(variant: SceneVariant) -> dict[str, Any]:
         "cyclic": list(system.cyclic_coordinates),
         "conserved": {k: text(v) for k, v in system.conserved_quantities.items()},
         "quantities": {k: text(v) for k, v in variant.quantities.items()},
+        "phase_space": phase_data(variant),
     }
 
 
@@ -140,6 +142,7 @@ def solution_text(variant: SceneVariant) -> str:
     if d["quantities"]:
         lines.append("quantities:")
         lines += [f"  {k} = {v}" for k, v in d["quantities"].items()]
+    lines += ["", *phase_lines(variant)]  # the next lecture: H, Hamilton, small oscillations
     return "\n".join(lines)
 
 

@@ -9,6 +9,7 @@ from __future__ import annotations
 from typing import Any
 
 from lagrade.mechanics import lagrange as mech
+from lagrade.mechanics.hamilton import momentum_name
 from lagrade.mechanics.scene import SceneVariant
 
 #: Parts whose answers are formulas in the coordinates: which time derivatives they may contain.
@@ -41,6 +42,15 @@ def part_symbols(variant: SceneVariant, part: str) -> list[dict[str, Any]]:
         return []
     if part == "expression":
         return [{"what": "may use", "names": parameters}]
+    if part in ("hamiltonian", "hamilton_equations"):
+        return _phase_symbols(variant, part, coordinates, parameters)
+    if part == "equilibrium":
+        return [
+            {"what": "left-hand sides", "names": coordinates},
+            {"what": "may use", "names": parameters},
+        ]
+    if part == "normal_modes":
+        return [{"what": "may use", "names": parameters}]
     groups = []
     if part == "transformation":
         groups.append({"what": "left-hand sides", "names": list(variant.transformation)})
@@ -54,6 +64,23 @@ def part_symbols(variant: SceneVariant, part: str) -> list[dict[str, Any]]:
         names += [c + mech.DDOT for c in coordinates]
     names += parameters
     if _time_dependent(variant):
+        names.append("t")
+    groups.append({"what": "may use", "names": names})
+    return groups
+
+
+def _phase_symbols(
+    variant: SceneVariant, part: str, coordinates: list[str], parameters: list[str]
+) -> list[dict[str, Any]]:
+    """H and Hamilton's equations are written in the coordinates and the momenta p_q; the
+    equations' left-hand sides are the rates q_dot and p_q_dot."""
+    momenta = [momentum_name(c) for c in coordinates]
+    groups = []
+    if part == "hamilton_equations":
+        rates = [c + mech.DOT for c in coordinates] + [p + mech.DOT for p in momenta]
+        groups.append({"what": "left-hand sides", "names": rates})
+    names = coordinates + momenta + parameters
+    if variant.lagrangian.has(mech.t):
         names.append("t")
     groups.append({"what": "may use", "names": names})
     return groups

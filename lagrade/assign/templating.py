@@ -110,7 +110,7 @@ def _continued(line: str, width: int) -> list[str]:
     pieces: list[str] = []
     while len(line) > width:
         cut = _cut(line, width - 1)  # the space stays before the backslash
-        if cut <= 0:
+        if cut <= (1 if pieces else 0):  # no space but the indentation's: cutting there loops
             break
         pieces.append(line[: cut + 1] + "\\")
         line = "  " + line[cut + 1 :]

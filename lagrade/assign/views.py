@@ -15,6 +15,7 @@ from markupsafe import Markup
 
 from lagrade.assign.assignment import EXPRESSION, Problem
 from lagrade.assign.figures import draw
+from lagrade.assign.phase_solution import PHASE_PARTS, PHASE_PROMPTS, phase_solution
 from lagrade.assign.prose import Prose, render_prose
 from lagrade.assign.solution import energy_function_name
 from lagrade.assign.symbols import part_symbols
@@ -48,6 +49,7 @@ PROMPTS: dict[str, str] = {
     "cyclic": "Which coordinates are cyclic? (Write none if there are none.)",
     "conserved": "Give the conserved quantities as functions of the coordinates and velocities. "
     "(Write none if there are none.)",
+    **PHASE_PROMPTS,
 }
 #: The prompt of a `conserved` part that asks for any one conserved quantity (`all = false`).
 ONE_CONSERVED_PROMPT = (
@@ -56,7 +58,7 @@ ONE_CONSERVED_PROMPT = (
 #: Parts with a key answer of their own (an expression part's key is its quantity's name).
 KEYED_PARTS = tuple(PROMPTS)
 #: Parts whose answer sheet field holds several lines (one equation or item per line).
-MULTILINE = frozenset({"transformation", "eom", "momenta", "conserved"})
+MULTILINE = frozenset({"transformation", "eom", "momenta", "conserved", "hamilton_equations"})
 
 
 def _statement(variant: SceneVariant) -> dict[str, Any]:
@@ -150,7 +152,9 @@ def symbolic_solution(scene: Scene, names: tuple, options: tuple) -> dict[str, A
         }
         for label, f in ([] if given_l else v.constraints)
     ]
-    keyed = [p for p in KEYED_PARTS if not given_l or p in LAGRANGIAN_PARTS]
+    keyed = [
+        p for p in KEYED_PARTS if p not in PHASE_PARTS and (not given_l or p in LAGRANGIAN_PARTS)
+    ]
     return {
         "statement": _statement(v),
         "coordinates": [math(sp.Symbol(c)) for c in coords],
@@ -207,6 +211,7 @@ def problem_view(problem: Problem, choice: VariantChoice, name: str) -> dict[str
     parameters = _parameters(choice, variant)
     quantities = _quantities(problem, choice, variant)
     parts = _parts(problem, symbolic["variant"])
+    phase = _phase(problem, choice)
     return {
         "index": problem.index,
         "title": problem.title,
@@ -233,10 +238,26 @@ def problem_view(problem: Problem, choice: VariantChoice, name: str) -> dict[str
                 for k, v in symbolic.items()
                 if k not in ("figure", "statement", "variant", "key_answers")
             },
+            **{k: v for k, v in phase.items() if k != "key_answers"},
             "quantities": quantities,
-            "sheet": _sheet(problem, symbolic["key_answers"]),
+            "sheet": _sheet(problem, symbolic["key_answers"] | phase.get("key_answers", {})),
         },
     }
+
+
+def _phase(problem: Problem, choice: VariantChoice) -> dict[str, Any]:
+    """The solution of the parts on phase space and small oscillations, when one is asked."""
+    if not any(part.part in PHASE_PARTS for part in problem.parts):
+        return {}
+    values = tuple(sorted(choice.values.items()))
+    return phase_solution(problem.scene, *presentation(choice), values)
+
+
+def key_answers(problem: Problem, choice: VariantChoice) -> dict[str, Any]:
+    """Every answer of the key as a student types it, by part (by quantity for an expression
+    part): the text the grader checks before it accepts a variant."""
+    symbolic = symbolic_solution(problem.scene, *presentation(choice))
+    return symbolic["key_answers"] | _phase(problem, choice).get("key_answers", {})
 
 
 def _parameters(choice: VariantChoice, variant: SceneVariant) -> list[dict[str, Any]]:

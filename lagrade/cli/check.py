@@ -35,6 +35,10 @@ PART_NAMES = (
     "cyclic",
     "conserved",
     "expression",
+    "hamiltonian",
+    "hamilton_equations",
+    "equilibrium",
+    "normal_modes",
 )
 #: `lagrade.judge.check.DEFAULT_TIME_LIMIT` (pinned equal by the same test).
 DEFAULT_TIME_LIMIT = 2.0

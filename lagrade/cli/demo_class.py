@@ -54,8 +54,8 @@ variants = 8
 
 [[problems]]
 scene = "kepler"
-parts = ["lagrangian", "eom", "momenta", "cyclic", "conserved"]
-points = { lagrangian = 2, eom = 3, conserved = 2 }
+parts = ["lagrangian", "eom", "momenta", "cyclic", "conserved", "hamiltonian"]
+points = { lagrangian = 2, eom = 3, conserved = 2, hamiltonian = 2 }
 variants = 8
 
 [rubric]
@@ -241,6 +241,12 @@ def _answers(
                 cyclic = list(variant.coordinates)
                 planted.append(f"{key}: every coordinate")
             answers[key] = ", ".join(cyclic) or "none"
+        elif name == "hamiltonian":
+            H = system.phase_space.hamiltonian
+            if mistake:  # H in the velocities: the energy function h, not yet in the momenta
+                H = system.energy_function
+                planted.append(f"{key}: H in the velocities")
+            answers[key] = notation(variant, H)
         elif name == "expression":
             value = entry["quantities"][part["quantity"]]["value"]
             answers[key] = value if not mistake else str(-float(value))

@@ -15,7 +15,7 @@ import lagrade.grading.resume as resume
 from lagrade.assign.assignment import EXPRESSION, Problem, parse_assignment, scene_resolver
 from lagrade.assign.templating import environment
 from lagrade.assign.variants import VariantChoice
-from lagrade.assign.views import presentation, problem_view, symbolic_solution
+from lagrade.assign.views import key_answers, problem_view
 from lagrade.bank.registry import scene_reference
 from lagrade.grading.prompts import prompt_html
 from lagrade.grading.rubric import Rubric, rubric_from_table
@@ -39,7 +39,7 @@ def render_variant(
         "statement_html": template.render(p=view),
         "prompts": {part["key"]: prompt_html(part) for part in view["parts"]},
     }
-    answers = symbolic_solution(problem.scene, *presentation(choice))["key_answers"]
+    answers = key_answers(problem, choice)
     correct = {}
     for part in problem.parts:
         key = answers[part.quantity if part.part == EXPRESSION else part.part]

@@ -12,10 +12,11 @@ from __future__ import annotations
 from importlib import import_module
 from typing import Any
 
-# `check` names both a module of this package and the function it defines: bound here, so that
-# importing the module (which sets the package's attribute to it) never shadows the function.
-# The module is light (the pool and the request reader; no sympy).
+# `check` and `deriving` name both a module of this package and the function it defines: bound
+# here, so that importing the module (which sets the package's attribute to it) never shadows
+# the function. Both modules are light (no sympy).
 from lagrade.judge.check import check
+from lagrade.judge.deriving import deriving
 
 #: Each exported name, by the module that defines it.
 _EXPORTS = {
@@ -23,7 +24,6 @@ _EXPORTS = {
     "Problem": "lagrade.judge.problem",
     "Verdict": "lagrade.judge.verdict",
     "build_problem": "lagrade.judge.problem",
-    "deriving": "lagrade.judge.deriving",
     "key_answer": "lagrade.judge.key",
     "run_checker": "lagrade.judge.parts",
     "verify_variant": "lagrade.judge.verify",

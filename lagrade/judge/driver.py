@@ -37,6 +37,8 @@ from lagrade.judge.clocks import (
 )
 from lagrade.judge.deriving import derivation_limits, deriving
 from lagrade.judge.parts import PARTS, run_checker
+from lagrade.judge.parts.oscillation import prepare_oscillations
+from lagrade.judge.parts.phase import POINTS, phase_points
 from lagrade.judge.problem import Problem, build_problem, problem_key
 from lagrade.judge.verdict import Verdict, timeout_verdict
 from lagrade.judge.worker import Limits
@@ -98,6 +100,10 @@ def prepare(problem: Problem, part: str, diagnosis: bool = False) -> None:
                 problem.points(part)
             if part == "conserved":
                 _ = problem.system.conserved_quantities
+            if part in ("hamiltonian", "hamilton_equations"):  # the points on phase space
+                phase_points(problem, problem.points(POINTS))
+            if part in ("equilibrium", "normal_modes"):
+                prepare_oscillations(problem)
         _prepared.add(key)
     if diagnosis:
         if part == "expression":

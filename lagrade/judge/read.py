@@ -29,7 +29,10 @@ from lagrade.judge.parts.dof import read_dof
 from lagrade.judge.parts.energy import read_kinetic, read_lagrangian, read_potential
 from lagrade.judge.parts.eom import read_eom
 from lagrade.judge.parts.expression import read_expression
+from lagrade.judge.parts.hamilton_equations import read_hamilton_equations
+from lagrade.judge.parts.hamiltonian import read_hamiltonian
 from lagrade.judge.parts.momenta import read_momenta
+from lagrade.judge.parts.oscillation import read_equilibrium, read_normal_modes
 from lagrade.judge.parts.reading import Lines, Read, Unreadable, reading_notes
 from lagrade.judge.parts.transformation import read_transformation
 from lagrade.judge.problem import Problem
@@ -48,7 +51,14 @@ READERS: dict[str, Callable[[Problem, Any], Any]] = {
     "cyclic": read_cyclic,
     "conserved": read_conserved,
     "expression": read_expression,
+    "hamiltonian": read_hamiltonian,
+    "hamilton_equations": read_hamilton_equations,
+    "equilibrium": read_equilibrium,
+    "normal_modes": read_normal_modes,
 }
+#: Parts written on phase space: their formulas are typeset with the momenta as variables
+#: (ṗ_θ for p_theta_dot).
+ON_PHASE_SPACE = ("hamiltonian", "hamilton_equations")
 
 
 @dataclass(frozen=True)
@@ -117,9 +127,9 @@ def _lines(problem: Problem, part: str, got: Any):
             if isinstance(entry, Unreadable):
                 yield ReadLine("", error=unreadable_line(k + 1, entry.error))
             else:
-                yield _formula(problem, entry)
+                yield _formula(problem, entry, part)
     elif isinstance(got, Read):
-        yield _formula(problem, got)
+        yield _formula(problem, got, part)
     elif isinstance(got, str):  # a number of degrees of freedom
         yield ReadLine(got)
     elif part == "coordinates":
@@ -130,12 +140,17 @@ def _lines(problem: Problem, part: str, got: Any):
         yield ReadLine(" = ".join(str(r.echo) for r in got), _joined_mathml(problem, got))
 
 
-def _formula(problem: Problem, got: Read) -> ReadLine:
-    return ReadLine(str(got.echo), _mathml(problem, got))
+def _formula(problem: Problem, got: Read, part: str = "") -> ReadLine:
+    return ReadLine(str(got.echo), _mathml(problem, got, part))
 
 
-def _mathml(problem: Problem, got: Read) -> str:
-    return str(got.parsed.mathml(problem.coordinates)) if got.parsed is not None else ""
+def _mathml(problem: Problem, got: Read, part: str = "") -> str:
+    if got.parsed is None:
+        return ""
+    variables = problem.coordinates
+    if part in ON_PHASE_SPACE:
+        variables = (*variables, *(f"p_{c}" for c in problem.coordinates))
+    return str(got.parsed.mathml(variables))
 
 
 def _joined_mathml(problem: Problem, reads: list[Read]) -> str:

@@ -53,7 +53,18 @@ RELATION_DRAWS = 64
 
 
 #: What a scene given by its Lagrangian alone can be asked (everything that follows from L).
-LAGRANGIAN_PARTS = ("lagrangian", "eom", "momenta", "cyclic", "conserved", "expression")
+LAGRANGIAN_PARTS = (
+    "lagrangian",
+    "eom",
+    "momenta",
+    "cyclic",
+    "conserved",
+    "hamiltonian",
+    "hamilton_equations",
+    "equilibrium",
+    "normal_modes",
+    "expression",
+)
 
 
 @dataclass(frozen=True)

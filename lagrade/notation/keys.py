@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import sympy as sp
 
+from lagrade.mechanics.oscillations import variant_oscillations
 from lagrade.mechanics.scene import SceneVariant
 from lagrade.notation.printer import plain
 
@@ -37,8 +38,32 @@ def key_answer(variant: SceneVariant, part: str, quantity: str | None = None) ->
         return ", ".join(system.cyclic_coordinates) or "none"
     if part == "conserved":
         return [plain(q) for q in system.conserved_quantities.values()] or ["none"]
+    if part == "hamiltonian":
+        return plain(system.phase_space.hamiltonian)
+    if part == "hamilton_equations":
+        return [plain(e) for e in system.phase_space.hamilton_equations]
+    if part in ("equilibrium", "normal_modes"):
+        return _oscillation_key(variant, part)
     if part == "expression":
         if quantity is None or quantity not in variant.quantities:
             raise KeyError(f"scene {variant.scene.id!r} has no quantity {quantity!r}")
         return plain(variant.quantities[quantity])
     raise KeyError(f"no key for part {part!r}")
+
+
+def _oscillation_key(variant: SceneVariant, part: str) -> str:
+    """The stable equilibrium (its fixed coordinates) or the nonzero normal-mode frequencies:
+    closed forms where sympy gives them, else the numbers at the handout's values."""
+    osc = variant_oscillations(variant)
+    if osc.why_not is not None:
+        raise KeyError(f"no key for part {part!r}: {osc.why_not}")
+    if part == "equilibrium":
+        return ", ".join(f"{q.name} = {plain(v)}" for q, v in osc.stable.at.items())
+    closed = osc.frequencies
+    if closed is not None:
+        shown = [plain(w) for w in closed if w != 0]
+    else:
+        numbers = osc.numeric_frequencies()
+        top = max(float(numbers.max()), 1e-300)
+        shown = [f"{w:.12g}" for w in numbers if w > 1e-9 * top]
+    return ", ".join(shown) or "none"  # only zero modes: nothing oscillates

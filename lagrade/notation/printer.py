@@ -104,9 +104,8 @@ class _JetMathMLPrinter(MathMLPresentationPrinter):
             return mover
         msub = self.dom.createElement("msub")
         msub.appendChild(mover)
-        mi = self.dom.createElement("mi")
-        mi.appendChild(self.dom.createTextNode(sub))
-        msub.appendChild(mi)
+        # the subscript as a symbol: a momentum's rate ṗ_θ has θ there, not the word theta
+        msub.appendChild(super()._print_Symbol(sp.Symbol(sub), style))
         return msub
 
 

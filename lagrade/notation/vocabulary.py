@@ -14,6 +14,7 @@ import sympy as sp
 from lagrade.errors import RequestError
 from lagrade.mechanics import lagrange as mechanics
 from lagrade.mechanics.domains import Domain
+from lagrade.mechanics.hamilton import momentum_jet
 from lagrade.notation.build import FUNCTIONS
 
 _NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*\Z")
@@ -54,13 +55,17 @@ class Vocabulary:
     acceleration), its parameters as the very sympy symbols of the reference, extra labels
     (p_theta, L, h, …), whether primes mean time derivatives, and how the imaginary unit is
     spelled when the question is about complex numbers (None: `I`, `i`, `j` are ordinary
-    names, unknown unless declared, so that a real question never meets a complex number)."""
+    names, unknown unless declared, so that a real question never meets a complex number).
+    `momenta`: the momentum p_<q> of every coordinate is a variable with its rate (p_theta,
+    p_theta_dot, \\dot{p}_\\theta), for the parts on phase space (H, Hamilton's equations);
+    elsewhere p_theta is at most a label."""
 
     coordinates: tuple[str, ...]
     parameters: Mapping[str, sp.Symbol]
     labels: tuple[str, ...] = ()
     allow_primes: bool = False
     imaginary_unit: str | None = None
+    momenta: bool = False
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "coordinates", tuple(self.coordinates))
@@ -76,7 +81,9 @@ class Vocabulary:
         for name, symbol in self.parameters.items():
             if not isinstance(symbol, sp.Symbol):
                 problems.append(f"parameter {name!r} must map to a sympy Symbol, not {symbol!r}")
-        jet_names = [f"{c}{suffix}" for c in self.coordinates for suffix in ("", "_dot", "_ddot")]
+        named = list(self.coordinates)
+        named += [momentum_jet(c).name for c in self.coordinates] if self.momenta else []
+        jet_names = [f"{c}{suffix}" for c in named for suffix in ("", "_dot", "_ddot")]
         seen: set[str] = set()
         unit = [self.imaginary_unit] if self.imaginary_unit is not None else []
         for name in jet_names + list(self.parameters) + list(self.labels) + unit:
@@ -94,6 +101,7 @@ class Vocabulary:
                 self.labels,
                 self.allow_primes,
                 self.imaginary_unit,
+                self.momenta,
             )
         )
 
@@ -138,6 +146,8 @@ class Lexicon:
         self.allow_primes = vocabulary.allow_primes
         self.jets = [mechanics.jet(c) for c in vocabulary.coordinates]
         self.coordinates = vocabulary.coordinates
+        if vocabulary.momenta:  # p_q and its rate read like a coordinate and its velocity
+            self.jets += [momentum_jet(c) for c in vocabulary.coordinates]
         exact: dict[str, Entry] = {}
         for j in self.jets:
             exact[j.name] = Entry("sym", j.q, j, 0)
@@ -162,7 +172,9 @@ class Lexicon:
             for v in _digit_variants(name):
                 table.setdefault(v, exact[name])
         for spelling, entry in list(table.items()):  # ϑ and θ: one letter, unless both declared
-            other = _variant_spelling(spelling)
+            momentum = spelling.startswith("p_") and entry.jet is not None and vocabulary.momenta
+            other = _variant_spelling(spelling[2:] if momentum else spelling)
+            other = "p_" + other if momentum and other is not None else other
             if other is not None:
                 table.setdefault(other, entry)
         table.setdefault("t", Entry("sym", mechanics.t, None, 0))
@@ -171,7 +183,7 @@ class Lexicon:
         self.longest = max(len(k) for k in table)
         allowed = list(vocabulary.parameters)
         for j in self.jets:
-            allowed += [j.name, j.dot.name, j.ddot.name]
+            allowed += [j.name, j.dot.name] + ([j.ddot.name] if j.name in self.coordinates else [])
         allowed += list(vocabulary.labels) + ["t"]
         if self.imaginary_unit is not None:
             allowed.append(self.imaginary_unit)

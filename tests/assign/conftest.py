@@ -7,6 +7,7 @@ from pathlib import Path
 import pytest
 
 from lagrade.assign.assignment import PARTS
+from lagrade.assign.phase_solution import PHASE_PARTS, can_ask_scene
 from lagrade.bank import get_scene, scene_ids
 
 
@@ -14,6 +15,7 @@ def all_parts(scene_id: str) -> list:
     """Every part the scene can ask, with every quantity it declares."""
     scene = get_scene(scene_id)
     parts: list = [p for p in PARTS if p != "conserved" or scene.default.conserved_quantities]
+    parts = [p for p in parts if p not in PHASE_PARTS or can_ask_scene(scene, p) is None]
     parts += [{"part": "expression", "quantity": q.name, "points": 2} for q in scene.quantities]
     return parts
 

@@ -16,6 +16,10 @@ or request holds — and the checker splits and reads it (`items`, `reading`): t
     cyclic          the set of coordinates absent from L
     conserved       each Q non-constant with D_t Q = 0 on the reference motion
     expression      a number at the handout's values, or equal to the reference expression
+    hamiltonian     H(q, p, t) = Σ p q̇ − L in the momenta, by its values on phase space
+    hamilton_equations  q̇ = ∂H/∂p, ṗ = −∂H/∂q as a system in the rates (like eom)
+    equilibrium     coordinate values where ∂U/∂q = 0 and K is positive on M (any stable one)
+    normal_modes    the angular frequencies √λ of K a = λ M a there, in any order
 
 `given` carries what the student brings besides the answer: their own L for follow-through on
 later parts ("lagrangian"), their transformation equations ("transformation": when valid and
@@ -39,7 +43,10 @@ from lagrade.judge.parts.dof import check_dof
 from lagrade.judge.parts.energy import check_kinetic, check_lagrangian, check_potential
 from lagrade.judge.parts.eom import check_eom
 from lagrade.judge.parts.expression import check_expression
+from lagrade.judge.parts.hamilton_equations import check_hamilton_equations
+from lagrade.judge.parts.hamiltonian import check_hamiltonian
 from lagrade.judge.parts.momenta import check_momenta
+from lagrade.judge.parts.oscillation import check_equilibrium, check_normal_modes
 from lagrade.judge.parts.own_coordinates import (
     FOLLOWING,
     judged_in_chosen_coordinates,
@@ -64,6 +71,10 @@ PARTS: dict[str, Checker] = {
     "cyclic": check_cyclic,
     "conserved": check_conserved,
     "expression": check_expression,
+    "hamiltonian": check_hamiltonian,
+    "hamilton_equations": check_hamilton_equations,
+    "equilibrium": check_equilibrium,
+    "normal_modes": check_normal_modes,
 }
 
 #: Parts that need a Lagrangian (a bank scene or an ad-hoc L), not only an expression.
