@@ -103,4 +103,6 @@ def test_no_export_is_shadowed_by_a_module_of_the_same_name():
         modules = getattr(package, "_MODULES", set())
         for name in package.__all__:
             value = getattr(package, name)
-            assert (type(value).__name__ == "module") == (name in modules), f"lagrade.{layer}.{name}"
+            assert (type(value).__name__ == "module") == (name in modules), (
+                f"lagrade.{layer}.{name}"
+            )
