@@ -16,7 +16,7 @@ from __future__ import annotations
 from collections.abc import Callable, Iterator, Sequence
 from dataclasses import dataclass
 from functools import cached_property
-from itertools import chain
+from itertools import chain, islice
 from typing import Any, Protocol, TypeVar, Union
 
 import numpy as np
@@ -25,6 +25,7 @@ import sympy as sp
 import lagrade.judge.keepers as keepers
 from lagrade.judge.compiled import Combination, Compiled, weighted
 from lagrade.judge.derivatives import euler_lagrange_values
+from lagrade.judge.fingerprints import LagrangianFingerprints
 from lagrade.judge.lazylist import LazyList
 from lagrade.judge.matching import (
     SKIPPED,
@@ -168,6 +169,28 @@ class Catalogue:
         return out
 
     def _lagrangian_late(self) -> Iterator[Mutant]:
+        """The later Lagrangian mutants, each built once for every reader (the lazy list and
+        the fingerprints' sentence of a match read the same objects)."""
+        built = self.__dict__.setdefault("_late_built", [])
+        k = 0
+        while True:
+            if k == len(built):
+                source = self.__dict__.get("_late_source")
+                if source is None:  # fresh, or interrupted mid-item: start past what is built
+                    source = islice(self._late_items(), len(built), None)
+                    self.__dict__["_late_source"] = source
+                try:
+                    item = next(source, None)
+                except BaseException:
+                    self.__dict__["_late_source"] = None
+                    raise
+                if item is None:
+                    return
+                built.append(item)
+            yield built[k]
+            k += 1
+
+    def _late_items(self) -> Iterator[Mutant]:
         T, V = self.split.T, self.split.V
         yield Mutant("sin_cos_swapped", "sin and cos are swapped in your L", swap_sin_cos(T - V))
         yield from iter_term_mutants(T - V, "your L", self.parameters)
@@ -306,6 +329,37 @@ class Catalogue:
         (`lagrangian_fix_is_right`); of several, the one that changes the fewest terms (float64
         only: a diagnosis names a mistake, the verdict is decided elsewhere). `answer_el`:
         E(answer) and its size at the points, when the verdict has computed them already."""
+        if answer_el is None:
+            answer_el = euler_lagrange_values(answer, self.problem.jets, points.env)
+        reference_el = self.el_values(self.problem.L, points)
+        L, moving = self._split_lagrangian
+        counted = self.__dict__.setdefault("_changes", {})  # a mutant's count, once
+
+        def changes(m: Mutant) -> int:
+            key = ("el-stack", id(m))
+            if key not in counted:
+                counted[key] = terms_changed(m, L, lambda term: bool(term.free_symbols & moving))
+            return counted[key]
+
+        with set_aside(self.problem.budget):
+            table = self.lagrangian_fingerprints
+            table.values(points)
+            _ = table.kept
+        return table.match(answer_el, reference_el, points, changes)
+
+    @cached_property
+    def lagrangian_fingerprints(self) -> LagrangianFingerprints:
+        """The Lagrangian mistakes as arrays (`fingerprints`): what `match_lagrangian` reads."""
+        return LagrangianFingerprints(self)
+
+    def match_lagrangian_symbolic(
+        self,
+        answer: Compiled,
+        points: Points,
+        answer_el: tuple[np.ndarray, np.ndarray] | None = None,
+    ) -> Mutant | None:
+        """`match_lagrangian` by the symbolic catalogue, mutant by mutant (`lagrangian`): the
+        path the fingerprints replace, kept for the test that holds them to the same names."""
         if answer_el is None:
             answer_el = euler_lagrange_values(answer, self.problem.jets, points.env)
         reference_el = self.el_values(self.problem.L, points)

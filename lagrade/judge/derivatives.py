@@ -10,7 +10,7 @@ import numpy as np
 import sympy as sp
 
 from lagrade.judge.compiled import Compiled, to_length
-from lagrade.judge.evaluate import FLOAT
+from lagrade.judge.evaluate import FLOAT, Program, run_hyperdual
 from lagrade.judge.sampling import memo_inputs
 from lagrade.mechanics.lagrange import Jet, t
 
@@ -56,6 +56,25 @@ def euler_lagrange_values(L: Compiled, jets: Sequence[Jet], env: Mapping, backen
             ck = c[(n + k) * n_pts : (n + k + 1) * n_pts]
             E[:, k] = E[:, k] + dk - ck
             S[:, k] = S[:, k] + abs(dk) + abs(ck)
+    return E, S
+
+
+def euler_lagrange_terms(program: Program, jets: Sequence[Jet], env: Mapping):
+    """E_j of each output of `program` separately and its size, (outputs, points, coordinates)
+    each, in float64 from one hyper-dual pass: the Euler–Lagrange values of many terms (a
+    reference's terms and the pieces of its mistakes) for the price of one evaluation."""
+    n_pts = len(next(iter(env.values())))
+    n = len(jets)
+    copies = 2 * n
+    seeds = memo_inputs("el", env, jets, lambda: _el_seeds(jets, env, env, FLOAT))
+    terms = run_hyperdual(program, {s: seeds[s] for s in program.symbols if s in seeds})
+    E = np.zeros((len(terms), n_pts, n))
+    S = np.zeros((len(terms), n_pts, n))
+    for k, term in enumerate(terms):
+        d = to_length(term[3], copies * n_pts).reshape(copies, n_pts)
+        c = to_length(term[2], copies * n_pts).reshape(copies, n_pts)
+        E[k] = (d[:n] - c[n:]).T
+        S[k] = (np.abs(d[:n]) + np.abs(c[n:])).T
     return E, S
 
 

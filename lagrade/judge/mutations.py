@@ -89,7 +89,7 @@ def velocities_in(term: sp.Expr, jets: Sequence[Jet]) -> list[sp.Symbol]:
     return [j.dot for j in jets if term.has(j.dot)]
 
 
-def _factors(term: sp.Expr, parameters: Iterable[sp.Symbol]) -> list[sp.Symbol]:
+def factors_of(term: sp.Expr, parameters: Iterable[sp.Symbol]) -> list[sp.Symbol]:
     """Parameters that multiply the term (not those inside a function's argument)."""
     factors = sp.Mul.make_args(term)
     bases = {f.base if isinstance(f, sp.Pow) else f for f in factors}
@@ -133,7 +133,7 @@ def iter_term_mutants(
                         1,
                     )
                 )
-        for p in _factors(term, parameters):
+        for p in factors_of(term, parameters):
             out.append(
                 Mutant(
                     "missing_factor",

@@ -28,7 +28,8 @@ from lagrade.bank.scenefile import scene_from_text, sha256
 from lagrade.errors import LagradeError, ParseError, ReferenceUndefined, RequestError
 from lagrade.judge.catalogue import Catalogue
 from lagrade.judge.compiled import Compiled, finite_mask
-from lagrade.judge.rows import Rows, equation_rows
+from lagrade.judge.reference import determined_mask, lagrangian_mask
+from lagrade.judge.rows import Rows, lagrangian_rows
 from lagrade.judge.sampling import Points, Space, seed_for
 from lagrade.judge.worker import PREPARE_LIMIT, Budget
 from lagrade.mechanics.domains import Domain
@@ -233,24 +234,10 @@ class Problem:
             if self.variant is None:
                 raise RequestError(NEEDS_BODIES)
             return finite_mask([Compiled.of(x) for x in self.variant.transformation.values()])
-        refs = [self.L, *self.euler_lagrange]
-        mask = finite_mask(refs)
+        # by numbers: one hyper-dual pass over L, not sympy's derived E(L) and mass matrix
         if part in ("eom", "conserved"):
-            n = len(self.jets)
-            A = [Compiled.of(a) for a in self.system.mass_matrix]
-
-            def valid(env):
-                ok = mask(env)
-                k = len(ok)
-                with np.errstate(all="ignore"):
-                    vals = [np.broadcast_to(np.asarray(a.values(env)[0], float), (k,)) for a in A]
-                    M = np.stack(vals, axis=-1).reshape(k, n, n)
-                    det = np.linalg.det(M)
-                    scale = np.prod(np.linalg.norm(M, axis=2), axis=1)
-                return ok & np.isfinite(det) & (np.abs(det) > 1e-6 * scale)
-
-            return valid
-        return mask
+            return determined_mask(self.L, self.jets)
+        return lagrangian_mask(self.L, self.jets)
 
     # --- cached reference values at points ------------------------------------------------------
     def cached(self, name: str, points: Points, make):
@@ -267,11 +254,16 @@ class Problem:
 
     def reference_rows(self, points: Points) -> Rows:
         """The reference's Euler–Lagrange rows [A | c] at `points`, computed once (the eom and
-        conserved checks and the mistake catalogue read the same)."""
+        conserved checks and the mistake catalogue read the same), by one hyper-dual pass over
+        L (`rows_at` for another arithmetic)."""
         with np.errstate(all="ignore"):
             return self.cached(
-                "rows", points, lambda: equation_rows(self.euler_lagrange, self.jets, points.env)
+                "rows", points, lambda: lagrangian_rows(self.L, self.jets, points.env)
             )
+
+    def rows_at(self, points: Points, backend) -> Rows:
+        """The reference rows at `points` in `backend` (high precision for a near tie)."""
+        return lagrangian_rows(self.L, self.jets, points.arrays(backend), backend)
 
 
 # --- building a Problem from a request ------------------------------------------------------------
