@@ -37,6 +37,7 @@ PHASES = {
         "lagrade/judge/lazylist.py",
         "lagrade/judge/matching.py",
         "lagrade/judge/fingerprints.py",
+        "lagrade/judge/row_fingerprints.py",
     ),
     "decision": (
         "lagrade/judge/decision.py",

@@ -31,13 +31,11 @@ from lagrade.judge.matching import (
     SKIPPED,
     Stack,
     every_lagrangian,
-    every_row,
     first_offset,
     first_plain,
     full,
     lagrangian_arrays,
     lagrangian_fix_is_right,
-    row_fix_is_right,
     span_arrays,
     stacked,
 )
@@ -47,7 +45,6 @@ from lagrade.judge.mutations import (
     conserved_mutants,
     expanded_terms,
     expression_mutants,
-    iter_equation_mutants,
     iter_momentum_mutants,
     iter_term_mutants,
     kinetic_mutants,
@@ -55,6 +52,7 @@ from lagrade.judge.mutations import (
     terms_changed,
     velocities_in,
 )
+from lagrade.judge.row_fingerprints import RowFingerprints
 from lagrade.judge.rows import Rows, equation_rows, span_basis
 from lagrade.judge.sampling import Points
 from lagrade.judge.worker import Budget, set_aside
@@ -210,12 +208,12 @@ class Catalogue:
         return self.lagrangian.all()
 
     def _kept_early_lagrangian(self) -> Iterator[Mutant]:
-        """The kept Lagrangian mutants of `_lagrangian_early`, built as far as they are read."""
-        early = {id(m) for m in self._lagrangian_early}
-        for m in self.lagrangian:
-            if id(m) not in early:
+        """The kept Lagrangian mutants of `_lagrangian_early`, in order (kept by fingerprint)."""
+        table = self.lagrangian_fingerprints
+        for k in table.kept:
+            if k >= table.early:
                 return
-            yield m
+            yield table.mutant(int(k))
 
     # --- T and V ----------------------------------------------------------------------------------
     @cached_property
@@ -285,16 +283,20 @@ class Catalogue:
     @cached_property
     def rows(self) -> LazyList[tuple[int, Mutant]]:
         """(row, mutant) pairs, built on demand: row `row` of the EL equations replaced by the
-        mutant."""
-        p = self.problem
+        mutant (the mistakes of `row_fingerprints`, kept one at a time by `row_keeper`)."""
 
         def make():
-            source = iter_equation_mutants(
-                p.system, p.jets, self._kept_early_lagrangian(), self.parameters
-            )
+            table = self.row_fingerprints
+            source = (table.mutant(m) for m in range(len(table.specs)))
             return source, self._row_keeper()
 
         return LazyList(make)
+
+    @cached_property
+    def row_fingerprints(self) -> RowFingerprints:
+        """The equation mistakes as arrays (`row_fingerprints`): what `match_row` reads."""
+        with set_aside(self.problem.budget):
+            return RowFingerprints(self)
 
     @property
     def row_mutants(self) -> list[tuple[int, Mutant]]:
@@ -421,20 +423,19 @@ class Catalogue:
         reference = p.reference_rows(points)
         basis = p.cached("row-basis", points, lambda: span_basis(reference))
         E = p.system.euler_lagrange
+        counted = self.__dict__.setdefault("_changes", {})
 
-        def true_ones(stack: Stack) -> list:
-            hits = every_row(stack, s, points.group)
-            return [pair for pair, x in hits if row_fix_is_right(s, x, pair[0], reference, basis)]
+        def changes(i: int, m: Mutant) -> int:
+            key = ("row-stack", id(m))
+            if key not in counted:
+                counted[key] = terms_changed(m, E[i])
+            return counted[key]
 
-        found = self._every(
-            self.rows,
-            "row-stack",
-            points,
-            lambda chunk: self._row_stack(chunk, points),
-            true_ones,
-            lambda pair: terms_changed(pair[1], E[pair[0]]),
-        )
-        return None if found is None else found[1]
+        table = self.row_fingerprints
+        assert points is table.points, "equation mistakes are matched at the eom part's points"
+        with set_aside(p.budget):
+            _ = table.kept
+        return table.match(s, reference, basis, changes)
 
     def match(self, mutants: Sequence[Mutant], test: Callable[[Compiled], bool]) -> Mutant | None:
         """The first mutant the answer matches by `test(compiled mutant)` (a test that is not
@@ -517,12 +518,18 @@ class Catalogue:
         """Build every mutant `part`'s matching uses and their stacks at `points`, so that a
         process forked afterwards (`lagrade grade` warms its parent) shares them."""
         p = self.problem
+        if part in ("lagrangian", "eom"):  # matched by fingerprints: build their arrays
+            with set_aside(p.budget):
+                if part == "lagrangian":
+                    self.lagrangian_fingerprints.values(points)
+                    _ = self.lagrangian_fingerprints.kept
+                else:
+                    _ = self.row_fingerprints.kept
+            return
         which: dict[str, Callable[[], list]] = {
-            "lagrangian": lambda: [(self.lagrangian, self._el_stack)],
             "T": lambda: [(self.kinetic, self._value_stack)],
             "V": lambda: [(self.potential, self._value_stack)],
             "momenta": lambda: [(self.momentum(k), self._value_stack) for k in range(len(p.jets))],
-            "eom": lambda: [(self.rows, self._row_stack)],
             "conserved": lambda: [(self.conserved_mutants, self._value_stack)],
             "expression": lambda: [(self.expression_mutants, self._value_stack)],
         }

@@ -32,8 +32,8 @@ from lagrade.judge.matching import (
 from lagrade.judge.mutations import (
     Mutant,
     expanded_terms,
-    factors_of,
     swap_sin_cos,
+    term_specs,
     velocities_in,
 )
 from lagrade.judge.sampling import Points
@@ -44,6 +44,8 @@ from lagrade.mechanics.scene import SceneVariant
 #: tested for the same dynamics the symbolic way; farther ones are different by every test
 #: (`decision.DIFFERENT_ABOVE` is 1e-6; the margin covers sizes summed in another order).
 SAME_DYNAMICS_SUSPECT = 1e-4
+#: ... and this close is the same dynamics by every test (`decision.EQUAL_BELOW` is 1e-10).
+SURE_EQUAL = 1e-12
 
 
 @dataclass(frozen=True)
@@ -75,10 +77,11 @@ def lagrangian_specs(
     variant: SceneVariant | None,
     jets: Sequence[Jet],
     parameters: Sequence[sp.Symbol],
-) -> tuple[list[sp.Expr], list[Spec]]:
+) -> tuple[list[sp.Expr], list[Spec], int]:
     """The pieces and the mistakes of `Catalogue.lagrangian`, in its order: sign of V, the ½ of
     all of T, per body (`body_mutants`), per kinetic term (`kinetic_mutants`), sin and cos
-    swapped throughout, and the single-term mistakes of T − V (`iter_term_mutants`)."""
+    swapped throughout, and the single-term mistakes of T − V (`term_specs`); and how many
+    are of the early kinds (those before sin and cos swapped throughout)."""
     piece = _Pieces()
     specs = [
         Spec("sign_of_V", 1.0, ((piece(V), 2.0),)),
@@ -100,20 +103,12 @@ def lagrangian_specs(
             specs.append(Spec("missing_cross_term", 1.0, ((piece(term), -1.0),)))
         if not vel:
             specs.append(Spec("missing_driven_term", 1.0, ((piece(term), -1.0),)))
+    early = len(specs)
     specs.append(Spec("sin_cos_swapped", 0.0, ((piece(swap_sin_cos(T - V)), 1.0),)))
     for term in expanded_terms(T - V):
-        k = piece(term)
-        specs.append(Spec("wrong_sign", 1.0, ((k, -2.0),)))
-        if term.has(sp.sin) or term.has(sp.cos):
-            swapped = swap_sin_cos(term)
-            if swapped != term:
-                specs.append(Spec("sin_cos_swapped", 1.0, ((k, -1.0), (piece(swapped), 1.0))))
-        for p in factors_of(term, parameters):
-            specs.append(Spec("missing_factor", 1.0, ((k, -1.0), (piece(term / p), 1.0))))
-        specs.append(Spec("missing_term", 1.0, ((k, -1.0),)))
-        specs.append(Spec("factor_two", 1.0, ((k, 1.0),)))
-        specs.append(Spec("factor_half", 1.0, ((k, -0.5),)))
-    return piece.exprs, specs
+        for kind, pieces, _ in term_specs(term, parameters):
+            specs.append(Spec(kind, 1.0, tuple((piece(e), float(c)) for c, e in pieces)))
+    return piece.exprs, specs, early
 
 
 def _piece_values(pieces: Sequence[sp.Expr], jets: Sequence[Jet], env: dict):
@@ -153,7 +148,7 @@ class LagrangianFingerprints:
         p = catalogue.problem
         self.catalogue = catalogue
         split = catalogue.split
-        self.pieces, self.specs = lagrangian_specs(
+        self.pieces, self.specs, self.early = lagrangian_specs(
             split.T, split.V, p.variant, p.jets, catalogue.parameters
         )
         m, k = len(self.specs), len(self.pieces)
@@ -211,7 +206,7 @@ class LagrangianFingerprints:
         ref = Er.ravel()
         with np.errstate(all="ignore"):
             valid = np.all(np.isfinite(fp), axis=1) & np.any(fp != 0, axis=1)
-            suspect = valid & self._near_multiple(E, points)
+            same, unsure = self._same_dynamics(E, points)
             big = np.max(np.abs(fp), axis=1)
             close = np.max(np.abs(fp[:, None, :] - fp[None, :, :]), axis=2) <= 1e-9 * np.maximum(
                 big[:, None], np.maximum(big[None, :], 1e-300)
@@ -225,7 +220,7 @@ class LagrangianFingerprints:
         for i in range(len(fp)):
             if not valid[i]:
                 continue
-            if suspect[i] and same_dynamics(c, self.mutant(i), c.problem.L, points):
+            if same[i] or (unsure[i] and same_dynamics(c, self.mutant(i), c.problem.L, points)):
                 continue
             if like_ref[i] or (kept and np.any(close[i, kept])):
                 continue
@@ -234,18 +229,28 @@ class LagrangianFingerprints:
         self.__dict__["_kept"] = out
         return out
 
-    def _near_multiple(self, E: np.ndarray, points: Points) -> np.ndarray:
-        """Per mistake: E within `SAME_DYNAMICS_SUSPECT` of c E(L), c per parameter group."""
+    def _same_dynamics(self, E: np.ndarray, points: Points) -> tuple[np.ndarray, np.ndarray]:
+        """Per mistake, E = c E(L) with c per parameter group of one sign (`keepers.same_dynamics`)
+        where float64 settles it: (same, unsure). Sure when the residual is far below or far
+        above every threshold of `decide` (the sizes here add the same terms in another order);
+        the rest is decided the symbolic way."""
         c = self.catalogue
         Er, Sr = c.el_values(c.problem.L, points)
         _, S = self.values(points)
         group = points.group
         num = np.stack([np.bincount(group, np.sum(e * Er, axis=1)) for e in E])
         den = np.bincount(group, np.sum(Er * Er, axis=1))
-        f = np.where(den != 0, num / np.where(den != 0, den, 1.0), 0.0)[:, group][:, :, None]
-        r = np.abs(E - f * Er)
-        s = S + np.abs(f) * Sr
-        return np.all(r <= SAME_DYNAMICS_SUSPECT * s, axis=(1, 2))
+        f = np.where(den != 0, num / np.where(den != 0, den, 1.0), 0.0)
+        per_point = f[:, group][:, :, None]
+        r = np.abs(E - per_point * Er)
+        s = S + np.abs(per_point) * Sr
+        ratio = np.where((s == 0) & (r == 0), 0.0, r / s).reshape(len(E), -1)
+        finite = np.all(np.isfinite(ratio), axis=1)
+        worst = np.max(np.where(np.isfinite(ratio), ratio, 0.0), axis=1)
+        equal = finite & (worst <= SURE_EQUAL)
+        different = finite & (worst >= SAME_DYNAMICS_SUSPECT)
+        one_sign = np.all(f > 0, axis=1) | np.all(f < 0, axis=1)
+        return equal & one_sign, ~(equal | different)
 
     def match(
         self,
