@@ -26,9 +26,13 @@ def _unit_blocks(copies: int, n: int, hot: int, backend):
     return backend.array(arr) if backend is not FLOAT else arr
 
 
-def euler_lagrange_values(L: Compiled, jets: Sequence[Jet], env: Mapping, backend=FLOAT):
+def euler_lagrange_values(
+    L: Compiled, jets: Sequence[Jet], env: Mapping, backend=FLOAT, memo: bool = True
+):
     """E_j = D_t(∂L/∂q̇_j) − ∂L/∂q_j at the points of env, and the size of its terms; both of
     shape (points, coordinates).
+
+    `memo=False` for points seen once (a draw's candidates): their seeds are not kept.
 
     Hyper-dual evaluation: ε₁ is the direction of the motion (∂t = 1, ∂q = q̇, ∂q̇ = q̈), ε₂ is
     ∂/∂q̇_j in copy j and ∂/∂q_j in copy n + j; then D_t ∂L/∂q̇_j is the ε₁ε₂ part of copy j and
@@ -40,7 +44,7 @@ def euler_lagrange_values(L: Compiled, jets: Sequence[Jet], env: Mapping, backen
     for j in jets:
         if j.ddot in L.symbols:
             raise ValueError("a Lagrangian must not contain accelerations")
-    if backend is FLOAT:
+    if backend is FLOAT and memo:
         seeds = memo_inputs("el", env, jets, lambda: _el_seeds(jets, env, env, backend))
     else:
         seeds = _el_seeds(jets, env, L.symbols, backend)

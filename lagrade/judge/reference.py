@@ -10,9 +10,9 @@ from collections.abc import Callable, Sequence
 import numpy as np
 
 from lagrade.judge.compiled import Compiled, finite_mask
-from lagrade.judge.derivatives import euler_lagrange_values
+from lagrade.judge.derivatives import euler_lagrange_values, gradient
 from lagrade.judge.evaluate import MP, finite_in_mp
-from lagrade.judge.rows import lagrangian_rows
+from lagrade.judge.rows import acceleration_blocks, rows_from_values
 from lagrade.mechanics.lagrange import Jet
 
 #: A mass matrix whose determinant is below this fraction of the product of its rows' norms is
@@ -28,32 +28,57 @@ def lagrangian_mask(L: Compiled, jets: Sequence[Jet]) -> Callable[[dict], np.nda
     of_L = finite_mask([L])
 
     def valid(env: dict) -> np.ndarray:
-        ok = of_L(env)
         with np.errstate(all="ignore"):
-            E, S = euler_lagrange_values(L, jets, env)
-            finite = np.all(np.isfinite(E) & np.isfinite(S), axis=1)
-            beyond = ok & ~finite
-            if beyond.any():
-                finite |= beyond & finite_in_mp(
-                    lambda p: euler_lagrange_values(L, jets, p, MP), env, beyond
-                )
-        return ok & finite
+            E, S = euler_lagrange_values(L, jets, env, memo=False)
+        return _has_values(L, jets, env, of_L(env), E, S)
 
     return valid
 
 
 def determined_mask(L: Compiled, jets: Sequence[Jet]) -> Callable[[dict], np.ndarray]:
     """`lagrangian_mask`, and the mass matrix A = ∂²L/∂q̇∂q̇ regular: the points where the
-    equations of motion determine the accelerations (the eom and conserved parts)."""
-    mask = lagrangian_mask(L, jets)
+    equations of motion determine the accelerations (the eom and conserved parts). One
+    hyper-dual pass at q̈ = 0, e_1, …, e_n and the drawn q̈ gives both."""
+    of_L = finite_mask([L])
     n = len(jets)
 
     def valid(env: dict) -> np.ndarray:
-        ok = mask(env)
+        n_pts = len(next(iter(env.values())))
         with np.errstate(all="ignore"):
-            M = lagrangian_rows(L, jets, env).coef[:, :, :n].astype(float)
+            blocks = acceleration_blocks(jets, env, memo=False)
+            E, S = euler_lagrange_values(L, jets, blocks, memo=False)
+            drawn = slice((n + 1) * n_pts, (n + 2) * n_pts)  # the block of the drawn q̈
+            ok = _has_values(L, jets, env, of_L(env), E[drawn], S[drawn])
+            M = rows_from_values(E, S, jets, env).coef[:, :, :n].astype(float)
             det = np.linalg.det(M)
             scale = np.prod(np.linalg.norm(M, axis=2), axis=1)
         return ok & np.isfinite(det) & (np.abs(det) > SINGULAR * scale)
 
     return valid
+
+
+def _has_values(L, jets, env, ok: np.ndarray, E: np.ndarray, S: np.ndarray) -> np.ndarray:
+    """ok, and E(L) finite where float64 computed it (E, S), else in high precision."""
+    finite = np.all(np.isfinite(E) & np.isfinite(S), axis=1)
+    beyond = ok & ~finite
+    if beyond.any():
+        with np.errstate(all="ignore"):
+            finite |= beyond & finite_in_mp(
+                lambda p: euler_lagrange_values(L, jets, p, MP), env, beyond
+            )
+    return ok & finite
+
+
+def momenta_and_energy(
+    L: Compiled, jets: Sequence[Jet], env: dict
+) -> tuple[np.ndarray, np.ndarray]:
+    """p_j = ∂L/∂q̇_j (points, coordinates) and the energy function h = Σ q̇_j p_j − L
+    (points,) at the points of env, from one dual pass over L (`derivatives.gradient`)."""
+    n_pts = len(next(iter(env.values())))
+    with np.errstate(all="ignore"):
+        grads = gradient(L, [j.dot for j in jets], env)
+        p = sum(grads) if grads else np.zeros((n_pts, len(jets)))
+        p = np.broadcast_to(p, (n_pts, len(jets)))
+        value, _ = L.values(env)
+        h = sum(env[j.dot] * p[:, k] for k, j in enumerate(jets)) - value
+    return np.asarray(p, float), np.broadcast_to(np.asarray(h, float), (n_pts,))
