@@ -9,6 +9,13 @@ missing factor): those are in `mutations`. A student's answer matches a mutation
 equivalent to it by the same test that judges answers (E(L′) = c E(L_mut), span of the mutated
 rows, …) at the same points: `matching` runs those tests on all of a part's mutations at once.
 Mutations that do not change what is judged (dropping the constant m g h from L) are left out.
+
+The Lagrangian and equation mistakes are matched as fingerprints (`fingerprints`,
+`row_fingerprints`): their values are arrays made once per question from the values of a few
+pieces, and the symbolic mutant (its sentence) is built only for the one that matched; the lazy
+lists of symbolic mutants (`lagrangian`, `rows`) list the same mistakes, for the other parts
+that derive theirs from them (momenta, equations) and for the tests that hold the two to the
+same names.
 """
 
 from __future__ import annotations
@@ -17,7 +24,7 @@ from collections.abc import Callable, Iterator, Sequence
 from dataclasses import dataclass
 from functools import cached_property
 from itertools import chain, islice
-from typing import Any, Protocol, TypeVar, Union
+from typing import Protocol, TypeVar, Union
 
 import numpy as np
 import sympy as sp
@@ -30,13 +37,9 @@ from lagrade.judge.lazylist import LazyList
 from lagrade.judge.matching import (
     SKIPPED,
     Stack,
-    every_lagrangian,
     first_offset,
     first_plain,
     full,
-    lagrangian_arrays,
-    lagrangian_fix_is_right,
-    span_arrays,
     stacked,
 )
 from lagrade.judge.mutations import (
@@ -354,35 +357,6 @@ class Catalogue:
         """The Lagrangian mistakes as arrays (`fingerprints`): what `match_lagrangian` reads."""
         return LagrangianFingerprints(self)
 
-    def match_lagrangian_symbolic(
-        self,
-        answer: Compiled,
-        points: Points,
-        answer_el: tuple[np.ndarray, np.ndarray] | None = None,
-    ) -> Mutant | None:
-        """`match_lagrangian` by the symbolic catalogue, mutant by mutant (`lagrangian`): the
-        path the fingerprints replace, kept for the test that holds them to the same names."""
-        if answer_el is None:
-            answer_el = euler_lagrange_values(answer, self.problem.jets, points.env)
-        reference_el = self.el_values(self.problem.L, points)
-        L, moving = self._split_lagrangian
-
-        def true_ones(stack: Stack) -> list:
-            return [
-                m
-                for m, Eb, Sb in every_lagrangian(stack, answer_el)
-                if lagrangian_fix_is_right(answer_el, (Eb, Sb), reference_el, points.group)
-            ]
-
-        return self._every(
-            self.lagrangian,
-            "el-stack",
-            points,
-            lambda chunk: self._el_stack(chunk, points),
-            true_ones,
-            lambda m: terms_changed(m, L, lambda term: bool(term.free_symbols & moving)),
-        )
-
     def match_plain(self, mutants: Mutants, answer: Compiled, points: Points) -> Mutant | None:
         """The first mutant with the answer's values at the points."""
         with np.errstate(all="ignore"):
@@ -480,35 +454,6 @@ class Catalogue:
                     return found
             k += 1
 
-    def _every(
-        self,
-        mutants: Mutants,
-        name: str,
-        points: Points,
-        stack_of: Callable,
-        found_in: Callable[[Stack], list],
-        changes: Callable[[Any], int],
-    ):
-        """The candidate of fewest `changes` among all that `found_in` finds in the stacks of
-        `mutants`, the earliest of equals (the catalogue's order puts the most specific first);
-        None without one. Reading stops at a candidate that changes one term: none beats it."""
-        best, fewest = None, None
-        counted = self.__dict__.setdefault("_changes", {})  # a mutant's count, once
-
-        def consider(stack: Stack | None) -> bool:
-            nonlocal best, fewest
-            for candidate in found_in(stack) if stack is not None else ():
-                key = (name, id(candidate[1] if isinstance(candidate, tuple) else candidate))
-                if key not in counted:
-                    counted[key] = changes(candidate)
-                n = counted[key]
-                if fewest is None or n < fewest:
-                    best, fewest = candidate, n
-            return fewest == 1
-
-        self._first(mutants, name, points, stack_of, lambda stack: consider(stack) or None)
-        return best
-
     def _ready(self, name: str, candidates: Sequence, points: Points) -> bool:
         """The stack `name` of `candidates` at `points` is built (reading it does no work)."""
         stack = self.problem.peek(f"{name}:{id(candidates)}", points)
@@ -545,17 +490,6 @@ class Catalogue:
                     stack_of(mutants, points)
 
     # --- stacks of mutant values, per set of points ----------------------------------------------
-    def _el_stack(self, mutants: Sequence[Mutant], points: Points) -> Stack | None:
-        """The Lagrangian mutants' E, its size, and what c needs (`lagrangian_arrays`)."""
-        return stacked(
-            self.problem.cached,
-            "el-stack",
-            mutants,
-            points,
-            lambda m: self.el_values(self.compiled(m), points),
-            lambda Eb, Sb: lagrangian_arrays(Eb, Sb, points.group),
-        )
-
     def _value_stack(self, mutants: Sequence[Mutant], points: Points) -> Stack | None:
         """The mutants' values and sizes, (mutants, points)."""
         return stacked(
@@ -566,23 +500,6 @@ class Catalogue:
             lambda m: self.values(self.compiled(m), points),
             lambda b, sb: (b, sb),
         )
-
-    def _row_stack(self, pairs: Sequence[tuple[int, Mutant]], points: Points) -> Stack | None:
-        """Per row mutant, the reference rows with its row in place of row i, at every point,
-        reduced to what the span test needs (`span_arrays`)."""
-        p = self.problem
-        ref = p.reference_rows(points)
-
-        def evaluate(pair):
-            i, m = pair
-            rows = self.mutant_rows(m, points)
-            R = ref.coef.astype(float).copy()
-            Rs = ref.size.astype(float).copy()
-            R[:, i, :] = rows.coef[:, 0, :]
-            Rs[:, i] = rows.size[:, 0]
-            return R, Rs
-
-        return stacked(p.cached, "row-stack", pairs, points, evaluate, span_arrays)
 
     # --- helpers ----------------------------------------------------------------------------------
     def compiled(self, m: Mutant) -> Compiled | Combination:
