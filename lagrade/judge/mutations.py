@@ -109,11 +109,18 @@ def iter_term_mutants(
     terms = expanded_terms(expr)
     base = sp.Add(*terms)
     for term in terms:
-        shown = plain(term)
-        for kind, pieces, factor in term_specs(term, parameters):
-            yield Mutant(
-                kind, _TERM_MESSAGES[kind].format(t=shown, w=what, p=factor), base, pieces, 1
-            )
+        yield from one_term_mutants(base, term, what, parameters)
+
+
+def one_term_mutants(
+    base: sp.Expr, term: sp.Expr, what: str, parameters: Sequence[sp.Symbol]
+) -> list[Mutant]:
+    """The single-term mistakes of one term of `base` (its expanded sum), with their sentences."""
+    shown = plain(term)
+    return [
+        Mutant(kind, _TERM_MESSAGES[kind].format(t=shown, w=what, p=factor), base, pieces, 1)
+        for kind, pieces, factor in term_specs(term, parameters)
+    ]
 
 
 #: The sentence of each single-term mistake: t the term, w what it is in, p the missing factor.

@@ -13,7 +13,6 @@ point gives no mistake of that row (its symbolic E is zero there)."""
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
@@ -28,8 +27,8 @@ from lagrade.judge.mutations import (
     Mutant,
     el_sign_mutant,
     expanded_terms,
-    iter_term_mutants,
     lagrangian_row_mutants,
+    one_term_mutants,
     term_specs,
 )
 from lagrade.judge.rows import Rows, acceleration_blocks, rows_from_values, span_basis
@@ -37,16 +36,15 @@ from lagrade.judge.rows import Rows, acceleration_blocks, rows_from_values, span
 _FAILS = (UnsupportedExpression, ValueError, ZeroDivisionError, OverflowError)
 
 
-@dataclass(frozen=True)
-class RowSpec:
-    """One catalogued mistake of row `row`: the reference row + Σ weight × piece row. `source`
-    says how its symbolic mutant is built: ("sign",), ("lagrangian", index of the Lagrangian
-    mistake), ("term", index among the row's term mistakes)."""
+def _float(c) -> float:
+    """A catalogue weight (±1, ±2, ½) as a float, converted once per value."""
+    found = _FLOATS.get(c)
+    if found is None:
+        found = _FLOATS[c] = float(c)
+    return found
 
-    row: int
-    kind: str
-    weights: tuple[tuple[int, float], ...]
-    source: tuple
+
+_FLOATS: dict = {}
 
 
 def _outputs(pieces: Sequence[sp.Expr]) -> tuple[list, list[int]]:
@@ -144,7 +142,7 @@ class RowFingerprints:
         lag = catalogue.lagrangian_fingerprints
         env = self.points.env
         self._built: dict[int, Mutant] = {}
-        self._term_mutants: dict[int, list[Mutant]] = {}
+        self._term_mutants: dict[tuple[int, int], list[Mutant]] = {}
         self._lagrangian_rows: dict[int, dict[int, Mutant]] = {}
         self._per_monomial: dict = {}
         # the pieces read as equations: ∂L/∂q_i, then the rows' terms and their variants
@@ -157,7 +155,9 @@ class RowFingerprints:
                 plain.append(e)
             return index[e]
 
-        specs: list[tuple[int, str, tuple, tuple]] = []  # (row, kind, weights, source)
+        # a mistake: (row, kind, weights over the pieces' rows, how its symbolic mutant is built:
+        # ("sign",), ("lagrangian", its Lagrangian mistake), ("term", term, its mistake there))
+        specs: list[tuple[int, str, tuple, tuple]] = []
         for i in range(n):
             specs.append(
                 (i, "el_sign", (("p", piece(system.generalized_forces[i]), 2.0),), ("sign",))
@@ -180,13 +180,12 @@ class RowFingerprints:
                             ("lagrangian", k),
                         )
                     )
+        self._terms = [expanded_terms(E[i]) for i in range(n)]
         for i in range(n):
-            count = 0
-            for term in expanded_terms(E[i]):
-                for kind, pieces, _ in term_specs(term, catalogue.parameters):
-                    weights = tuple(("p", piece(e), float(c)) for c, e in pieces)
-                    specs.append((i, kind, weights, ("term", count)))
-                    count += 1
+            for t, term in enumerate(self._terms[i]):
+                for local, (kind, pieces, _) in enumerate(term_specs(term, catalogue.parameters)):
+                    weights = tuple(("p", piece(e), _float(c)) for c, e in pieces)
+                    specs.append((i, kind, weights, ("term", t, local)))
         self.specs = specs
         p_coef, p_size = _plain_rows(plain, jets, env)
         self._pieces = {"p": (p_coef, p_size), "l": (el_coef, el_size)}
@@ -237,19 +236,15 @@ class RowFingerprints:
             gram = fp_ok @ fp_ok.T
             sq = np.einsum("ij,ij->i", fp_ok, fp_ok)
             dist = np.sqrt(np.maximum(sq[:, None] + sq[None, :] - 2 * gram, 0.0))
+            # a loose screen: only a mistake near an earlier one is compared exactly
+            near = np.tril(dist < 1e-6 * norm[:, None], k=-1) & valid[None, :]
+            screened = near.any(axis=1)
         kept: list[int] = []
-        for m in range(len(X)):
-            if not valid[m]:
-                continue
-            if kept:
-                exact = (
-                    np.linalg.norm(fp[kept] - fp[m], axis=1)
-                    if np.any(dist[m, kept] < 1e-6 * norm[m])
-                    else dist[m, kept]
-                )
-                if np.any(exact < 1e-8 * norm[m]):
+        for m in np.flatnonzero(valid):
+            if screened[m] and kept:
+                if np.any(np.linalg.norm(fp[kept] - fp[m], axis=1) < 1e-8 * norm[m]):
                     continue
-            kept.append(m)
+            kept.append(int(m))
         out = np.array(kept, dtype=int)
         self.__dict__["_kept"] = out
         return out
@@ -268,14 +263,17 @@ class RowFingerprints:
                     pairs = lagrangian_row_mutants(p.system, p.jets, lm, self._per_monomial)
                     self._lagrangian_rows[k] = dict(pairs)
                 built = self._lagrangian_rows[k][i]
-            else:
-                if i not in self._term_mutants:
-                    what = f"your equation for {p.jets[i].name}"
-                    E = p.system.euler_lagrange
-                    self._term_mutants[i] = list(
-                        iter_term_mutants(E[i], what, self.catalogue.parameters)
+            else:  # only the term's own mistakes are built, with its sentences
+                key = (i, source[1])
+                if key not in self._term_mutants:
+                    terms = self._terms[i]
+                    self._term_mutants[key] = one_term_mutants(
+                        sp.Add(*terms),
+                        terms[source[1]],
+                        f"your equation for {p.jets[i].name}",
+                        self.catalogue.parameters,
                     )
-                built = self._term_mutants[i][source[1]]
+                built = self._term_mutants[key][source[2]]
             if built.kind != kind:
                 raise AssertionError(f"catalogue out of step at {m}: {built.kind} ≠ {kind}")
             self._built[m] = built
