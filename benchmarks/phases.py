@@ -15,6 +15,7 @@ A sample goes to the phase of the outermost lagrade module on the stack that nam
   other       everything else in the loop (checkers' glue, caches, verdicts)
 
 Usage: python benchmarks/phases.py [TREE ...] [--repeat N] [--interval MS] [--limit N]
+       [--corpus batch|grading]
 (no TREE: this tree). Each tree runs with its own interpreter when it has a .venv.
 """
 
@@ -69,10 +70,16 @@ sys.path.insert(0, sys.argv[1] + "/benchmarks")
 PHASES = json.loads(sys.argv[2])
 interval = float(sys.argv[3]) / 1e3
 limit = int(sys.argv[4])
-from batch_corpus import build_batch
+corpus = sys.argv[5]
+if corpus == "grading":
+    from compare_feedback import grading_requests
+    bodies = grading_requests()
+else:
+    from batch_corpus import build_batch
+    bodies = [r.body for r in build_batch(13)]
 import importlib; check = importlib.import_module("lagrade.judge.check")
-requests = build_batch(13)[: limit or None]
-work = [(i, (r.body, 2.0)) for i, r in enumerate(requests)]
+bodies = bodies[: limit or None]
+work = [(i, ({k: v for k, v in b.items() if k != "id"}, 2.0)) for i, b in enumerate(bodies)]
 work = check._diagnose_early(work)
 
 cache = {}
@@ -122,10 +129,19 @@ def interpreter(tree: Path) -> str:
     return str(own) if own.exists() else sys.executable
 
 
-def run(tree: Path, interval: float, limit: int) -> dict:
+def run(tree: Path, interval: float, limit: int, corpus: str) -> dict:
     env = {**os.environ, "PYTHONPATH": str(tree)}
     done = subprocess.run(
-        [interpreter(tree), "-c", _CHILD, str(ROOT), json.dumps(PHASES), str(interval), str(limit)],
+        [
+            interpreter(tree),
+            "-c",
+            _CHILD,
+            str(ROOT),
+            json.dumps(PHASES),
+            str(interval),
+            str(limit),
+            corpus,
+        ],
         env=env,
         cwd="/",
         capture_output=True,
@@ -142,12 +158,18 @@ def main() -> None:
     parser.add_argument("--repeat", type=int, default=1, help="runs per tree (interleaved)")
     parser.add_argument("--interval", type=float, default=1.0, help="sampling period, ms")
     parser.add_argument("--limit", type=int, default=0, help="only the first N requests")
+    parser.add_argument(
+        "--corpus",
+        choices=("batch", "grading"),
+        default="batch",
+        help="bench_batch's cold batch, or compare_feedback's grading corpus",
+    )
     args = parser.parse_args()
     trees = [t.resolve() for t in args.trees] or [ROOT]
     runs: dict[Path, list[dict]] = {t: [] for t in trees}
     for _ in range(args.repeat):
         for tree in trees:
-            runs[tree].append(run(tree, args.interval, args.limit))
+            runs[tree].append(run(tree, args.interval, args.limit, args.corpus))
     header = f"{'phase':12}" + "".join(f"{str(t)[-24:]:>34}" for t in trees)
     print(header)
     rows = {}
