@@ -58,13 +58,13 @@ class Spec:
 
 
 class _Pieces:
-    """Distinct sympy pieces, by index."""
+    """Distinct pieces (sympy, or a quotient: `divided`), by index."""
 
     def __init__(self) -> None:
-        self.exprs: list[sp.Expr] = []
-        self._index: dict[sp.Expr, int] = {}
+        self.exprs: list = []
+        self._index: dict = {}
 
-    def __call__(self, expr: sp.Expr) -> int:
+    def __call__(self, expr) -> int:
         if expr not in self._index:
             self._index[expr] = len(self.exprs)
             self.exprs.append(expr)
@@ -106,14 +106,43 @@ def lagrangian_specs(
     early = len(specs)
     specs.append(Spec("sin_cos_swapped", 0.0, ((piece(swap_sin_cos(T - V)), 1.0),)))
     for term in expanded_terms(T - V):
-        for kind, pieces, _ in term_specs(term, parameters):
+        for kind, pieces, _ in term_specs(term, parameters, divided):
             specs.append(Spec(kind, 1.0, tuple((piece(e), float(c)) for c, e in pieces)))
     return piece.exprs, specs, early
 
 
-def _piece_values(pieces: Sequence[sp.Expr], jets: Sequence[Jet], env: dict):
+def divided(term: sp.Expr, p: sp.Symbol) -> tuple:
+    """The piece term/p as the fingerprints hold it: term's values over p's (p is a constant,
+    so E(term/p) = E(term)/p), without forming the quotient in sympy."""
+    return ("/", term, p)
+
+
+def with_quotients(pieces: Sequence, values: Callable[[list], tuple], env: dict) -> tuple:
+    """`values` of the sympy pieces, (pieces, points, …) each of value and size, and of each
+    quotient piece (`divided`) its term's values over p's at the points."""
+    plain = [k for k, e in enumerate(pieces) if not isinstance(e, tuple)]
+    V, S = values([pieces[k] for k in plain])
+    out_v = np.full((len(pieces), *V.shape[1:]), np.nan)
+    out_s = np.full((len(pieces), *S.shape[1:]), np.nan)
+    out_v[plain], out_s[plain] = V, S
+    at = {pieces[k]: k for k in plain}
+    for k, e in enumerate(pieces):
+        if isinstance(e, tuple):
+            _, term, p = e
+            d = np.asarray(env[p], float)
+            with np.errstate(all="ignore"):
+                out_v[k] = out_v[at[term]] / d.reshape(-1, *([1] * (V.ndim - 2)))
+                out_s[k] = out_s[at[term]] / np.abs(d).reshape(-1, *([1] * (S.ndim - 2)))
+    return out_v, out_s
+
+
+def _piece_values(pieces: Sequence, jets: Sequence[Jet], env: dict):
     """E and size of each piece (pieces, points, coordinates), NaN for a piece that does not
     compile or evaluate; each piece as the sum of its top-level terms, as `Compiled` sums them."""
+    return with_quotients(pieces, lambda exprs: _sympy_piece_values(exprs, jets, env), env)
+
+
+def _sympy_piece_values(pieces: Sequence[sp.Expr], jets: Sequence[Jet], env: dict):
     terms, owner = [], []
     for k, e in enumerate(pieces):
         for term in top_terms(sp.S(e)):

@@ -4,8 +4,10 @@ students write for it, each with the sentence that names the mistake in the stud
 
 from __future__ import annotations
 
+import operator
 from collections.abc import Callable, Iterable, Iterator, Sequence
 from dataclasses import dataclass
+from typing import Any
 
 import sympy as sp
 
@@ -135,11 +137,14 @@ _TERM_MESSAGES = {
 
 
 def term_specs(
-    term: sp.Expr, parameters: Sequence[sp.Symbol]
-) -> list[tuple[str, tuple[tuple[sp.Rational, sp.Expr], ...], sp.Symbol | None]]:
+    term: sp.Expr,
+    parameters: Sequence[sp.Symbol],
+    divide: Callable[[sp.Expr, sp.Symbol], Any] = operator.truediv,
+) -> list[tuple[str, tuple[tuple[sp.Rational, Any], ...], sp.Symbol | None]]:
     """The single-term mistakes of one term, in catalogue order, as (kind, pieces added to the
     reference, the parameter factor left out): the wrong sign, sin and cos swapped, without one
-    of its parameter factors, left out, twice or half its size."""
+    of its parameter factors, left out, twice or half its size. `divide(term, p)` makes the
+    piece of a term without its factor p (the fingerprints divide its values instead)."""
     one, two, half = sp.Integer(1), sp.Integer(2), sp.Rational(1, 2)
     out: list = [("wrong_sign", ((-two, term),), None)]
     if term.has(sp.sin) or term.has(sp.cos):
@@ -147,7 +152,7 @@ def term_specs(
         if swapped != term:
             out.append(("sin_cos_swapped", ((-one, term), (one, swapped)), None))
     for p in factors_of(term, parameters):
-        out.append(("missing_factor", ((-one, term), (one, term / p)), p))
+        out.append(("missing_factor", ((-one, term), (one, divide(term, p))), p))
     out.append(("missing_term", ((-one, term),), None))
     out.append(("factor_two", ((one, term),), None))
     out.append(("factor_half", ((-half, term),), None))

@@ -21,6 +21,7 @@ import sympy as sp
 from lagrade.judge.compiled import to_length
 from lagrade.judge.derivatives import euler_lagrange_terms
 from lagrade.judge.evaluate import FLOAT, UnsupportedExpression, compile_program, run, top_terms
+from lagrade.judge.fingerprints import divided, with_quotients
 from lagrade.judge.matching import Stack, every_row, row_fix_is_right, span_arrays
 from lagrade.judge.mutations import (
     ROW_KINDS,
@@ -146,10 +147,10 @@ class RowFingerprints:
         self._lagrangian_rows: dict[int, dict[int, Mutant]] = {}
         self._per_monomial: dict = {}
         # the pieces read as equations: ∂L/∂q_i, then the rows' terms and their variants
-        plain: list[sp.Expr] = []
-        index: dict[sp.Expr, int] = {}
+        plain: list = []
+        index: dict = {}
 
-        def piece(e: sp.Expr) -> int:
+        def piece(e) -> int:
             if e not in index:
                 index[e] = len(plain)
                 plain.append(e)
@@ -183,11 +184,12 @@ class RowFingerprints:
         self._terms = [expanded_terms(E[i]) for i in range(n)]
         for i in range(n):
             for t, term in enumerate(self._terms[i]):
-                for local, (kind, pieces, _) in enumerate(term_specs(term, catalogue.parameters)):
+                specs_here = term_specs(term, catalogue.parameters, divided)
+                for local, (kind, pieces, _) in enumerate(specs_here):
                     weights = tuple(("p", piece(e), _float(c)) for c, e in pieces)
                     specs.append((i, kind, weights, ("term", t, local)))
         self.specs = specs
-        p_coef, p_size = _plain_rows(plain, jets, env)
+        p_coef, p_size = with_quotients(plain, lambda e: _plain_rows(e, jets, env), env)
         self._pieces = {"p": (p_coef, p_size), "l": (el_coef, el_size)}
         self.rows, self.sizes = self._mistake_rows()
 
