@@ -82,6 +82,12 @@ def euler_lagrange_terms(program: Program, jets: Sequence[Jet], env: Mapping):
     return E, S
 
 
+def el_seeds(jets: Sequence[Jet], env: Mapping, wanted) -> dict:
+    """The hyper-dual inputs of `euler_lagrange_values` (float64) for the symbols in `wanted`,
+    not memoised: for points seen once."""
+    return _el_seeds(jets, env, wanted, FLOAT)
+
+
 def _el_seeds(jets: Sequence[Jet], env: Mapping, wanted, backend) -> dict:
     """Hyper-dual inputs of the symbols in `wanted` for `euler_lagrange_values`."""
     n_pts = len(next(iter(env.values())))

@@ -29,7 +29,7 @@ from lagrade.errors import LagradeError, ParseError, ReferenceUndefined, Request
 from lagrade.judge.catalogue import Catalogue
 from lagrade.judge.compiled import Compiled, finite_mask
 from lagrade.judge.reference import determined_mask, lagrangian_mask
-from lagrade.judge.rows import Rows, lagrangian_rows
+from lagrade.judge.rows import Rows, equation_rows, lagrangian_rows
 from lagrade.judge.sampling import Points, Space, seed_for
 from lagrade.judge.worker import PREPARE_LIMIT, Budget
 from lagrade.mechanics.domains import Domain
@@ -262,8 +262,10 @@ class Problem:
             )
 
     def rows_at(self, points: Points, backend) -> Rows:
-        """The reference rows at `points` in `backend` (high precision for a near tie)."""
-        return lagrangian_rows(self.L, self.jets, points.arrays(backend), backend)
+        """The reference rows at `points` in `backend`: high precision settles a near tie, and
+        there sympy's derived E(L), compiled, costs a fraction of a hyper-dual pass over L in
+        mpmath (2n copies of every point)."""
+        return equation_rows(self.euler_lagrange, self.jets, points.arrays(backend), backend)
 
 
 # --- building a Problem from a request ------------------------------------------------------------

@@ -9,8 +9,8 @@ from collections.abc import Callable, Sequence
 
 import numpy as np
 
-from lagrade.judge.compiled import Compiled, finite_mask
-from lagrade.judge.derivatives import euler_lagrange_values, gradient
+from lagrade.judge.compiled import Compiled, finite_mask, to_length
+from lagrade.judge.derivatives import el_seeds, euler_lagrange_values, gradient
 from lagrade.judge.evaluate import MP, finite_in_mp
 from lagrade.judge.rows import acceleration_blocks, rows_from_values
 from lagrade.mechanics.lagrange import Jet
@@ -29,10 +29,29 @@ def lagrangian_mask(L: Compiled, jets: Sequence[Jet]) -> Callable[[dict], np.nda
 
     def valid(env: dict) -> np.ndarray:
         with np.errstate(all="ignore"):
-            E, S = euler_lagrange_values(L, jets, env, memo=False)
-        return _has_values(L, jets, env, of_L(env), E, S)
+            ok, finite = _finite_parts(L, jets, env)
+        if not ok.all():
+            ok = of_L(env)  # where float64 has no value: complex and high precision decide
+        return _has_values(L, jets, env, ok, finite)
 
     return valid
+
+
+def _finite_parts(L: Compiled, jets: Sequence[Jet], env: dict) -> tuple[np.ndarray, np.ndarray]:
+    """Per point: every term of L finite, and every part E(L) is made of (D_t ∂L/∂q̇_j and
+    ∂L/∂q_j of each term) finite, from one hyper-dual pass (the sizes need no summing here)."""
+    n_pts, n = len(next(iter(env.values()))), len(jets)
+    copies = 2 * n
+    seeds = el_seeds(jets, env, L.symbols)
+    terms = L.hyperdual({s: seeds[s] for s in L.symbols if s in seeds})
+    value_ok = np.ones(n_pts, dtype=bool)
+    parts_ok = np.ones(n_pts, dtype=bool)
+    for a, _b, c, d in terms:
+        value_ok &= np.isfinite(to_length(a, copies * n_pts)[:n_pts])
+        c = to_length(c, copies * n_pts).reshape(copies, n_pts)[n:]
+        d = to_length(d, copies * n_pts).reshape(copies, n_pts)[:n]
+        parts_ok &= np.isfinite(c).all(axis=0) & np.isfinite(d).all(axis=0)
+    return value_ok, parts_ok
 
 
 def determined_mask(L: Compiled, jets: Sequence[Jet]) -> Callable[[dict], np.ndarray]:
@@ -48,7 +67,8 @@ def determined_mask(L: Compiled, jets: Sequence[Jet]) -> Callable[[dict], np.nda
             blocks = acceleration_blocks(jets, env, memo=False)
             E, S = euler_lagrange_values(L, jets, blocks, memo=False)
             drawn = slice((n + 1) * n_pts, (n + 2) * n_pts)  # the block of the drawn q̈
-            ok = _has_values(L, jets, env, of_L(env), E[drawn], S[drawn])
+            finite = np.all(np.isfinite(E[drawn]) & np.isfinite(S[drawn]), axis=1)
+            ok = _has_values(L, jets, env, of_L(env), finite)
             M = rows_from_values(E, S, jets, env).coef[:, :, :n].astype(float)
             det = np.linalg.det(M)
             scale = np.prod(np.linalg.norm(M, axis=2), axis=1)
@@ -57,9 +77,8 @@ def determined_mask(L: Compiled, jets: Sequence[Jet]) -> Callable[[dict], np.nda
     return valid
 
 
-def _has_values(L, jets, env, ok: np.ndarray, E: np.ndarray, S: np.ndarray) -> np.ndarray:
-    """ok, and E(L) finite where float64 computed it (E, S), else in high precision."""
-    finite = np.all(np.isfinite(E) & np.isfinite(S), axis=1)
+def _has_values(L, jets, env, ok: np.ndarray, finite: np.ndarray) -> np.ndarray:
+    """ok, and E(L) finite where float64 says so (`finite`), else in high precision."""
     beyond = ok & ~finite
     if beyond.any():
         with np.errstate(all="ignore"):

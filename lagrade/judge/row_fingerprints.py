@@ -235,7 +235,8 @@ class RowFingerprints:
             norm = np.linalg.norm(fp, axis=1)
             valid = ~consequence & np.isfinite(norm) & (norm != 0)
             fp_ok = np.where(np.isfinite(fp), fp, 0.0)
-            gram = fp_ok @ fp_ok.T
+            # einsum, not a BLAS product: a threaded BLAS costs milliseconds to start here
+            gram = np.einsum("ik,jk->ij", fp_ok, fp_ok)
             sq = np.einsum("ij,ij->i", fp_ok, fp_ok)
             dist = np.sqrt(np.maximum(sq[:, None] + sq[None, :] - 2 * gram, 0.0))
             # a loose screen: only a mistake near an earlier one is compared exactly
