@@ -42,13 +42,13 @@ from lagrade.judge.matching import (
     full,
     stacked,
 )
+from lagrade.judge.momentum_fingerprints import MomentumFingerprints
 from lagrade.judge.mutations import (
     Mutant,
     body_mutants,
     conserved_mutants,
     expanded_terms,
     expression_mutants,
-    iter_momentum_mutants,
     iter_term_mutants,
     kinetic_mutants,
     swap_sin_cos,
@@ -210,14 +210,6 @@ class Catalogue:
     def lagrangian_mutants(self) -> list[Mutant]:
         return self.lagrangian.all()
 
-    def _kept_early_lagrangian(self) -> Iterator[Mutant]:
-        """The kept Lagrangian mutants of `_lagrangian_early`, in order (kept by fingerprint)."""
-        table = self.lagrangian_fingerprints
-        for k in table.kept:
-            if k >= table.early:
-                return
-            yield table.mutant(int(k))
-
     # --- T and V ----------------------------------------------------------------------------------
     @cached_property
     def kinetic(self) -> LazyList[Mutant]:
@@ -265,20 +257,39 @@ class Catalogue:
 
     # --- momenta, equations of motion, conserved quantities, a reference expression ------------
     def momentum(self, k: int) -> LazyList[Mutant]:
-        """The mutants of p_k, built on demand."""
+        """The mutants of p_k, built on demand (the mistakes of `momentum_fingerprints`, kept
+        one at a time by the symbolic keeper)."""
         cache = self.__dict__.setdefault("_momentum", {})
         if k not in cache:
             p = self.problem
 
             def make():
-                source = iter_momentum_mutants(
-                    p.system, p.jets, k, self._kept_early_lagrangian(), self.parameters
-                )
+                table = self.momentum_fingerprints(k)
+                source = (table.mutant(m) for m in range(len(table.specs)))
                 keep = self._keeper("plain", lambda: Compiled.of(p.system.generalized_momenta[k]))
                 return source, keep
 
             cache[k] = LazyList(make)
         return cache[k]
+
+    def momentum_fingerprints(self, k: int) -> MomentumFingerprints:
+        """The mistakes of p_k as arrays (`momentum_fingerprints`): what `match_momentum` reads."""
+        cache = self.__dict__.setdefault("_momentum_tables", {})
+        if k not in cache:
+            with set_aside(self.problem.budget):
+                table = MomentumFingerprints(self, k)
+                _ = table.kept
+            cache[k] = table
+        return cache[k]
+
+    def match_momentum(self, k: int, answer: Compiled, points: Points) -> Mutant | None:
+        """The first mistake of p_k with the answer's values at the points (`match_plain` on
+        the fingerprints)."""
+        with np.errstate(all="ignore"):
+            values = full(answer.values(points.env), points.n)
+        if underflowed(answer, values):
+            return None
+        return self.momentum_fingerprints(k).match(values, points)
 
     def momentum_mutants(self, k: int) -> list[Mutant]:
         return self.momentum(k).all()
@@ -463,18 +474,20 @@ class Catalogue:
         """Build every mutant `part`'s matching uses and their stacks at `points`, so that a
         process forked afterwards (`lagrade grade` warms its parent) shares them."""
         p = self.problem
-        if part in ("lagrangian", "eom"):  # matched by fingerprints: build their arrays
+        if part in ("lagrangian", "eom", "momenta"):  # matched by fingerprints: their arrays
             with set_aside(p.budget):
                 if part == "lagrangian":
                     self.lagrangian_fingerprints.values(points)
                     _ = self.lagrangian_fingerprints.kept
-                else:
+                elif part == "eom":
                     _ = self.row_fingerprints.kept
+                else:
+                    for k in range(len(p.jets)):
+                        self.momentum_fingerprints(k)
             return
         which: dict[str, Callable[[], list]] = {
             "T": lambda: [(self.kinetic, self._value_stack)],
             "V": lambda: [(self.potential, self._value_stack)],
-            "momenta": lambda: [(self.momentum(k), self._value_stack) for k in range(len(p.jets))],
             "conserved": lambda: [(self.conserved_mutants, self._value_stack)],
             "expression": lambda: [(self.expression_mutants, self._value_stack)],
         }

@@ -241,28 +241,47 @@ def iter_momentum_mutants(
     parameters: Sequence[sp.Symbol],
 ) -> Iterator[Mutant]:
     """`momentum_mutants` one at a time, reading `lagrangian_mutants` only as far as needed."""
-    name = jets[k].name
-    what = f"your p_{name}"
-    momenta = system.generalized_momenta
-    for i, j in enumerate(jets):
+    for i in range(len(jets)):
         if i != k:
-            yield (
-                Mutant(
-                    "wrong_coordinate",
-                    f"{what} is the momentum of {j.name} (∂L/∂{j.name}_dot), not of {name}",
-                    momenta[i],
-                )
-            )
-    yield Mutant(
-        "force_not_momentum",
-        f"{what} is ∂L/∂{name}; the momentum is ∂L/∂{name}_dot",
-        system.generalized_forces[k],
-    )
+            yield wrong_coordinate_mutant(system, jets, k, i)
+    yield force_mutant(system, jets, k)
     for m in lagrangian_mutants:
         if m.kind in KINETIC_KINDS:
-            pk = sp.expand(sp.diff(m.expr, jets[k].dot))
-            yield Mutant(m.kind, _momentum_message(m, what, momenta[k], pk), pk)
-    yield from iter_term_mutants(momenta[k], what, parameters)
+            yield lagrangian_momentum_mutant(system, jets, k, m)
+    yield from iter_term_mutants(
+        system.generalized_momenta[k], f"your p_{jets[k].name}", parameters
+    )
+
+
+def wrong_coordinate_mutant(
+    system: LagrangianSystem, jets: Sequence[Jet], k: int, i: int
+) -> Mutant:
+    """p_k given as the momentum of another coordinate, p_i."""
+    name, other = jets[k].name, jets[i].name
+    return Mutant(
+        "wrong_coordinate",
+        f"your p_{name} is the momentum of {other} (∂L/∂{other}_dot), not of {name}",
+        system.generalized_momenta[i],
+    )
+
+
+def force_mutant(system: LagrangianSystem, jets: Sequence[Jet], k: int) -> Mutant:
+    """p_k given as ∂L/∂q_k."""
+    name = jets[k].name
+    return Mutant(
+        "force_not_momentum",
+        f"your p_{name} is ∂L/∂{name}; the momentum is ∂L/∂{name}_dot",
+        system.generalized_forces[k],
+    )
+
+
+def lagrangian_momentum_mutant(
+    system: LagrangianSystem, jets: Sequence[Jet], k: int, m: Mutant
+) -> Mutant:
+    """p_k of the Lagrangian mistake m: ∂L_mut/∂q̇_k."""
+    pk = sp.expand(sp.diff(m.expr, jets[k].dot))
+    what = f"your p_{jets[k].name}"
+    return Mutant(m.kind, _momentum_message(m, what, system.generalized_momenta[k], pk), pk)
 
 
 def _momentum_message(m: Mutant, what: str, right: sp.Expr, wrong: sp.Expr) -> str:

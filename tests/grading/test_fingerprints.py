@@ -1,7 +1,7 @@
 """The mistake catalogue as fingerprints names what the symbolic catalogue names: for every bank
-scene (its declared form and a seeded variant) and ad-hoc Lagrangians, the Lagrangian and
-equation mistakes the arrays list are the symbolic generators' (`mutations`), in order, with the
-same sentences, and the arrays keep exactly the mutants the symbolic keepers (`keepers.keeper`,
+scene (its declared form and a seeded variant) and ad-hoc Lagrangians, the Lagrangian, equation
+and momentum mistakes the arrays list are the symbolic generators' (`mutations`), in order, with
+the same sentences, and the arrays keep exactly the mutants the symbolic keepers (`keepers.keeper`,
 `keepers.row_keeper`, one mutant at a time) keep."""
 
 from __future__ import annotations
@@ -12,7 +12,8 @@ import numpy as np
 import pytest
 
 from lagrade.bank.registry import scene_ids
-from lagrade.judge.mutations import iter_equation_mutants
+from lagrade.judge.compiled import Compiled
+from lagrade.judge.mutations import iter_equation_mutants, iter_momentum_mutants
 from lagrade.judge.problem import build_problem
 
 SPECS = [{"scene": s} for s in scene_ids()] + [{"scene": s, "seed": 3} for s in scene_ids()]
@@ -66,3 +67,26 @@ def test_row_fingerprints_list_and_keep_the_symbolic_equation_mutants(spec):
         ]
         symbolic = cat.rows.all()  # kept one at a time by keepers.row_keeper
     assert [table.mutant(int(m)) for m in table.kept] == symbolic
+
+
+@pytest.mark.parametrize("spec", SPECS + ADHOC, ids=lambda s: str(s.get("scene", "adhoc")))
+def test_momentum_fingerprints_list_keep_and_match_what_the_symbolic_catalogue_does(spec):
+    problem = _problem(spec)
+    cat = problem.catalogue
+    points = problem.points("momenta")
+    with np.errstate(all="ignore"):
+        early = [m for m in cat.lagrangian.all() if m in cat._lagrangian_early]
+        for k in range(len(problem.jets)):
+            table = cat.momentum_fingerprints(k)
+            mine = [table.mutant(m) for m in range(len(table.specs))]
+            theirs = iter_momentum_mutants(problem.system, problem.jets, k, early, cat.parameters)
+            assert [(m.kind, m.message, m.expr) for m in mine] == [
+                (m.kind, m.message, m.expr) for m in theirs
+            ]
+            symbolic = cat.momentum(k).all()  # kept one at a time by keepers.keeper
+            assert [table.mutant(int(m)) for m in table.kept] == symbolic
+            for m in symbolic:  # each named as the one-stack-at-a-time matching names it
+                for e in (m.expr, 2 * m.expr):
+                    answer = Compiled.of(e)
+                    slow = cat.match_plain(symbolic, answer, points)
+                    assert cat.match_momentum(k, answer, points) is slow, e
