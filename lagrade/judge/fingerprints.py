@@ -294,9 +294,12 @@ class LagrangianFingerprints:
         kept = self.kept
         if not len(kept):
             return None
-        E, S = self.values(points)
-        Eb, Sb = E[kept], S[kept]
-        stack = Stack(tuple(kept), np.arange(len(kept)), lagrangian_arrays(Eb, Sb, points.group))
+        stacks = self.__dict__.setdefault("_stacks", {})
+        if id(points) not in stacks:  # what c needs of the kept mistakes, once per points
+            E, S = self.values(points)
+            arrays = lagrangian_arrays(E[kept], S[kept], points.group)
+            stacks[id(points)] = (points, Stack(tuple(kept), np.arange(len(kept)), arrays))
+        stack = stacks[id(points)][1]
         best, fewest = None, None
         for i, Ei, Si in every_lagrangian(stack, answer_el):
             if not lagrangian_fix_is_right(answer_el, (Ei, Si), reference_el, points.group):

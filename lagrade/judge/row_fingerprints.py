@@ -282,25 +282,36 @@ class RowFingerprints:
             self._built[m] = built
         return self.specs[m][0], self._built[m]
 
+    def _stack(self, reference: Rows) -> Stack | None:
+        """The kept mistaken systems — the reference rows with the mistaken one in place —
+        reduced to what the span test needs (`span_arrays`: a QR each), made once."""
+        if "_span_stack" in self.__dict__:
+            return self.__dict__["_span_stack"]
+        kept = self.kept
+        stack = None
+        if len(kept):
+            R, Rs = reference.coef.astype(float), reference.size.astype(float)
+            rows = np.array([self.specs[m][0] for m in kept])
+            Rm = np.repeat(R[None], len(kept), axis=0)
+            Rsm = np.repeat(Rs[None], len(kept), axis=0)
+            at = np.arange(len(kept))
+            Rm[at, :, rows, :] = self.rows[kept]
+            Rsm[at, :, rows] = self.sizes[kept]
+            candidates = tuple((int(i), int(m)) for i, m in zip(rows, kept, strict=True))
+            with np.errstate(all="ignore"):
+                stack = Stack(candidates, at, span_arrays(Rm, Rsm))
+        self.__dict__["_span_stack"] = stack
+        return stack
+
     def match(
         self, student: Rows, reference: Rows, basis: tuple, changes: Callable[[int, Mutant], int]
     ) -> Mutant | None:
         """`Catalogue.match_row` on the arrays: of the kept mistaken systems whose rows span the
         student's equation, which is their mistaken row, and whose fix leaves a right equation,
         the one of fewest `changes`, the earliest of equals."""
-        kept = self.kept
-        if not len(kept):
+        stack = self._stack(reference)
+        if stack is None:
             return None
-        R, Rs = reference.coef.astype(float), reference.size.astype(float)
-        rows = np.array([self.specs[m][0] for m in kept])
-        Rm = np.repeat(R[None], len(kept), axis=0)
-        Rsm = np.repeat(Rs[None], len(kept), axis=0)
-        at = np.arange(len(kept))
-        Rm[at, :, rows, :] = self.rows[kept]
-        Rsm[at, :, rows] = self.sizes[kept]
-        candidates = tuple((int(i), int(m)) for i, m in zip(rows, kept, strict=True))
-        with np.errstate(all="ignore"):
-            stack = Stack(candidates, at, span_arrays(Rm, Rsm))
         best, fewest = None, None
         for (i, m), x in every_row(stack, student, self.points.group):
             if not row_fix_is_right(student, x, i, reference, basis):
