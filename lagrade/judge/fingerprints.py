@@ -142,12 +142,19 @@ def _piece_values(pieces: Sequence, jets: Sequence[Jet], env: dict):
     return with_quotients(pieces, lambda exprs: _sympy_piece_values(exprs, jets, env), env)
 
 
-def _sympy_piece_values(pieces: Sequence[sp.Expr], jets: Sequence[Jet], env: dict):
+def piece_terms(pieces: Sequence[sp.Expr]) -> tuple[list, list[int]]:
+    """The top-level terms of every piece, and the piece each belongs to: one program evaluates
+    all pieces, each summed from its terms as `Compiled` sums them (so are their sizes)."""
     terms, owner = [], []
     for k, e in enumerate(pieces):
         for term in top_terms(sp.S(e)):
             terms.append(term)
             owner.append(k)
+    return terms, owner
+
+
+def _sympy_piece_values(pieces: Sequence[sp.Expr], jets: Sequence[Jet], env: dict):
+    terms, owner = piece_terms(pieces)
     n_pts, n = len(next(iter(env.values()))), len(jets)
     E = np.zeros((len(pieces), n_pts, n))
     S = np.zeros((len(pieces), n_pts, n))

@@ -15,8 +15,8 @@ import sympy as sp
 
 from lagrade.judge.compiled import Compiled, to_length
 from lagrade.judge.derivatives import gradient
-from lagrade.judge.evaluate import FLOAT, UnsupportedExpression, compile_program, run, top_terms
-from lagrade.judge.fingerprints import divided, with_quotients
+from lagrade.judge.evaluate import FLOAT, UnsupportedExpression, compile_program, run
+from lagrade.judge.fingerprints import divided, piece_terms, with_quotients
 from lagrade.judge.matching import full, vanish_rows
 from lagrade.judge.mutations import (
     KINETIC_KINDS,
@@ -33,21 +33,12 @@ from lagrade.judge.sampling import Points
 _FAILS = (UnsupportedExpression, ValueError, ZeroDivisionError, OverflowError)
 
 
-def _outputs(pieces: Sequence[sp.Expr]) -> tuple[list, list[int]]:
-    terms, owner = [], []
-    for k, e in enumerate(pieces):
-        for term in top_terms(sp.S(e)):
-            terms.append(term)
-            owner.append(k)
-    return terms, owner
-
-
 def _each(pieces: Sequence[sp.Expr], values_of) -> tuple[np.ndarray, np.ndarray]:
     """`values_of(terms)` → per-term arrays, summed per piece with their sizes: all pieces in
     one program, or one at a time when one does not compile (NaN for it)."""
 
     def of(exprs):
-        terms, owner = _outputs(exprs)
+        terms, owner = piece_terms(exprs)
         per_term = values_of(terms)
         n_pts = per_term[0].shape[0] if per_term else 0
         v = np.zeros((len(exprs), n_pts))

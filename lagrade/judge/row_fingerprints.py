@@ -20,8 +20,8 @@ import sympy as sp
 
 from lagrade.judge.compiled import to_length
 from lagrade.judge.derivatives import euler_lagrange_terms
-from lagrade.judge.evaluate import FLOAT, UnsupportedExpression, compile_program, run, top_terms
-from lagrade.judge.fingerprints import divided, with_quotients
+from lagrade.judge.evaluate import FLOAT, UnsupportedExpression, compile_program, run
+from lagrade.judge.fingerprints import divided, piece_terms, with_quotients
 from lagrade.judge.matching import Stack, every_row, row_fix_is_right, span_arrays
 from lagrade.judge.mutations import (
     ROW_KINDS,
@@ -48,15 +48,6 @@ def _float(c) -> float:
 _FLOATS: dict = {}
 
 
-def _outputs(pieces: Sequence[sp.Expr]) -> tuple[list, list[int]]:
-    terms, owner = [], []
-    for k, e in enumerate(pieces):
-        for term in top_terms(sp.S(e)):
-            terms.append(term)
-            owner.append(k)
-    return terms, owner
-
-
 def _plain_rows(pieces: Sequence[sp.Expr], jets, env: dict) -> tuple[np.ndarray, np.ndarray]:
     """Rows [A | c] of each piece read as an equation: coef (pieces, points, n + 1) and size
     (pieces, points); NaN for a piece that does not evaluate."""
@@ -69,7 +60,7 @@ def _plain_rows(pieces: Sequence[sp.Expr], jets, env: dict) -> tuple[np.ndarray,
     n_all = len(next(iter(blocks.values())))
 
     def rows_of(exprs):
-        terms, owner = _outputs(exprs)
+        terms, owner = piece_terms(exprs)
         values = run(compile_program(terms), blocks, FLOAT)
         v = np.zeros((n_all, len(exprs)))
         s = np.zeros((n_all, len(exprs)))
@@ -103,7 +94,7 @@ def _lagrangian_rows(pieces: Sequence[sp.Expr], jets, env: dict):
     blocks = acceleration_blocks(jets, env)
 
     def rows_of(exprs):
-        terms, owner = _outputs(exprs)
+        terms, owner = piece_terms(exprs)
         Et, St = euler_lagrange_terms(compile_program(terms), jets, blocks)
         E = np.zeros((len(exprs), *Et.shape[1:]))
         S = np.zeros((len(exprs), *Et.shape[1:]))
