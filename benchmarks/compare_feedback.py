@@ -167,6 +167,13 @@ def _report(name: str, new: list[dict], old: list[dict], requests: list[dict]) -
         f"  {name}: {len(new)} results; verdict changes {verdicts}; any field changed "
         f"{len(differ)}; mistakes named differently {named} (baseline names {mistakes})"
     )
+    fields: dict[str, int] = {}
+    for _i, a, b in differ:
+        for k in set(a) | set(b):
+            if k not in TIMINGS and a.get(k) != b.get(k):
+                fields[k] = fields.get(k, 0) + 1
+    if fields:
+        print(f"  {name}: fields changed (results): {dict(sorted(fields.items()))}")
     for i, a, b in differ[:5]:
         keys = [k for k in set(a) | set(b) if k not in TIMINGS and a.get(k) != b.get(k)]
         print(f"    request {i} ({requests[i]['part']}): {keys}")

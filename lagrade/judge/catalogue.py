@@ -9,6 +9,13 @@ missing factor): those are in `mutations`. A student's answer matches a mutation
 equivalent to it by the same test that judges answers (E(L′) = c E(L_mut), span of the mutated
 rows, …) at the same points: `matching` runs those tests on all of a part's mutations at once.
 Mutations that do not change what is judged (dropping the constant m g h from L) are left out.
+
+The Lagrangian and equation mistakes are matched as fingerprints (`fingerprints`,
+`row_fingerprints`): their values are arrays made once per question from the values of a few
+pieces, and the symbolic mutant (its sentence) is built only for the one that matched; the lazy
+lists of symbolic mutants (`lagrangian`, `rows`) list the same mistakes, for the other parts
+that derive theirs from them (momenta, equations) and for the tests that hold the two to the
+same names.
 """
 
 from __future__ import annotations
@@ -16,8 +23,8 @@ from __future__ import annotations
 from collections.abc import Callable, Iterator, Sequence
 from dataclasses import dataclass
 from functools import cached_property
-from itertools import chain
-from typing import Any, Protocol, TypeVar, Union
+from itertools import chain, islice
+from typing import Protocol, TypeVar, Union
 
 import numpy as np
 import sympy as sp
@@ -26,35 +33,30 @@ import lagrade.judge.keepers as keepers
 from lagrade.judge.clocks import Budget, set_aside
 from lagrade.judge.compiled import Combination, Compiled, weighted
 from lagrade.judge.derivatives import euler_lagrange_values
+from lagrade.judge.fingerprints import LagrangianFingerprints
 from lagrade.judge.lazylist import LazyList
 from lagrade.judge.matching import (
     SKIPPED,
     Stack,
-    every_lagrangian,
-    every_row,
     first_offset,
     first_plain,
     full,
-    lagrangian_arrays,
-    lagrangian_fix_is_right,
-    row_fix_is_right,
-    span_arrays,
     stacked,
 )
+from lagrade.judge.momentum_fingerprints import MomentumFingerprints
 from lagrade.judge.mutations import (
     Mutant,
     body_mutants,
     conserved_mutants,
     expanded_terms,
     expression_mutants,
-    iter_equation_mutants,
-    iter_momentum_mutants,
     iter_term_mutants,
     kinetic_mutants,
     swap_sin_cos,
     terms_changed,
     velocities_in,
 )
+from lagrade.judge.row_fingerprints import RowFingerprints
 from lagrade.judge.rows import Rows, equation_rows, span_basis
 from lagrade.judge.sampling import Points
 from lagrade.mechanics.lagrange import Jet, LagrangianSystem, t
@@ -168,6 +170,28 @@ class Catalogue:
         return out
 
     def _lagrangian_late(self) -> Iterator[Mutant]:
+        """The later Lagrangian mutants, each built once for every reader (the lazy list and
+        the fingerprints' sentence of a match read the same objects)."""
+        built = self.__dict__.setdefault("_late_built", [])
+        k = 0
+        while True:
+            if k == len(built):
+                source = self.__dict__.get("_late_source")
+                if source is None:  # fresh, or interrupted mid-item: start past what is built
+                    source = islice(self._late_items(), len(built), None)
+                    self.__dict__["_late_source"] = source
+                try:
+                    item = next(source, None)
+                except BaseException:
+                    self.__dict__["_late_source"] = None
+                    raise
+                if item is None:
+                    return
+                built.append(item)
+            yield built[k]
+            k += 1
+
+    def _late_items(self) -> Iterator[Mutant]:
         T, V = self.split.T, self.split.V
         yield Mutant("sin_cos_swapped", "sin and cos are swapped in your L", swap_sin_cos(T - V))
         yield from iter_term_mutants(T - V, "your L", self.parameters)
@@ -185,14 +209,6 @@ class Catalogue:
     @property
     def lagrangian_mutants(self) -> list[Mutant]:
         return self.lagrangian.all()
-
-    def _kept_early_lagrangian(self) -> Iterator[Mutant]:
-        """The kept Lagrangian mutants of `_lagrangian_early`, built as far as they are read."""
-        early = {id(m) for m in self._lagrangian_early}
-        for m in self.lagrangian:
-            if id(m) not in early:
-                return
-            yield m
 
     # --- T and V ----------------------------------------------------------------------------------
     @cached_property
@@ -241,20 +257,39 @@ class Catalogue:
 
     # --- momenta, equations of motion, conserved quantities, a reference expression ------------
     def momentum(self, k: int) -> LazyList[Mutant]:
-        """The mutants of p_k, built on demand."""
+        """The mutants of p_k, built on demand (the mistakes of `momentum_fingerprints`, kept
+        one at a time by the symbolic keeper)."""
         cache = self.__dict__.setdefault("_momentum", {})
         if k not in cache:
             p = self.problem
 
             def make():
-                source = iter_momentum_mutants(
-                    p.system, p.jets, k, self._kept_early_lagrangian(), self.parameters
-                )
+                table = self.momentum_fingerprints(k)
+                source = (table.mutant(m) for m in range(len(table.specs)))
                 keep = self._keeper("plain", lambda: Compiled.of(p.system.generalized_momenta[k]))
                 return source, keep
 
             cache[k] = LazyList(make)
         return cache[k]
+
+    def momentum_fingerprints(self, k: int) -> MomentumFingerprints:
+        """The mistakes of p_k as arrays (`momentum_fingerprints`): what `match_momentum` reads."""
+        cache = self.__dict__.setdefault("_momentum_tables", {})
+        if k not in cache:
+            with set_aside(self.problem.budget):
+                table = MomentumFingerprints(self, k)
+                _ = table.kept
+            cache[k] = table
+        return cache[k]
+
+    def match_momentum(self, k: int, answer: Compiled, points: Points) -> Mutant | None:
+        """The first mistake of p_k with the answer's values at the points (`match_plain` on
+        the fingerprints)."""
+        with np.errstate(all="ignore"):
+            values = full(answer.values(points.env), points.n)
+        if underflowed(answer, values):
+            return None
+        return self.momentum_fingerprints(k).match(values, points)
 
     def momentum_mutants(self, k: int) -> list[Mutant]:
         return self.momentum(k).all()
@@ -262,16 +297,20 @@ class Catalogue:
     @cached_property
     def rows(self) -> LazyList[tuple[int, Mutant]]:
         """(row, mutant) pairs, built on demand: row `row` of the EL equations replaced by the
-        mutant."""
-        p = self.problem
+        mutant (the mistakes of `row_fingerprints`, kept one at a time by `row_keeper`)."""
 
         def make():
-            source = iter_equation_mutants(
-                p.system, p.jets, self._kept_early_lagrangian(), self.parameters
-            )
+            table = self.row_fingerprints
+            source = (table.mutant(m) for m in range(len(table.specs)))
             return source, self._row_keeper()
 
         return LazyList(make)
+
+    @cached_property
+    def row_fingerprints(self) -> RowFingerprints:
+        """The equation mistakes as arrays (`row_fingerprints`): what `match_row` reads."""
+        with set_aside(self.problem.budget):
+            return RowFingerprints(self)
 
     @property
     def row_mutants(self) -> list[tuple[int, Mutant]]:
@@ -310,22 +349,24 @@ class Catalogue:
             answer_el = euler_lagrange_values(answer, self.problem.jets, points.env)
         reference_el = self.el_values(self.problem.L, points)
         L, moving = self._split_lagrangian
+        counted = self.__dict__.setdefault("_changes", {})  # a mutant's count, once
 
-        def true_ones(stack: Stack) -> list:
-            return [
-                m
-                for m, Eb, Sb in every_lagrangian(stack, answer_el)
-                if lagrangian_fix_is_right(answer_el, (Eb, Sb), reference_el, points.group)
-            ]
+        def changes(m: Mutant) -> int:
+            key = ("el-stack", id(m))
+            if key not in counted:
+                counted[key] = terms_changed(m, L, lambda term: bool(term.free_symbols & moving))
+            return counted[key]
 
-        return self._every(
-            self.lagrangian,
-            "el-stack",
-            points,
-            lambda chunk: self._el_stack(chunk, points),
-            true_ones,
-            lambda m: terms_changed(m, L, lambda term: bool(term.free_symbols & moving)),
-        )
+        with set_aside(self.problem.budget):
+            table = self.lagrangian_fingerprints
+            table.values(points)
+            _ = table.kept
+        return table.match(answer_el, reference_el, points, changes)
+
+    @cached_property
+    def lagrangian_fingerprints(self) -> LagrangianFingerprints:
+        """The Lagrangian mistakes as arrays (`fingerprints`): what `match_lagrangian` reads."""
+        return LagrangianFingerprints(self)
 
     def match_plain(self, mutants: Mutants, answer: Compiled, points: Points) -> Mutant | None:
         """The first mutant with the answer's values at the points."""
@@ -367,20 +408,19 @@ class Catalogue:
         reference = p.reference_rows(points)
         basis = p.cached("row-basis", points, lambda: span_basis(reference))
         E = p.system.euler_lagrange
+        counted = self.__dict__.setdefault("_changes", {})
 
-        def true_ones(stack: Stack) -> list:
-            hits = every_row(stack, s, points.group)
-            return [pair for pair, x in hits if row_fix_is_right(s, x, pair[0], reference, basis)]
+        def changes(i: int, m: Mutant) -> int:
+            key = ("row-stack", id(m))
+            if key not in counted:
+                counted[key] = terms_changed(m, E[i])
+            return counted[key]
 
-        found = self._every(
-            self.rows,
-            "row-stack",
-            points,
-            lambda chunk: self._row_stack(chunk, points),
-            true_ones,
-            lambda pair: terms_changed(pair[1], E[pair[0]]),
-        )
-        return None if found is None else found[1]
+        table = self.row_fingerprints
+        assert points is table.points, "equation mistakes are matched at the eom part's points"
+        with set_aside(p.budget):
+            _ = table.kept
+        return table.match(s, reference, basis, changes)
 
     def match(self, mutants: Sequence[Mutant], test: Callable[[Compiled], bool]) -> Mutant | None:
         """The first mutant the answer matches by `test(compiled mutant)` (a test that is not
@@ -425,35 +465,6 @@ class Catalogue:
                     return found
             k += 1
 
-    def _every(
-        self,
-        mutants: Mutants,
-        name: str,
-        points: Points,
-        stack_of: Callable,
-        found_in: Callable[[Stack], list],
-        changes: Callable[[Any], int],
-    ):
-        """The candidate of fewest `changes` among all that `found_in` finds in the stacks of
-        `mutants`, the earliest of equals (the catalogue's order puts the most specific first);
-        None without one. Reading stops at a candidate that changes one term: none beats it."""
-        best, fewest = None, None
-        counted = self.__dict__.setdefault("_changes", {})  # a mutant's count, once
-
-        def consider(stack: Stack | None) -> bool:
-            nonlocal best, fewest
-            for candidate in found_in(stack) if stack is not None else ():
-                key = (name, id(candidate[1] if isinstance(candidate, tuple) else candidate))
-                if key not in counted:
-                    counted[key] = changes(candidate)
-                n = counted[key]
-                if fewest is None or n < fewest:
-                    best, fewest = candidate, n
-            return fewest == 1
-
-        self._first(mutants, name, points, stack_of, lambda stack: consider(stack) or None)
-        return best
-
     def _ready(self, name: str, candidates: Sequence, points: Points) -> bool:
         """The stack `name` of `candidates` at `points` is built (reading it does no work)."""
         stack = self.problem.peek(f"{name}:{id(candidates)}", points)
@@ -463,12 +474,20 @@ class Catalogue:
         """Build every mutant `part`'s matching uses and their stacks at `points`, so that a
         process forked afterwards (`lagrade grade` warms its parent) shares them."""
         p = self.problem
+        if part in ("lagrangian", "eom", "momenta"):  # matched by fingerprints: their arrays
+            with set_aside(p.budget):
+                if part == "lagrangian":
+                    self.lagrangian_fingerprints.values(points)
+                    _ = self.lagrangian_fingerprints.kept
+                elif part == "eom":
+                    _ = self.row_fingerprints.kept
+                else:
+                    for k in range(len(p.jets)):
+                        self.momentum_fingerprints(k)
+            return
         which: dict[str, Callable[[], list]] = {
-            "lagrangian": lambda: [(self.lagrangian, self._el_stack)],
             "T": lambda: [(self.kinetic, self._value_stack)],
             "V": lambda: [(self.potential, self._value_stack)],
-            "momenta": lambda: [(self.momentum(k), self._value_stack) for k in range(len(p.jets))],
-            "eom": lambda: [(self.rows, self._row_stack)],
             "conserved": lambda: [(self.conserved_mutants, self._value_stack)],
             "expression": lambda: [(self.expression_mutants, self._value_stack)],
         }
@@ -484,17 +503,6 @@ class Catalogue:
                     stack_of(mutants, points)
 
     # --- stacks of mutant values, per set of points ----------------------------------------------
-    def _el_stack(self, mutants: Sequence[Mutant], points: Points) -> Stack | None:
-        """The Lagrangian mutants' E, its size, and what c needs (`lagrangian_arrays`)."""
-        return stacked(
-            self.problem.cached,
-            "el-stack",
-            mutants,
-            points,
-            lambda m: self.el_values(self.compiled(m), points),
-            lambda Eb, Sb: lagrangian_arrays(Eb, Sb, points.group),
-        )
-
     def _value_stack(self, mutants: Sequence[Mutant], points: Points) -> Stack | None:
         """The mutants' values and sizes, (mutants, points)."""
         return stacked(
@@ -505,23 +513,6 @@ class Catalogue:
             lambda m: self.values(self.compiled(m), points),
             lambda b, sb: (b, sb),
         )
-
-    def _row_stack(self, pairs: Sequence[tuple[int, Mutant]], points: Points) -> Stack | None:
-        """Per row mutant, the reference rows with its row in place of row i, at every point,
-        reduced to what the span test needs (`span_arrays`)."""
-        p = self.problem
-        ref = p.reference_rows(points)
-
-        def evaluate(pair):
-            i, m = pair
-            rows = self.mutant_rows(m, points)
-            R = ref.coef.astype(float).copy()
-            Rs = ref.size.astype(float).copy()
-            R[:, i, :] = rows.coef[:, 0, :]
-            Rs[:, i] = rows.size[:, 0]
-            return R, Rs
-
-        return stacked(p.cached, "row-stack", pairs, points, evaluate, span_arrays)
 
     # --- helpers ----------------------------------------------------------------------------------
     def compiled(self, m: Mutant) -> Compiled | Combination:

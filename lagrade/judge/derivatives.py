@@ -10,7 +10,7 @@ import numpy as np
 import sympy as sp
 
 from lagrade.judge.compiled import Compiled, to_length
-from lagrade.judge.evaluate import FLOAT
+from lagrade.judge.evaluate import FLOAT, Program, run_hyperdual
 from lagrade.judge.sampling import memo_inputs
 from lagrade.mechanics.lagrange import Jet, t
 
@@ -26,9 +26,13 @@ def _unit_blocks(copies: int, n: int, hot: int, backend):
     return backend.array(arr) if backend is not FLOAT else arr
 
 
-def euler_lagrange_values(L: Compiled, jets: Sequence[Jet], env: Mapping, backend=FLOAT):
+def euler_lagrange_values(
+    L: Compiled, jets: Sequence[Jet], env: Mapping, backend=FLOAT, memo: bool = True
+):
     """E_j = D_t(∂L/∂q̇_j) − ∂L/∂q_j at the points of env, and the size of its terms; both of
     shape (points, coordinates).
+
+    `memo=False` for points seen once (a draw's candidates): their seeds are not kept.
 
     Hyper-dual evaluation: ε₁ is the direction of the motion (∂t = 1, ∂q = q̇, ∂q̇ = q̈), ε₂ is
     ∂/∂q̇_j in copy j and ∂/∂q_j in copy n + j; then D_t ∂L/∂q̇_j is the ε₁ε₂ part of copy j and
@@ -40,7 +44,7 @@ def euler_lagrange_values(L: Compiled, jets: Sequence[Jet], env: Mapping, backen
     for j in jets:
         if j.ddot in L.symbols:
             raise ValueError("a Lagrangian must not contain accelerations")
-    if backend is FLOAT:
+    if backend is FLOAT and memo:
         seeds = memo_inputs("el", env, jets, lambda: _el_seeds(jets, env, env, backend))
     else:
         seeds = _el_seeds(jets, env, L.symbols, backend)
@@ -57,6 +61,31 @@ def euler_lagrange_values(L: Compiled, jets: Sequence[Jet], env: Mapping, backen
             E[:, k] = E[:, k] + dk - ck
             S[:, k] = S[:, k] + abs(dk) + abs(ck)
     return E, S
+
+
+def euler_lagrange_terms(program: Program, jets: Sequence[Jet], env: Mapping):
+    """E_j of each output of `program` separately and its size, (outputs, points, coordinates)
+    each, in float64 from one hyper-dual pass: the Euler–Lagrange values of many terms (a
+    reference's terms and the pieces of its mistakes) for the price of one evaluation."""
+    n_pts = len(next(iter(env.values())))
+    n = len(jets)
+    copies = 2 * n
+    seeds = memo_inputs("el", env, jets, lambda: _el_seeds(jets, env, env, FLOAT))
+    terms = run_hyperdual(program, {s: seeds[s] for s in program.symbols if s in seeds})
+    E = np.zeros((len(terms), n_pts, n))
+    S = np.zeros((len(terms), n_pts, n))
+    for k, term in enumerate(terms):
+        d = to_length(term[3], copies * n_pts).reshape(copies, n_pts)
+        c = to_length(term[2], copies * n_pts).reshape(copies, n_pts)
+        E[k] = (d[:n] - c[n:]).T
+        S[k] = (np.abs(d[:n]) + np.abs(c[n:])).T
+    return E, S
+
+
+def el_seeds(jets: Sequence[Jet], env: Mapping, wanted) -> dict:
+    """The hyper-dual inputs of `euler_lagrange_values` (float64) for the symbols in `wanted`,
+    not memoised: for points seen once."""
+    return _el_seeds(jets, env, wanted, FLOAT)
 
 
 def _el_seeds(jets: Sequence[Jet], env: Mapping, wanted, backend) -> dict:

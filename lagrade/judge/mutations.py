@@ -4,8 +4,10 @@ students write for it, each with the sentence that names the mistake in the stud
 
 from __future__ import annotations
 
+import operator
 from collections.abc import Callable, Iterable, Iterator, Sequence
 from dataclasses import dataclass
+from typing import Any
 
 import sympy as sp
 
@@ -89,7 +91,7 @@ def velocities_in(term: sp.Expr, jets: Sequence[Jet]) -> list[sp.Symbol]:
     return [j.dot for j in jets if term.has(j.dot)]
 
 
-def _factors(term: sp.Expr, parameters: Iterable[sp.Symbol]) -> list[sp.Symbol]:
+def factors_of(term: sp.Expr, parameters: Iterable[sp.Symbol]) -> list[sp.Symbol]:
     """Parameters that multiply the term (not those inside a function's argument)."""
     factors = sp.Mul.make_args(term)
     bases = {f.base if isinstance(f, sp.Pow) else f for f in factors}
@@ -108,63 +110,53 @@ def iter_term_mutants(
     """`term_mutants`, one term at a time (the lazy catalogue stops at the first match)."""
     terms = expanded_terms(expr)
     base = sp.Add(*terms)
-    one, two, half = sp.Integer(1), sp.Integer(2), sp.Rational(1, 2)
     for term in terms:
-        out: list[Mutant] = []
-        shown = plain(term)
-        out.append(
-            Mutant(
-                "wrong_sign",
-                f"the term {shown} in {what} has the wrong sign",
-                base,
-                ((-two, term),),
-                1,
-            )
-        )
-        if term.has(sp.sin) or term.has(sp.cos):
-            swapped = swap_sin_cos(term)
-            if swapped != term:
-                out.append(
-                    Mutant(
-                        "sin_cos_swapped",
-                        f"sin and cos are swapped in the term {shown} of {what}",
-                        base,
-                        ((-one, term), (one, swapped)),
-                        1,
-                    )
-                )
-        for p in _factors(term, parameters):
-            out.append(
-                Mutant(
-                    "missing_factor",
-                    f"the term {shown} in {what} lacks the factor {p}",
-                    base,
-                    ((-one, term), (one, term / p)),
-                    1,
-                )
-            )
-        out.append(
-            Mutant("missing_term", f"{what} lacks the term {shown}", base, ((-one, term),), 1)
-        )
-        out.append(
-            Mutant(
-                "factor_two",
-                f"the term {shown} in {what} is twice too large",
-                base,
-                ((one, term),),
-                1,
-            )
-        )
-        out.append(
-            Mutant(
-                "factor_half",
-                f"the term {shown} in {what} is half what it should be",
-                base,
-                ((-half, term),),
-                1,
-            )
-        )
-        yield from out
+        yield from one_term_mutants(base, term, what, parameters)
+
+
+def one_term_mutants(
+    base: sp.Expr, term: sp.Expr, what: str, parameters: Sequence[sp.Symbol]
+) -> list[Mutant]:
+    """The single-term mistakes of one term of `base` (its expanded sum), with their sentences."""
+    shown = plain(term)
+    return [
+        Mutant(kind, _TERM_MESSAGES[kind].format(t=shown, w=what, p=factor), base, pieces, 1)
+        for kind, pieces, factor in term_specs(term, parameters)
+    ]
+
+
+#: The sentence of each single-term mistake: t the term, w what it is in, p the missing factor.
+_TERM_MESSAGES = {
+    "wrong_sign": "the term {t} in {w} has the wrong sign",
+    "sin_cos_swapped": "sin and cos are swapped in the term {t} of {w}",
+    "missing_factor": "the term {t} in {w} lacks the factor {p}",
+    "missing_term": "{w} lacks the term {t}",
+    "factor_two": "the term {t} in {w} is twice too large",
+    "factor_half": "the term {t} in {w} is half what it should be",
+}
+
+
+def term_specs(
+    term: sp.Expr,
+    parameters: Sequence[sp.Symbol],
+    divide: Callable[[sp.Expr, sp.Symbol], Any] = operator.truediv,
+) -> list[tuple[str, tuple[tuple[sp.Rational, Any], ...], sp.Symbol | None]]:
+    """The single-term mistakes of one term, in catalogue order, as (kind, pieces added to the
+    reference, the parameter factor left out): the wrong sign, sin and cos swapped, without one
+    of its parameter factors, left out, twice or half its size. `divide(term, p)` makes the
+    piece of a term without its factor p (the fingerprints divide its values instead)."""
+    one, two, half = sp.Integer(1), sp.Integer(2), sp.Rational(1, 2)
+    out: list = [("wrong_sign", ((-two, term),), None)]
+    if term.has(sp.sin) or term.has(sp.cos):
+        swapped = swap_sin_cos(term)
+        if swapped != term:
+            out.append(("sin_cos_swapped", ((-one, term), (one, swapped)), None))
+    for p in factors_of(term, parameters):
+        out.append(("missing_factor", ((-one, term), (one, divide(term, p))), p))
+    out.append(("missing_term", ((-one, term),), None))
+    out.append(("factor_two", ((one, term),), None))
+    out.append(("factor_half", ((-half, term),), None))
+    return out
 
 
 def kinetic_mutants(T: sp.Expr, jets: Sequence[Jet], what: str) -> list[Mutant]:
@@ -249,28 +241,47 @@ def iter_momentum_mutants(
     parameters: Sequence[sp.Symbol],
 ) -> Iterator[Mutant]:
     """`momentum_mutants` one at a time, reading `lagrangian_mutants` only as far as needed."""
-    name = jets[k].name
-    what = f"your p_{name}"
-    momenta = system.generalized_momenta
-    for i, j in enumerate(jets):
+    for i in range(len(jets)):
         if i != k:
-            yield (
-                Mutant(
-                    "wrong_coordinate",
-                    f"{what} is the momentum of {j.name} (∂L/∂{j.name}_dot), not of {name}",
-                    momenta[i],
-                )
-            )
-    yield Mutant(
-        "force_not_momentum",
-        f"{what} is ∂L/∂{name}; the momentum is ∂L/∂{name}_dot",
-        system.generalized_forces[k],
-    )
+            yield wrong_coordinate_mutant(system, jets, k, i)
+    yield force_mutant(system, jets, k)
     for m in lagrangian_mutants:
         if m.kind in KINETIC_KINDS:
-            pk = sp.expand(sp.diff(m.expr, jets[k].dot))
-            yield Mutant(m.kind, _momentum_message(m, what, momenta[k], pk), pk)
-    yield from iter_term_mutants(momenta[k], what, parameters)
+            yield lagrangian_momentum_mutant(system, jets, k, m)
+    yield from iter_term_mutants(
+        system.generalized_momenta[k], f"your p_{jets[k].name}", parameters
+    )
+
+
+def wrong_coordinate_mutant(
+    system: LagrangianSystem, jets: Sequence[Jet], k: int, i: int
+) -> Mutant:
+    """p_k given as the momentum of another coordinate, p_i."""
+    name, other = jets[k].name, jets[i].name
+    return Mutant(
+        "wrong_coordinate",
+        f"your p_{name} is the momentum of {other} (∂L/∂{other}_dot), not of {name}",
+        system.generalized_momenta[i],
+    )
+
+
+def force_mutant(system: LagrangianSystem, jets: Sequence[Jet], k: int) -> Mutant:
+    """p_k given as ∂L/∂q_k."""
+    name = jets[k].name
+    return Mutant(
+        "force_not_momentum",
+        f"your p_{name} is ∂L/∂{name}; the momentum is ∂L/∂{name}_dot",
+        system.generalized_forces[k],
+    )
+
+
+def lagrangian_momentum_mutant(
+    system: LagrangianSystem, jets: Sequence[Jet], k: int, m: Mutant
+) -> Mutant:
+    """p_k of the Lagrangian mistake m: ∂L_mut/∂q̇_k."""
+    pk = sp.expand(sp.diff(m.expr, jets[k].dot))
+    what = f"your p_{jets[k].name}"
+    return Mutant(m.kind, _momentum_message(m, what, system.generalized_momenta[k], pk), pk)
 
 
 def _momentum_message(m: Mutant, what: str, right: sp.Expr, wrong: sp.Expr) -> str:
@@ -302,37 +313,55 @@ def iter_equation_mutants(
     (deriving a mutant's equations is the costly step)."""
     E = system.euler_lagrange
     per_monomial: dict[sp.Expr, tuple[sp.Expr, ...]] = {}
-    for i, j in enumerate(jets):
-        what = f"the equation for {j.name}"
-        yield (
-            i,
-            Mutant(
-                "el_sign",
-                f"{what} has d/dt(∂L/∂{j.name}_dot) + ∂L/∂{j.name}; Lagrange's "
-                "equation has a minus sign",
-                E[i],
-                ((sp.Integer(2), system.generalized_forces[i]),),  # D_t p + ∂L/∂q
-            ),
-        )
+    for i in range(len(jets)):
+        yield (i, el_sign_mutant(system, jets, i))
     for m in lagrangian_mutants:
-        if m.kind == "sign_of_V" or m.kind in KINETIC_KINDS:
-            # E is linear in L: E(L_mut) = E(L) + E(L_mut − L), and L_mut − L is a term or
-            # two, so only that is differentiated. Both sides are expanded, so their sum (Add
-            # collects like terms; no expand needed) is the very expression E(L_mut) expands
-            # to (tests/grading/test_diagnose.py holds that).
-            try:
-                change = _linear_euler_lagrange(sp.expand(m.expr - system.L), jets, per_monomial)
-            except Exception:  # noqa: BLE001 - a mutant we cannot differentiate is skipped
-                continue
-            for i, delta in enumerate(change):
-                if delta != 0:
-                    msg = m.message.replace(
-                        "your L", f"the L behind your equation for {jets[i].name}"
-                    )
-                    yield (i, Mutant(m.kind, msg, E[i], ((sp.Integer(1), delta),)))
+        if m.kind in ROW_KINDS:
+            yield from lagrangian_row_mutants(system, jets, m, per_monomial)
     for i, j in enumerate(jets):
         for m in iter_term_mutants(E[i], f"your equation for {j.name}", parameters):
             yield (i, m)
+
+
+#: The kinds of Lagrangian mistakes whose equations of motion the catalogue lists.
+ROW_KINDS = ("sign_of_V", *KINETIC_KINDS)
+
+
+def el_sign_mutant(system: LagrangianSystem, jets: Sequence[Jet], i: int) -> Mutant:
+    """Row i of the Euler–Lagrange equations with the sign of Lagrange's equation flipped:
+    D_t p + ∂L/∂q = E + 2 ∂L/∂q."""
+    name = jets[i].name
+    return Mutant(
+        "el_sign",
+        f"the equation for {name} has d/dt(∂L/∂{name}_dot) + ∂L/∂{name}; Lagrange's "
+        "equation has a minus sign",
+        system.euler_lagrange[i],
+        ((sp.Integer(2), system.generalized_forces[i]),),
+    )
+
+
+def lagrangian_row_mutants(
+    system: LagrangianSystem,
+    jets: Sequence[Jet],
+    m: Mutant,
+    per_monomial: dict[sp.Expr, tuple[sp.Expr, ...]],
+) -> list[tuple[int, Mutant]]:
+    """(row, mutant) for each row the Lagrangian mistake m changes: row i of E(L_mut). E is
+    linear in L: E(L_mut) = E(L) + E(L_mut − L), and L_mut − L is a term or two, so only that
+    is differentiated. Both sides are expanded, so their sum (Add collects like terms; no
+    expand needed) is the very expression E(L_mut) expands to (tests/grading/test_diagnose.py
+    holds that). A mutant we cannot differentiate gives none."""
+    E = system.euler_lagrange
+    try:
+        change = _linear_euler_lagrange(sp.expand(m.expr - system.L), jets, per_monomial)
+    except Exception:  # noqa: BLE001 - a mutant we cannot differentiate is skipped
+        return []
+    out = []
+    for i, delta in enumerate(change):
+        if delta != 0:
+            msg = m.message.replace("your L", f"the L behind your equation for {jets[i].name}")
+            out.append((i, Mutant(m.kind, msg, E[i], ((sp.Integer(1), delta),))))
+    return out
 
 
 def _linear_euler_lagrange(

@@ -29,9 +29,10 @@ from lagrade.errors import LagradeError, ParseError, ReferenceUndefined, Request
 from lagrade.judge.catalogue import Catalogue
 from lagrade.judge.clocks import PREPARE_LIMIT, Budget
 from lagrade.judge.compiled import Compiled, finite_mask
-from lagrade.judge.rows import Rows, equation_rows
+from lagrade.judge.evaluate import FLOAT
+from lagrade.judge.reference import determined_mask, lagrangian_mask
+from lagrade.judge.rows import Rows, equation_rows, lagrangian_rows
 from lagrade.judge.sampling import Points, Space, seed_for
-from lagrade.judge.tolerances import SINGULAR_MASS
 from lagrade.mechanics.domains import Domain
 from lagrade.mechanics.lagrange import Jet, LagrangianSystem, jet, t
 from lagrade.mechanics.scene import SceneVariant
@@ -261,24 +262,10 @@ class Problem:
             if self.variant is None:
                 raise RequestError(NEEDS_BODIES)
             return finite_mask([Compiled.of(x) for x in self.variant.transformation.values()])
-        refs = [self.L, *self.euler_lagrange]
-        mask = finite_mask(refs)
+        # by numbers: one hyper-dual pass over L, not sympy's derived E(L) and mass matrix
         if part in ("eom", "conserved"):
-            n = len(self.jets)
-            A = [Compiled.of(a) for a in self.system.mass_matrix]
-
-            def valid(env):
-                ok = mask(env)
-                k = len(ok)
-                with np.errstate(all="ignore"):
-                    vals = [np.broadcast_to(np.asarray(a.values(env)[0], float), (k,)) for a in A]
-                    M = np.stack(vals, axis=-1).reshape(k, n, n)
-                    det = np.linalg.det(M)
-                    scale = np.prod(np.linalg.norm(M, axis=2), axis=1)
-                return ok & np.isfinite(det) & (np.abs(det) > SINGULAR_MASS * scale)
-
-            return valid
-        return mask
+            return determined_mask(self.L, self.jets)
+        return lagrangian_mask(self.L, self.jets)
 
     # --- cached reference values at points ------------------------------------------------------
     def cached(self, name: str, points: Points, make):
@@ -295,11 +282,26 @@ class Problem:
 
     def reference_rows(self, points: Points) -> Rows:
         """The reference's Euler–Lagrange rows [A | c] at `points`, computed once (the eom and
-        conserved checks and the mistake catalogue read the same)."""
+        conserved checks and the mistake catalogue read the same), by one hyper-dual pass over
+        L (`rows_at` for another arithmetic). A scene with dissipation or given forces has rows
+        that are not L's alone (E_j + ∂F/∂q̇_j − Q_j): its derived rows, compiled."""
+        if self.nonconservative:
+            return self.cached("rows", points, lambda: self.rows_at(points, FLOAT))
         with np.errstate(all="ignore"):
             return self.cached(
-                "rows", points, lambda: equation_rows(self.euler_lagrange, self.jets, points.env)
+                "rows", points, lambda: lagrangian_rows(self.L, self.jets, points.env)
             )
+
+    @property
+    def nonconservative(self) -> bool:
+        """The scene declares dissipation or generalized forces."""
+        return self.variant is not None and self.variant.scene.nonconservative
+
+    def rows_at(self, points: Points, backend) -> Rows:
+        """The reference rows at `points` in `backend`: high precision settles a near tie, and
+        there sympy's derived E(L), compiled, costs a fraction of a hyper-dual pass over L in
+        mpmath (2n copies of every point)."""
+        return equation_rows(self.euler_lagrange, self.jets, points.arrays(backend), backend)
 
 
 # --- building a Problem from a request ------------------------------------------------------------

@@ -29,9 +29,12 @@ class Rows:
     nonlinear: np.ndarray
 
 
-def acceleration_blocks(jets: Sequence[Jet], env: Mapping, backend=FLOAT) -> dict:
-    """env repeated n + 2 times with q̈ = 0, e_1, …, e_n, and the drawn q̈."""
-    if backend is FLOAT:
+def acceleration_blocks(
+    jets: Sequence[Jet], env: Mapping, backend=FLOAT, memo: bool = True
+) -> dict:
+    """env repeated n + 2 times with q̈ = 0, e_1, …, e_n, and the drawn q̈ (kept per points
+    unless `memo=False`, for points seen once)."""
+    if backend is FLOAT and memo:
         return memo_inputs("blocks", env, jets, lambda: _acceleration_blocks(jets, env, FLOAT))
     return _acceleration_blocks(jets, env, backend)
 

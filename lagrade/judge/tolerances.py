@@ -14,6 +14,14 @@ DIFFERENT_ABOVE = 1e-6
 #: The 50-digit decision: equal below this ratio.
 MP_EQUAL_BELOW = 1e-30
 
+#: The mistake catalogue's fingerprints: a mistake whose E is this close to a multiple of the
+#: reference's (relative to its terms) is tested for the same dynamics the symbolic way;
+#: farther ones are different by every test (DIFFERENT_ABOVE, with a margin for sizes summed in
+#: another order) ...
+SAME_DYNAMICS_SUSPECT = 1e-4
+#: ... and this close is the same dynamics by every test (below EQUAL_BELOW).
+SURE_EQUAL = 1e-12
+
 # --- values computed two ways -------------------------------------------------------------------
 
 #: Two float64 values of one quantity computed by different routes (a recovered constant, a
@@ -26,6 +34,10 @@ SAME_FACTOR = 1e-8
 #: What is exactly zero in exact arithmetic reads below this relative size in float64 (an
 #: imaginary part of a real value, a coefficient that cancels, a score that is 1).
 ROUNDING = 1e-12
+
+#: Two mistakes' fingerprints closer than this share of their size are screened as one before
+#: they are compared exactly.
+NEAR_DUPLICATE = 1e-6
 
 # --- linear algebra ------------------------------------------------------------------------------
 
@@ -40,6 +52,13 @@ CONSTANT_GRADIENT = 1e-10
 #: An equation's residual row is zero below this share of its size (an identity, not an
 #: equation of motion).
 ZERO_ROW = 1e-10
+
+#: Normal-mode frequencies agree within this fraction (the reference is scipy's generalized
+#: eigensolver's, in float64).
+SAME_FREQUENCY = 1e-8
+#: A Hamiltonian matches a catalogued mistake within this fraction of its terms' size (the
+#: momenta it is evaluated at are solved in float64, one step more than an L's values).
+H_MATCH = 1e-7
 
 # --- the student's numbers -----------------------------------------------------------------------
 

@@ -21,7 +21,7 @@ from lagrade.judge.evaluate import FLOAT, MP, MP_DIGITS
 from lagrade.judge.mutations import Mutant
 from lagrade.judge.parts.reading import Read
 from lagrade.judge.problem import Problem
-from lagrade.judge.rows import equation_rows
+from lagrade.judge.rows import equation_rows, lagrangian_rows
 from lagrade.judge.sampling import Points
 from lagrade.judge.situation import coordinate_units, rounded, situation, symbol_text
 from lagrade.judge.tolerances import AS_TYPED, SAME_VALUE
@@ -218,7 +218,7 @@ def acceleration_text(
     try:
         with np.errstate(all="ignore"):
             mine = equation_rows([equation], jets, env).coef[0, 0].astype(float)
-            rows = equation_rows(problem.euler_lagrange, jets, env).coef[0].astype(float)
+            rows = lagrangian_rows(problem.L, jets, env).coef[0].astype(float)
             reference = np.linalg.solve(rows[:, :n], -rows[:, n])  # every q̈ of the motion
     except (UnsupportedExpression, np.linalg.LinAlgError):
         return ""

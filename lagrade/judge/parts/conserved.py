@@ -30,7 +30,7 @@ from lagrade.judge.parts.reading import (
     read_lines,
 )
 from lagrade.judge.problem import Problem
-from lagrade.judge.rows import equation_rows, lagrangian_rows, row_rank, solve_accelerations
+from lagrade.judge.rows import lagrangian_rows, row_rank, solve_accelerations
 from lagrade.judge.sampling import Points
 from lagrade.judge.tolerances import CONSTANT_GRADIENT, RANK, ROUNDING
 from lagrade.judge.verdict import Verdict
@@ -43,7 +43,7 @@ def _accelerations(problem: Problem, points: Points):
     def values(backend):
         if backend is FLOAT:
             return acc
-        ref = equation_rows(problem.euler_lagrange, problem.jets, points.arrays(backend), backend)
+        ref = problem.rows_at(points, backend)
         return solve_accelerations(ref, backend)
 
     return values

@@ -36,6 +36,7 @@ from lagrade.judge.parts.reading import Lines, Read, read_lines
 from lagrade.judge.problem import Problem
 from lagrade.judge.rows import equation_rows, row_rank
 from lagrade.judge.sampling import Points
+from lagrade.judge.tolerances import ROUNDING, SAME_VALUE
 from lagrade.judge.verdict import Verdict, invalid
 from lagrade.mechanics import Jet
 
@@ -115,7 +116,7 @@ def check_hamilton_equations(problem: Problem, answer: Any, given: Mapping | Non
             continue
         coef = rows.coef[:, k, :n2].astype(float)
         if np.all(
-            np.abs(coef) <= 1e-12 * np.maximum(rows.size[:, k].astype(float), 1e-300)[:, None]
+            np.abs(coef) <= ROUNDING * np.maximum(rows.size[:, k].astype(float), 1e-300)[:, None]
         ):
             feedback.append(
                 f"{label} holds no rate (q̇ or ṗ); it is not one of Hamilton's equations."
@@ -181,7 +182,7 @@ def _coordinates(problem: Problem) -> str:
 
 def _linear(rows, k: int) -> bool:
     nonlinear = np.abs(rows.nonlinear[:, k].astype(float))
-    return bool(np.all(nonlinear <= 1e-9 * np.maximum(rows.size[:, k].astype(float), 1e-300)))
+    return bool(np.all(nonlinear <= SAME_VALUE * np.maximum(rows.size[:, k].astype(float), 1e-300)))
 
 
 def _holds(problem: Problem, equation: Compiled, points: Points, backend):
@@ -208,9 +209,9 @@ def _sign_slip(problem: Problem, answer: Compiled, points: Points) -> str:
                 flipped = env | {s: -env[s] for s in symbols}
                 value, size = values_at(answer, flipped, points.n)
                 changed = values_at(answer, env, points.n)[0]
-                if np.all(np.abs(value) <= 1e-9 * np.maximum(size, 1e-300)) and not np.allclose(
-                    changed, value
-                ):
+                if np.all(
+                    np.abs(value) <= SAME_VALUE * np.maximum(size, 1e-300)
+                ) and not np.allclose(changed, value):
                     return kind
     except (UnsupportedExpression, ValueError):
         pass

@@ -23,6 +23,7 @@ import numpy as np
 
 from lagrade.judge.compiled import Compiled
 from lagrade.judge.decision import decide
+from lagrade.judge.equivalence import offset_removed
 from lagrade.judge.evaluate import UnsupportedExpression
 from lagrade.judge.parts.common import method_name, where_text, witness_point
 from lagrade.judge.parts.phase import (
@@ -40,11 +41,10 @@ from lagrade.judge.parts.phase import (
 from lagrade.judge.parts.reading import Read
 from lagrade.judge.problem import Problem
 from lagrade.judge.sampling import Points
+from lagrade.judge.tolerances import H_MATCH, SAME_VALUE
 from lagrade.judge.verdict import Verdict
 
 PART = "hamiltonian"
-#: A fingerprint matches when the answer is within this fraction of the terms' size of it.
-MATCH = 1e-7
 
 
 def read_hamiltonian(problem: Problem, answer: Any) -> Read:
@@ -120,8 +120,8 @@ def _residual(
         d = a - b
         if not shifted:
             return d, sa + sb
-        first = d[np.searchsorted(points.group, points.group)]
-        return d - first, sa + sb + abs(first)
+        rest, first = offset_removed(d, points.group)
+        return rest, sa + sb + first
 
     return residual
 
@@ -186,10 +186,9 @@ def _matches(a, sa, f, points: Points) -> bool:
     if not (np.all(np.isfinite(a)) and np.all(np.isfinite(f))):
         return False
     d = a - f
-    first = d[np.searchsorted(points.group, points.group)]
+    rest, first = offset_removed(d, points.group)
     return bool(
-        np.all(np.abs(d) <= MATCH * size)
-        or np.all(np.abs(d - first) <= MATCH * (size + np.abs(first)))
+        np.all(np.abs(d) <= H_MATCH * size) or np.all(np.abs(rest) <= H_MATCH * (size + first))
     )
 
 
@@ -240,7 +239,7 @@ def _fingerprints(problem: Problem, points: Points) -> list[tuple[str, str, Call
             return None
         E = at("E", lambda: problem.kinetic_energy + problem.potential_energy)
         h = energy_function_at(None)
-        return None if np.allclose(E, h, rtol=1e-9, atol=0) else E
+        return None if np.allclose(E, h, rtol=SAME_VALUE, atol=0) else E
 
     p_names = ", ".join(s.name for s in momentum_symbols(problem))
     return [

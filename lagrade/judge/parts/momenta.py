@@ -129,7 +129,7 @@ def check_momenta(problem: Problem, answer: Any, given: Mapping | None) -> Verdi
             continue
         any_wrong, follows_all = True, False
         witness = witness or witness_point(points, out, ans)
-        mutant = problem.catalogue.match_plain(problem.catalogue.momentum(k), ans, points)
+        mutant = problem.catalogue.match_momentum(k, ans, points)
         if mutant is not None:
             feedback.append(as_sentence(mutant.message))
             mistakes.append(mutant.kind)

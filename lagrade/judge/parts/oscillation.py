@@ -35,12 +35,10 @@ from lagrade.judge.parts.reading import Lines, Read, read, read_labelled, read_l
 from lagrade.judge.problem import Problem
 from lagrade.judge.sampling import Points, seed_for
 from lagrade.judge.situation import rounded
+from lagrade.judge.tolerances import ROUNDING, SAME_FREQUENCY
 from lagrade.judge.verdict import Verdict, invalid
 from lagrade.mechanics import SmallOscillations, frequencies_from
 from lagrade.mechanics.oscillations import ZERO_MODE, deciding_values, generalized_eigenvalues
-
-#: Frequencies agree within this fraction (the reference is scipy's eigensolver's, in float64).
-RTOL = 1e-8
 
 
 def oscillations(problem: Problem) -> SmallOscillations:
@@ -302,7 +300,7 @@ def check_normal_modes(problem: Problem, answer: Any, given: Mapping | None) -> 
         except UnsupportedExpression as error:
             return invalid("normal_modes", f"Cannot evaluate your answer: {error}.", lines.echoes)
         value = np.asarray(value, dtype=complex)
-        if np.all(np.abs(value) <= 1e-12 * top[:, 0]):
+        if np.all(np.abs(value) <= ROUNDING * top[:, 0]):
             if zero_modes:
                 continue  # ω = 0 of a zero mode: true, and not required
             feedback.append(f"{got.echo}: this system has no zero mode; every mode oscillates.")
@@ -357,7 +355,7 @@ def _mode(value: np.ndarray, ref: np.ndarray, modes: list[int], used: np.ndarray
             (
                 k
                 for k in modes
-                if not used[i, k] and abs(value[i] - ref[i, k]) <= RTOL * abs(ref[i, k])
+                if not used[i, k] and abs(value[i] - ref[i, k]) <= SAME_FREQUENCY * abs(ref[i, k])
             ),
             None,
         )
@@ -383,7 +381,7 @@ def _slip(value: np.ndarray, ref: np.ndarray, modes: list[int]) -> str:
     ):
         for k in modes:
             target = f(ref[:, k])
-            if np.all(np.abs(value - target) <= RTOL * np.abs(target)):
+            if np.all(np.abs(value - target) <= SAME_FREQUENCY * np.abs(target)):
                 return kind
     return ""
 

@@ -1,0 +1,200 @@
+"""Where the judging loop of a cold batch spends its CPU time, phase by phase, for one or more
+lagrade trees side by side (each in its own process, interleaved).
+
+The batch is bench_batch's (`batch_corpus.build_batch`). Each tree's process imports lagrade,
+then judges every request in order in that one process (`check_request`, as a `--jobs 1` worker
+does, with the catalogue built whole for a question-part of many answers as `run_batch` marks
+it), while a CPU-time sampler (ITIMER_PROF, every `--interval` ms) looks at the Python stack.
+A sample goes to the phase of the outermost lagrade module on the stack that names one:
+
+  diagnosis   the mistake catalogue: catalogue, mutations, keepers, lazylist, matching,
+              fingerprints (mutants built, differentiated, compiled; a wrong answer matched)
+  decision    deciding by residuals: decision, rows, equivalence, exact, derivatives, adaptive
+  reference   the reference and its points: problem, sampling, mechanics (sympy derivations)
+  reading     reading answers: notation, parts/reading, parts/items
+  other       everything else in the loop (checkers' glue, caches, verdicts)
+
+Usage: python benchmarks/phases.py [TREE ...] [--repeat N] [--interval MS] [--limit N]
+       [--corpus batch|grading]
+(no TREE: this tree). Each tree runs with its own interpreter when it has a .venv.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+
+PHASES = {
+    "diagnosis": (
+        "lagrade/judge/catalogue.py",
+        "lagrade/judge/mutations.py",
+        "lagrade/judge/keepers.py",
+        "lagrade/judge/lazylist.py",
+        "lagrade/judge/matching.py",
+        "lagrade/judge/fingerprints.py",
+        "lagrade/judge/row_fingerprints.py",
+    ),
+    "decision": (
+        "lagrade/judge/decision.py",
+        "lagrade/judge/rows.py",
+        "lagrade/judge/equivalence.py",
+        "lagrade/judge/exact.py",
+        "lagrade/judge/derivatives.py",
+        "lagrade/judge/adaptive.py",
+    ),
+    "reference": (
+        "lagrade/judge/problem.py",
+        "lagrade/judge/sampling.py",
+        "lagrade/judge/reference.py",
+        "lagrade/mechanics/",
+        "lagrade/bank/",
+    ),
+    "reading": (
+        "lagrade/notation/",
+        "lagrade/judge/parts/reading.py",
+        "lagrade/judge/parts/items.py",
+    ),
+}
+ORDER = ("diagnosis", "decision", "reference", "reading", "other")
+
+# The child: judge the batch in-process under a stack sampler; print the samples per phase.
+_CHILD = r"""
+import json, resource, signal, sys, time
+sys.path.insert(0, sys.argv[1] + "/benchmarks")
+PHASES = json.loads(sys.argv[2])
+interval = float(sys.argv[3]) / 1e3
+limit = int(sys.argv[4])
+corpus = sys.argv[5]
+if corpus == "grading":
+    from compare_feedback import grading_requests
+    bodies = grading_requests()
+else:
+    from batch_corpus import build_batch
+    bodies = [r.body for r in build_batch(13)]
+import importlib; check = importlib.import_module("lagrade.judge.check")
+bodies = bodies[: limit or None]
+work = [(i, ({k: v for k, v in b.items() if k != "id"}, 2.0)) for i, b in enumerate(bodies)]
+work = check._diagnose_early(work)
+
+cache = {}
+counts = {k: 0 for k in list(PHASES) + ["other"]}
+
+def phase_of(code):
+    name = code.co_filename
+    hit = cache.get(name)
+    if hit is None:
+        hit = ""
+        for phase, paths in PHASES.items():
+            if any(p in name for p in paths):
+                hit = phase
+                break
+        cache[name] = hit
+    return hit
+
+def sample(signum, frame):
+    found = "other"
+    f = frame
+    while f is not None:  # innermost to outermost: the last match is the outermost
+        p = phase_of(f.f_code)
+        if p:
+            found = p
+        f = f.f_back
+    counts[found] += 1
+
+signal.signal(signal.SIGPROF, sample)
+cpu0 = time.process_time()
+signal.setitimer(signal.ITIMER_PROF, interval, interval)
+verdicts = []
+for _, item in work:
+    request = {"id": 0, **item[0]}
+    try:
+        v = check.check_request(request, item[1], *(item[2:]))
+        verdicts.append(v.verdict)
+    except Exception as e:
+        verdicts.append("refused")
+signal.setitimer(signal.ITIMER_PROF, 0, 0)
+cpu = time.process_time() - cpu0
+print(json.dumps({"counts": counts, "cpu": cpu, "n": len(work), "verdicts": verdicts}))
+"""
+
+
+def interpreter(tree: Path) -> str:
+    own = tree / ".venv" / "bin" / "python"
+    return str(own) if own.exists() else sys.executable
+
+
+def run(tree: Path, interval: float, limit: int, corpus: str) -> dict:
+    env = {**os.environ, "PYTHONPATH": str(tree)}
+    done = subprocess.run(
+        [
+            interpreter(tree),
+            "-c",
+            _CHILD,
+            str(ROOT),
+            json.dumps(PHASES),
+            str(interval),
+            str(limit),
+            corpus,
+        ],
+        env=env,
+        cwd="/",
+        capture_output=True,
+        text=True,
+    )
+    if done.returncode:
+        raise SystemExit(f"{tree}: {done.stderr[-3000:]}")
+    return json.loads(done.stdout.splitlines()[-1])
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("trees", nargs="*", type=Path)
+    parser.add_argument("--repeat", type=int, default=1, help="runs per tree (interleaved)")
+    parser.add_argument("--interval", type=float, default=1.0, help="sampling period, ms")
+    parser.add_argument("--limit", type=int, default=0, help="only the first N requests")
+    parser.add_argument(
+        "--corpus",
+        choices=("batch", "grading"),
+        default="batch",
+        help="bench_batch's cold batch, or compare_feedback's grading corpus",
+    )
+    args = parser.parse_args()
+    trees = [t.resolve() for t in args.trees] or [ROOT]
+    runs: dict[Path, list[dict]] = {t: [] for t in trees}
+    for _ in range(args.repeat):
+        for tree in trees:
+            runs[tree].append(run(tree, args.interval, args.limit, args.corpus))
+    header = f"{'phase':12}" + "".join(f"{str(t)[-24:]:>34}" for t in trees)
+    print(header)
+    rows = {}
+    for tree in trees:
+        rs = runs[tree]
+        cpu = sorted(r["cpu"] for r in rs)[len(rs) // 2]
+        counts = {k: sum(r["counts"][k] for r in rs) for k in ORDER}
+        total = sum(counts.values()) or 1
+        rows[tree] = {k: (counts[k] / total, counts[k] / total * cpu) for k in ORDER}
+        rows[tree]["cpu"] = cpu
+    for k in ORDER:
+        print(
+            f"{k:12}"
+            + "".join(f"{rows[t][k][1]:>22.2f} s {100 * rows[t][k][0]:>6.1f} %" for t in trees)
+        )
+    print(f"{'total CPU':12}" + "".join(f"{rows[t]['cpu']:>22.2f} s {'':>8}" for t in trees))
+    n = runs[trees[0]][0]["n"]
+    print(f"requests: {n}")
+    if len(trees) > 1:
+        base = runs[trees[0]][0]["verdicts"]
+        for tree in trees[1:]:
+            other = runs[tree][0]["verdicts"]
+            changed = sum(a != b for a, b in zip(base, other, strict=True))
+            print(f"verdict changes {trees[0].name} → {tree.name}: {changed}")
+
+
+if __name__ == "__main__":
+    main()
