@@ -1,5 +1,5 @@
 """`python -m lagrade` is the `lagrade` command."""
 
-from lagrade.cli.main import entry
+from lagrade.cli import entry
 
 entry()

@@ -30,10 +30,17 @@ from typing import Any
 import lagrade.untrusted as untrusted
 from lagrade.assign.phase_solution import PHASE_PARTS, can_ask_scene
 from lagrade.assign.solution import solution_data
-from lagrade.bank.registry import find_scene, get_scene, is_scene_path, scene_ids
-from lagrade.bank.scenefile import scene_from_text, scene_id_of, sha256
+from lagrade.bank import (
+    find_scene,
+    get_scene,
+    is_scene_path,
+    scene_from_text,
+    scene_id_of,
+    scene_ids,
+    sha256,
+)
 from lagrade.errors import AssignmentError, LagradeError, UnreadableInput
-from lagrade.mechanics.scene import LAGRANGIAN_PARTS, Scene
+from lagrade.mechanics import LAGRANGIAN_PARTS, Scene
 
 #: The parts of the five-step method, in the order a handout asks them.
 PARTS: tuple[str, ...] = (

@@ -14,10 +14,16 @@ from typing import Any
 
 import sympy as sp
 
-from lagrade.mechanics import NotQuadratic, momentum_name, variant_oscillations
-from lagrade.mechanics.scene import Scene, SceneVariant
+from lagrade.mechanics import (
+    NotQuadratic,
+    Scene,
+    SceneVariant,
+    momentum_name,
+    phase_space,
+    variant_oscillations,
+)
+from lagrade.notation import key_answer
 from lagrade.notation import printer as rm
-from lagrade.notation.keys import key_answer
 
 #: The parts on phase space and about small oscillations, in the order a handout asks them.
 PHASE_PARTS = ("hamiltonian", "hamilton_equations", "equilibrium", "normal_modes")
@@ -38,7 +44,7 @@ def can_ask(variant: SceneVariant, part: str) -> str | None:
     """Why `part` cannot be asked of this variant (no stable equilibrium, H without a closed
     form), or None."""
     try:
-        variant.system.phase_space.velocity_matrix  # noqa: B018 - raises NotQuadratic
+        phase_space(variant.system).velocity_matrix  # noqa: B018 - raises NotQuadratic
     except NotQuadratic as error:
         return str(error)
     if part in ("equilibrium", "normal_modes"):
@@ -76,7 +82,7 @@ def _phase_solution(scene: Scene, names: tuple, options: tuple, values: tuple) -
     why = can_ask(v, "hamiltonian")
     if why is not None:
         return out | {"phase_why_not": why}
-    hs = v.system.phase_space
+    hs = phase_space(v.system)
     out["hamiltonian"] = rm.equation(sp.Symbol("H"), hs.hamiltonian, phase_names)
     out["hamilton_equations"] = [
         rm.equation(e.lhs, e.rhs, phase_names) for e in hs.hamilton_equations
@@ -104,7 +110,7 @@ def phase_data(variant: SceneVariant) -> dict[str, Any]:
     why = can_ask(variant, "hamiltonian")
     if why is not None:
         return {"hamiltonian": None, "why_not": why}
-    hs = variant.system.phase_space
+    hs = phase_space(variant.system)
     osc = variant_oscillations(variant)
     data: dict[str, Any] = {
         "hamiltonian": text(hs.hamiltonian),

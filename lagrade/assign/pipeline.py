@@ -24,7 +24,7 @@ from lagrade.assign.roster import Student
 from lagrade.assign.variants import VariantChoice, student_variants
 from lagrade.assign.views import figure_name, presentation, problem_view, symbolic_solution
 from lagrade.errors import AssignmentError, UnreadableInput
-from lagrade.mechanics.scene import SceneVariant
+from lagrade.mechanics import SceneVariant
 
 #: Progress callback: (steps done, steps in all, what is being done).
 Progress = Callable[[int, int, str], None]

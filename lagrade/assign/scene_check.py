@@ -16,11 +16,9 @@ from pathlib import Path
 
 from lagrade.assign.figures import FigureError, draw
 from lagrade.assign.solution import solution_text
-from lagrade.bank.scenefile import read_scene_file
-from lagrade.bank.scenefile.claims import check_claim
-from lagrade.bank.scenefile.template import template
+from lagrade.bank import check_claim, read_scene_file, template
 from lagrade.errors import AssignmentError, LagradeError
-from lagrade.mechanics.scene import Scene, SceneVariant
+from lagrade.mechanics import Scene, SceneVariant
 
 #: Beyond this many combinations of options, quantities are checked in each choice, not each
 #: combination (the product of every option's choices).
@@ -119,7 +117,7 @@ def _draw_figures(scene: Scene, presentations: list[dict], out: Path, report: Sc
 def new_scene_file(name: str, out: str | Path | None = None) -> Path:
     """Write the commented template of a scene file as `<name>.toml` (in folder `out`, default
     the current one); never over an existing file."""
-    from lagrade.bank.scenefile import SCENE_ID
+    from lagrade.bank import SCENE_ID
 
     if not SCENE_ID.match(name):
         raise AssignmentError(

@@ -10,8 +10,8 @@ from typing import Any
 import sympy as sp
 
 from lagrade.assign.phase_solution import phase_data, phase_lines
-from lagrade.mechanics.scene import SceneVariant
-from lagrade.notation.printer import symbol_names
+from lagrade.mechanics import SceneVariant
+from lagrade.notation import symbol_names
 
 
 def expression_text(expr: sp.Expr) -> str:

@@ -8,9 +8,8 @@ from __future__ import annotations
 
 from typing import Any
 
+from lagrade.mechanics import SceneVariant, momentum_name
 from lagrade.mechanics import lagrange as mech
-from lagrade.mechanics.hamilton import momentum_name
-from lagrade.mechanics.scene import SceneVariant
 
 #: Parts whose answers are formulas in the coordinates: which time derivatives they may contain.
 _ORDERS = {

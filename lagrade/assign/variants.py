@@ -18,7 +18,7 @@ from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 
 from lagrade.assign.assignment import Problem
-from lagrade.mechanics.scene import Scene, SceneVariant
+from lagrade.mechanics import Scene, SceneVariant
 
 #: Candidate seeds tried per wanted variant before the pool is taken as exhausted.
 _TRIES_PER_VARIANT = 40

@@ -23,15 +23,9 @@ from lagrade.assign.templating import toml_literal
 from lagrade.assign.tidy import tidy
 from lagrade.assign.units import Number, unit_formats
 from lagrade.assign.variants import VariantChoice
-from lagrade.mechanics.scene import (
-    LAGRANGIAN_PARTS,
-    RigidBody,
-    Scene,
-    SceneVariant,
-    SpatialRigidBody,
-)
+from lagrade.mechanics import LAGRANGIAN_PARTS, RigidBody, Scene, SceneVariant, SpatialRigidBody
+from lagrade.notation import key_answer
 from lagrade.notation import printer as rm
-from lagrade.notation.keys import key_answer
 
 #: Formulas in prompts are held together: no-break spaces round the signs, and a minus sign
 #: (U+2212), not a hyphen, so that no line is broken inside "DOF = 3N − k" or "L = T − V".

@@ -12,7 +12,7 @@ from pathlib import Path
 
 from lagrade.bank.scenefile import read_scene_file
 from lagrade.errors import UnknownSceneError
-from lagrade.mechanics.scene import Scene
+from lagrade.mechanics import Scene
 
 #: The folder of the bank's scene files, inside the installed package.
 BANK = Path(__file__).parent / "scenes"

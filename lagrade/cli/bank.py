@@ -7,7 +7,7 @@ import argparse
 
 
 def bank_list(args: argparse.Namespace) -> int:
-    from lagrade.bank.listing import list_scenes
+    from lagrade.bank import list_scenes
 
     rows, problems = list_scenes(args.paths)
     for sid, title, coordinates in rows:
@@ -21,7 +21,7 @@ def bank_list(args: argparse.Namespace) -> int:
 
 def bank_show(args: argparse.Namespace) -> int:
     from lagrade.assign import solution as export
-    from lagrade.bank.registry import find_scene
+    from lagrade.bank import find_scene
     from lagrade.judge import deriving
 
     render = {

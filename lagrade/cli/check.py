@@ -20,7 +20,7 @@ from lagrade.cli.arguments import count, seconds
 from lagrade.errors import RequestError
 
 if TYPE_CHECKING:
-    from lagrade.judge.verdict import Verdict
+    from lagrade.judge import Verdict
 
 #: `lagrade.judge.parts.PARTS`, by name (tests/cli/test_startup.py pins the two equal).
 PART_NAMES = (
@@ -72,10 +72,10 @@ def check_batch_file(
     of workers, so memory stays bounded whatever the batch's size; with `dask`, by the workers
     of a Dask cluster (`lagrade.grading.cluster`). Returns (exit status, the summary line to
     print: empty when the results went to standard output)."""
-    import lagrade.grading.atomic as atomic
+    from lagrade.grading import atomic
 
     if dask is not None:  # a cluster that cannot be used stops the run before it starts
-        from lagrade.grading.cluster import require
+        from lagrade.grading import require
 
         require(dask, jobs)
     source = sys.stdin.buffer if str(requests) == "-" else _open_requests(Path(requests))
@@ -106,14 +106,14 @@ def _judged(
     """The results of the requests in `source`, in order, a round at a time: by this machine's
     pool, or by a Dask cluster's workers."""
     if dask is None:
-        from lagrade.judge.check import check_pool, run_batch
+        from lagrade.judge import check_pool, run_batch
 
         pool = stack.enter_context(check_pool(jobs))
         for first_line, chunk in _chunks(source):
             yield run_batch(chunk, time_limit=time_limit, pool=pool, first_line=first_line)
         return
-    from lagrade.assign.manifest import project_version
-    from lagrade.grading.cluster import check_on_cluster
+    from lagrade.assign import project_version
+    from lagrade.grading import check_on_cluster
 
     records = untrusted.split_records(source)
     version = project_version()
@@ -286,8 +286,7 @@ def run_check_command(args: argparse.Namespace) -> tuple[int, str]:
         return check_batch_file(
             args.batch, args.out, time_limit=args.time_limit, jobs=args.jobs, dask=args.dask
         )
-    from lagrade.judge.check import check
-    from lagrade.judge.problem import build_problem
+    from lagrade.judge import build_problem, check
 
     if args.dask is not None:
         raise RequestError("--dask is for --batch REQUESTS.jsonl; one answer is checked here")

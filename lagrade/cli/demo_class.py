@@ -18,17 +18,11 @@ from typing import Any
 
 import sympy as sp
 
-import lagrade.grading.atomic as atomic
-from lagrade.assign.generate import generate
-from lagrade.assign.solution import latex_symbol_names
-from lagrade.assign.templating import toml_string
-from lagrade.grading.batch import BatchSummary, grade
-from lagrade.grading.manifest import entry_variant
-from lagrade.grading.student import question
-from lagrade.judge.key import key_answer
-from lagrade.judge.verify import verify_variant
-from lagrade.mechanics.scene import SceneVariant
-from lagrade.notation.printer import plain
+from lagrade.assign import generate, latex_symbol_names, toml_string
+from lagrade.grading import BatchSummary, atomic, entry_variant, grade, question
+from lagrade.judge import key_answer, verify_variant
+from lagrade.mechanics import SceneVariant, phase_space
+from lagrade.notation import plain
 
 ASSIGNMENT = """\
 # The demo assignment: `lagrade demo` writes it, generates handouts from it and grades against it.
@@ -242,7 +236,7 @@ def _answers(
                 planted.append(f"{key}: every coordinate")
             answers[key] = ", ".join(cyclic) or "none"
         elif name == "hamiltonian":
-            H = system.phase_space.hamiltonian
+            H = phase_space(system).hamiltonian
             if mistake:  # H in the velocities: the energy function h, not yet in the momenta
                 H = system.energy_function
                 planted.append(f"{key}: H in the velocities")

@@ -14,10 +14,10 @@ from lagrade.errors import AssignmentError, LagradeError
 def run(args: argparse.Namespace) -> int:
     if args.system == "gradescope":
         return _gradescope(args)
-    from lagrade.grading.manifest import carried_scene_texts
-    from lagrade.grading.prairielearn import (
+    from lagrade.grading import (
         QUESTIONS,
         SERVER_FILES,
+        carried_scene_texts,
         export_prairielearn,
         info_json,
         vendored_folder,
@@ -50,7 +50,7 @@ def run(args: argparse.Namespace) -> int:
 
 
 def _gradescope(args: argparse.Namespace) -> int:
-    from lagrade.grading.gradescope import export_gradescope
+    from lagrade.grading import export_gradescope
 
     out = export_gradescope(Path(args.source), args.out, trust_sheet=args.trust_sheet)
     print(

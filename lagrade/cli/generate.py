@@ -8,7 +8,7 @@ from pathlib import Path
 
 
 def run(args: argparse.Namespace) -> int:
-    from lagrade.assign.generate import generate
+    from lagrade.assign import generate
     from lagrade.cli.progress import ProgressBar
     from lagrade.judge import deriving, verify_variant
 

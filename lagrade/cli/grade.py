@@ -9,7 +9,7 @@ from typing import TYPE_CHECKING
 from lagrade.cli.arguments import count, seconds
 
 if TYPE_CHECKING:
-    from lagrade.grading.batch import BatchSummary
+    from lagrade.grading import BatchSummary
 
 #: Stray files named one by one in the printed summary; summary.md lists them all.
 SHOWN_STRAY = 20
@@ -55,16 +55,13 @@ def summary_table(summary: BatchSummary) -> str:
 
 def run(args: argparse.Namespace) -> int:
     from lagrade.cli.progress import ProgressBar
-    from lagrade.grading.batch import grade
-    from lagrade.grading.gradebooks import export_file_name, readme_file_name
-    from lagrade.grading.lms import ExportOptions
+    from lagrade.grading import ExportOptions, export_file_name, grade, readme_file_name
 
     kinds = tuple(dict.fromkeys(k for k in args.export if k != "csv"))
     options = ExportOptions(args.canvas_assignment_id, args.missing_as_zero)
     as_of = None
     if args.as_of is not None:
-        from lagrade.grading.answer_page.due import as_of_instant
-        from lagrade.grading.instants import shown
+        from lagrade.grading import as_of_instant, shown
 
         as_of = as_of_instant(args.as_of, args.manifest)
         print(f"grading as of {shown(as_of)}: each student's last save at or before it")

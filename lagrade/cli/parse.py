@@ -21,8 +21,8 @@ def preview_command(
     A malformed vocabulary (a coordinate name that is not a name) raises RequestError.
     """
     from lagrade.errors import ParseError
-    from lagrade.mechanics.lagrange import DDOT, DOT
-    from lagrade.notation.parse import Vocabulary, parse_answer
+    from lagrade.mechanics import DDOT, DOT
+    from lagrade.notation import Vocabulary, parse_answer
 
     vocabulary = Vocabulary.from_names(coordinates, list(parameters), allow_primes=allow_primes)
     try:

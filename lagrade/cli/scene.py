@@ -8,7 +8,7 @@ from pathlib import Path
 
 
 def scene_check(args: argparse.Namespace) -> int:
-    from lagrade.assign.scene_check import check_scene_file
+    from lagrade.assign import check_scene_file
     from lagrade.judge import deriving
 
     # the whole check is the scene's derivation (in every presentation): one limit for it
@@ -22,7 +22,7 @@ def scene_check(args: argparse.Namespace) -> int:
 
 
 def scene_new(args: argparse.Namespace) -> int:
-    from lagrade.assign.scene_check import new_scene_file
+    from lagrade.assign import new_scene_file
 
     path = new_scene_file(args.name, args.out)
     print(f"wrote {path}: edit it, then run `lagrade scene check {path}` (format: docs/scenes.md)")

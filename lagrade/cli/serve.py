@@ -14,12 +14,16 @@ from lagrade.errors import OutputError, RequestError
 def run(args: argparse.Namespace) -> int:
     import uvicorn
 
-    import lagrade.grading.atomic as atomic
-    from lagrade.grading.answer_page.app import make_app
-    from lagrade.grading.answer_page.deadlines import ReadDeadlines
-    from lagrade.grading.answer_page.room import build_classroom
-    from lagrade.grading.answer_page.tokens import SECRET_NAME, links_csv, load_or_create_secret
-    from lagrade.grading.manifest import load_manifest
+    from lagrade.grading import (
+        SECRET_NAME,
+        ReadDeadlines,
+        atomic,
+        build_classroom,
+        links_csv,
+        load_manifest,
+        load_or_create_secret,
+        make_app,
+    )
 
     if not 0 <= args.port <= 65535:
         raise RequestError(f"--port {args.port} is not a port number (0 to 65535)")
@@ -66,7 +70,7 @@ def _announce(
     host, port = listener.getsockname()[:2]
     print(f"Answer pages for {students} students of {title!r}")
     print(f"  listening on http://{_url_host(host)}:{port}/  (links use {base_url}/s/<token>)")
-    from lagrade.grading.savelog import LOG_NAME
+    from lagrade.grading import LOG_NAME
 
     print(
         f"  sheets are saved to {args.submissions}/<id>.toml, every save logged in "
@@ -80,7 +84,7 @@ def _announce(
 
 def _due_line(due) -> str:
     """What the page does about the due date, for the instructor who starts the server."""
-    from lagrade.grading.instants import shown
+    from lagrade.grading import shown
 
     if due.unread:
         return f"not kept ({due.unread}); saves are accepted at any time"

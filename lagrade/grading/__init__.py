@@ -7,14 +7,80 @@ the reports, templates and charts (about 65 ms of start-up)."""
 
 from __future__ import annotations
 
+from importlib import import_module
 from typing import Any
 
-__all__ = ["BatchSummary", "grade"]
+#: Each exported name, by the module that defines it (a module exported as a whole: its own
+#: name). Loaded on first use, so that importing the layer costs nothing it does not use.
+_EXPORTS = {
+    "as_of_instant": "lagrade.grading.answer_page.due",
+    "atomic": "lagrade.grading.atomic",  # the module
+    "BatchSummary": "lagrade.grading.batch",
+    "build_classroom": "lagrade.grading.answer_page.room",
+    "carried_scene_texts": "lagrade.grading.manifest",
+    "check_on_cluster": "lagrade.grading.cluster.checking",
+    "entry_variant": "lagrade.grading.manifest",
+    "export_file_name": "lagrade.grading.gradebooks",
+    "export_gradescope": "lagrade.grading.gradescope",
+    "export_prairielearn": "lagrade.grading.prairielearn",
+    "ExportOptions": "lagrade.grading.lms",
+    "grade": "lagrade.grading.batch",
+    "info_json": "lagrade.grading.prairielearn",
+    "links_csv": "lagrade.grading.answer_page.tokens",
+    "load_manifest": "lagrade.grading.manifest",
+    "load_or_create_secret": "lagrade.grading.answer_page.tokens",
+    "LOG_NAME": "lagrade.grading.savelog",
+    "make_app": "lagrade.grading.answer_page.app",
+    "question": "lagrade.grading.student",
+    "QUESTIONS": "lagrade.grading.prairielearn",
+    "ReadDeadlines": "lagrade.grading.answer_page.deadlines",
+    "readme_file_name": "lagrade.grading.gradebooks",
+    "require": "lagrade.grading.cluster.connect",
+    "SECRET_NAME": "lagrade.grading.answer_page.tokens",
+    "SERVER_FILES": "lagrade.grading.prairielearn",
+    "shown": "lagrade.grading.instants",
+    "vendored_folder": "lagrade.grading.prairielearn",
+}
+#: The modules exported as a whole.
+_MODULES = {"atomic"}
+
+__all__ = [
+    "as_of_instant",
+    "atomic",
+    "BatchSummary",
+    "build_classroom",
+    "carried_scene_texts",
+    "check_on_cluster",
+    "entry_variant",
+    "export_file_name",
+    "export_gradescope",
+    "export_prairielearn",
+    "ExportOptions",
+    "grade",
+    "info_json",
+    "links_csv",
+    "load_manifest",
+    "load_or_create_secret",
+    "LOG_NAME",
+    "make_app",
+    "question",
+    "QUESTIONS",
+    "ReadDeadlines",
+    "readme_file_name",
+    "require",
+    "SECRET_NAME",
+    "SERVER_FILES",
+    "shown",
+    "vendored_folder",
+]
 
 
 def __getattr__(name: str) -> Any:
-    if name in __all__:
-        from lagrade.grading import batch
-
-        return getattr(batch, name)
-    raise AttributeError(f"module 'lagrade.grading' has no attribute {name!r}")
+    if name in _MODULES:
+        value = import_module(_EXPORTS[name])
+    elif name in _EXPORTS:
+        value = getattr(import_module(_EXPORTS[name]), name)
+    else:
+        raise AttributeError(f"module 'lagrade.grading' has no attribute {name!r}")
+    globals()[name] = value
+    return value

@@ -27,15 +27,14 @@ import lagrade.grading.gradebooks as gradebooks
 import lagrade.grading.report as report
 import lagrade.grading.savelog as savelog
 import lagrade.grading.submission as submission
-from lagrade.assign.manifest import project_version
+from lagrade.assign import project_version
 from lagrade.errors import AssignmentError, LagradeError
 from lagrade.grading.instants import shown
 from lagrade.grading.manifest import load_manifest
 from lagrade.grading.rubric import Rubric, load_rubric
 from lagrade.grading.student import grade_student, judge_sheets, warm_up
 from lagrade.grading.submission import find_submission
-from lagrade.judge.driver import forget_problems
-from lagrade.judge.worker import Limits, Outcome, Pool
+from lagrade.judge import Limits, Outcome, Pool, forget_problems
 
 STATUSES = ("graded", "missing", "invalid", "timeout", "error")
 

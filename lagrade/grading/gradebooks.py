@@ -17,7 +17,7 @@ from pathlib import Path
 from typing import Any
 
 import lagrade.grading.atomic as atomic
-from lagrade.assign.assignment import assignment_table
+from lagrade.assign import assignment_table
 from lagrade.errors import AssignmentError, LagradeError
 from lagrade.grading.canvas import canvas_gradebook
 from lagrade.grading.lms import ExportOptions, LmsFile

@@ -9,7 +9,7 @@ from __future__ import annotations
 import functools
 import re
 
-from lagrade.notation.latex import COMMANDS
+from lagrade.notation import COMMANDS
 
 #: The escapes TOML and JSON share that turn a backslash and a letter into a control character.
 _ESCAPES = {"\b": "b", "\t": "t", "\n": "n", "\f": "f", "\r": "r"}

@@ -17,10 +17,9 @@ from pathlib import Path
 from typing import Any
 
 import lagrade.untrusted as untrusted
-from lagrade.bank.registry import get_scene, is_bank_scene
-from lagrade.bank.scenefile import scene_from_text, sha256
+from lagrade.bank import get_scene, is_bank_scene, scene_from_text, sha256
 from lagrade.errors import AssignmentError, LagradeError
-from lagrade.mechanics.scene import Scene, SceneVariant
+from lagrade.mechanics import Scene, SceneVariant
 
 FORMAT = "lagrade-manifest/1"
 #: A manifest for a class of a thousand is a few megabytes.

@@ -30,9 +30,15 @@ from typing import Any
 
 import lagrade.grading.atomic as atomic
 import lagrade.untrusted as untrusted
-from lagrade.assign.assignment import Assignment, Part, Problem, load_assignment
-from lagrade.assign.variants import VariantChoice, build_pool
-from lagrade.assign.views import MULTILINE
+from lagrade.assign import (
+    MULTILINE,
+    Assignment,
+    Part,
+    Problem,
+    VariantChoice,
+    build_pool,
+    load_assignment,
+)
 from lagrade.errors import AssignmentError
 
 # Questions exported before the runtime had a module of its own call these names here.

@@ -29,9 +29,7 @@ from collections.abc import Mapping, MutableMapping
 from typing import Any
 
 import lagrade.grading.resume as resume
-from lagrade.judge.clocks import PREPARE_LIMIT
-from lagrade.judge.verdict import is_unreadable_line
-from lagrade.judge.worker import Limits, Pool
+from lagrade.judge import PREPARE_LIMIT, Limits, Pool, is_unreadable_line
 
 #: Seconds per part when PrairieLearn grades (its own worker limits the whole call too); a part
 #: whose check holds its worker in C code is killed `GRACE` seconds later.
@@ -186,7 +184,7 @@ def wrong_answer(part: str, correct: str, coordinates: list[str]) -> str:
     changed by a term that alters the dynamics (never a constant, a total time derivative, a
     global factor or the sign of V, which a right answer may differ by), one line at a time;
     positions that depend on no coordinate (a map of rank 0) for the transformation."""
-    from lagrade.assign.assignment import EXPRESSION
+    from lagrade.assign import EXPRESSION
 
     q = coordinates[0]
     if part == "dof":

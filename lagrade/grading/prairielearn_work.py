@@ -12,16 +12,21 @@ from collections.abc import Mapping
 from typing import Any
 
 import lagrade.grading.resume as resume
-from lagrade.assign.assignment import EXPRESSION, Problem, parse_assignment, scene_resolver
-from lagrade.assign.templating import environment
-from lagrade.assign.variants import VariantChoice
-from lagrade.assign.views import key_answers, problem_view
-from lagrade.bank.registry import scene_reference
+from lagrade.assign import (
+    EXPRESSION,
+    Problem,
+    VariantChoice,
+    environment,
+    key_answers,
+    parse_assignment,
+    problem_view,
+    scene_resolver,
+)
+from lagrade.bank import scene_reference
 from lagrade.grading.prompts import prompt_html
 from lagrade.grading.rubric import Rubric, rubric_from_table
 from lagrade.grading.student import grade_part, part_spec, question, sheet_given, stopped_part
-from lagrade.judge.clocks import PartTimeout, time_limit
-from lagrade.judge.read import read_answer
+from lagrade.judge import PartTimeout, read_answer, time_limit
 
 
 def render_variant(

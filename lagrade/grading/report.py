@@ -16,9 +16,8 @@ from pathlib import Path
 from typing import Any
 
 import lagrade.grading.atomic as atomic
-from lagrade.assign.templating import environment, md_block, md_code, md_escape
-from lagrade.judge.parts.own_coordinates import OWN_COORDINATES
-from lagrade.judge.verdict import is_unreadable_line
+from lagrade.assign import environment, md_block, md_code, md_escape
+from lagrade.judge import OWN_COORDINATES, is_unreadable_line
 from lagrade.untrusted import visible
 
 STUDENTS = "students"

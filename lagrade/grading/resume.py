@@ -13,8 +13,7 @@ from __future__ import annotations
 from collections.abc import Mapping
 from typing import Any
 
-from lagrade.judge.clocks import note
-from lagrade.judge.worker import Outcome
+from lagrade.judge import Outcome, note
 
 
 def begin(part_id: str) -> None:

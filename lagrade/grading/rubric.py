@@ -19,10 +19,9 @@ from dataclasses import asdict, dataclass
 from pathlib import Path
 from typing import Any
 
-from lagrade.assign.assignment import assignment_table
+from lagrade.assign import assignment_table
 from lagrade.errors import RequestError
-from lagrade.judge.parts.expression import NUMERIC_TOLERANCE
-from lagrade.judge.parts.own_coordinates import OWN_COORDINATES
+from lagrade.judge import NUMERIC_TOLERANCE, OWN_COORDINATES
 
 _FIELDS = {"partial_credit", "follow_through", "convention", "numeric_tolerance", "own_coordinates"}
 

@@ -13,19 +13,26 @@ from pathlib import Path
 from typing import Any
 
 import lagrade.grading.resume as resume
-from lagrade.bank.scenefile import sha256
+from lagrade.bank import sha256
 from lagrade.errors import LagradeError
 from lagrade.grading.manifest import entry_spec, entry_variant
 from lagrade.grading.rubric import Rubric
 from lagrade.grading.submission import UnreadableAnswer, read_sheet
-from lagrade.judge.clocks import PartTimeout, time_limit
-from lagrade.judge.driver import cached_problem, judge, prepare, timeout_verdict
-from lagrade.judge.key import key_answer
-from lagrade.judge.parts import run_checker
-from lagrade.judge.parts.own_coordinates import FOLLOWING
-from lagrade.judge.problem import Problem
-from lagrade.judge.verdict import Verdict
-from lagrade.judge.worker import Outcome, Pool
+from lagrade.judge import (
+    FOLLOWING,
+    Outcome,
+    PartTimeout,
+    Pool,
+    Problem,
+    Verdict,
+    cached_problem,
+    judge,
+    key_answer,
+    prepare,
+    run_checker,
+    time_limit,
+    timeout_verdict,
+)
 
 #: Parts that can follow from the student's own Lagrangian.
 FOLLOW_L = frozenset({"eom", "momenta", "cyclic", "conserved"})

@@ -12,39 +12,86 @@ from __future__ import annotations
 from importlib import import_module
 from typing import Any
 
-# `check` and `deriving` name both a module of this package and the function it defines: bound
-# here, so that importing the module (which sets the package's attribute to it) never shadows
-# the function. Both modules are light (no sympy).
+# a name that is also a module of this package is bound here, so that importing the module (which
+# sets the package's attribute to it) never shadows it
 from lagrade.judge.check import check
 from lagrade.judge.deriving import deriving
 
-#: Each exported name, by the module that defines it.
+#: Each exported name, by the module that defines it (a module exported as a whole: its own
+#: name). Loaded on first use, so that importing the layer costs nothing it does not use.
 _EXPORTS = {
-    "PARTS": "lagrade.judge.parts",
-    "Problem": "lagrade.judge.problem",
-    "Verdict": "lagrade.judge.verdict",
     "build_problem": "lagrade.judge.problem",
-    "key_answer": "lagrade.judge.key",
+    "cached_problem": "lagrade.judge.driver",
+    "check_pool": "lagrade.judge.check",
+    "FOLLOWING": "lagrade.judge.parts.own_coordinates",
+    "forget_problems": "lagrade.judge.driver",
+    "is_unreadable_line": "lagrade.judge.verdict",
+    "judge": "lagrade.judge.driver",
+    "key_answer": "lagrade.notation.keys",
+    "Limits": "lagrade.judge.worker",
+    "LivePool": "lagrade.judge.live",
+    "MAX_ID_LENGTH": "lagrade.judge.check",
+    "note": "lagrade.judge.clocks",
+    "NUMERIC_TOLERANCE": "lagrade.judge.parts.expression",
+    "Outcome": "lagrade.judge.worker",
+    "OWN_COORDINATES": "lagrade.judge.parts.own_coordinates",
+    "PARTS": "lagrade.judge.parts",
+    "PartTimeout": "lagrade.judge.clocks",
+    "Pool": "lagrade.judge.worker",
+    "prepare": "lagrade.judge.driver",
+    "PREPARE_LIMIT": "lagrade.judge.clocks",
+    "Problem": "lagrade.judge.problem",
+    "read_answer": "lagrade.judge.read",
+    "run_batch": "lagrade.judge.check",
     "run_checker": "lagrade.judge.parts",
+    "time_limit": "lagrade.judge.clocks",
+    "timeout_verdict": "lagrade.judge.verdict",
+    "Verdict": "lagrade.judge.verdict",
     "verify_variant": "lagrade.judge.verify",
 }
+#: The modules exported as a whole.
+_MODULES = {}
 
 __all__ = [
-    "PARTS",
-    "Problem",
-    "Verdict",
     "build_problem",
+    "cached_problem",
     "check",
+    "check_pool",
     "deriving",
+    "FOLLOWING",
+    "forget_problems",
+    "is_unreadable_line",
+    "judge",
     "key_answer",
+    "Limits",
+    "LivePool",
+    "MAX_ID_LENGTH",
+    "note",
+    "NUMERIC_TOLERANCE",
+    "Outcome",
+    "OWN_COORDINATES",
+    "PARTS",
+    "PartTimeout",
+    "Pool",
+    "prepare",
+    "PREPARE_LIMIT",
+    "Problem",
+    "read_answer",
+    "run_batch",
     "run_checker",
+    "time_limit",
+    "timeout_verdict",
+    "Verdict",
     "verify_variant",
 ]
 
 
 def __getattr__(name: str) -> Any:
-    if name in _EXPORTS:
+    if name in _MODULES:
+        value = import_module(_EXPORTS[name])
+    elif name in _EXPORTS:
         value = getattr(import_module(_EXPORTS[name]), name)
-        globals()[name] = value
-        return value
-    raise AttributeError(f"module 'lagrade.judge' has no attribute {name!r}")
+    else:
+        raise AttributeError(f"module 'lagrade.judge' has no attribute {name!r}")
+    globals()[name] = value
+    return value

@@ -20,7 +20,7 @@ import lagrade.judge.evaluate as ev
 import lagrade.judge.modular as modular
 from lagrade.judge.evaluate.program import is_integer
 from lagrade.judge.sampling import WIDEN
-from lagrade.mechanics.domains import REAL, Domain
+from lagrade.mechanics import REAL, Domain
 
 #: The domain of each symbol an expression holds.
 Domains = Mapping[sp.Symbol, Domain]

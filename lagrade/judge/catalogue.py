@@ -59,8 +59,7 @@ from lagrade.judge.mutations import (
 from lagrade.judge.row_fingerprints import RowFingerprints
 from lagrade.judge.rows import Rows, equation_rows, span_basis
 from lagrade.judge.sampling import Points
-from lagrade.mechanics.lagrange import Jet, LagrangianSystem, t
-from lagrade.mechanics.scene import SceneVariant
+from lagrade.mechanics import Jet, LagrangianSystem, SceneVariant, t
 
 _T = TypeVar("_T")
 

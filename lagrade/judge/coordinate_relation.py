@@ -29,7 +29,7 @@ from lagrade.judge.equivalence import group_starts
 from lagrade.judge.problem import Problem
 from lagrade.judge.situation import angles, symbol_text
 from lagrade.judge.tolerances import COORDINATE_MAP, ROUNDING, SAME_VALUE
-from lagrade.notation.printer import plain
+from lagrade.notation import plain
 
 #: Gauss–Newton steps per start; each converges in a few where it converges at all.
 _STEPS = 40

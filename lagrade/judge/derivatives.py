@@ -12,7 +12,7 @@ import sympy as sp
 from lagrade.judge.compiled import Compiled, to_length
 from lagrade.judge.evaluate import FLOAT, Program, run_hyperdual
 from lagrade.judge.sampling import memo_inputs
-from lagrade.mechanics.lagrange import Jet, t
+from lagrade.mechanics import Jet, t
 
 
 def _tile(x, copies: int, n: int, backend):

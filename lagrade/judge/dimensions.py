@@ -23,9 +23,8 @@ from lagrade.judge.compiled import Compiled
 from lagrade.judge.evaluate import UnsupportedExpression
 from lagrade.judge.rows import equation_rows, in_span
 from lagrade.judge.tolerances import SAME_VALUE
-from lagrade.mechanics.lagrange import LagrangianSystem, t
-from lagrade.mechanics.scene import RigidBody, SceneVariant, SpatialRigidBody
-from lagrade.notation.printer import plain
+from lagrade.mechanics import LagrangianSystem, RigidBody, SceneVariant, SpatialRigidBody, t
+from lagrade.notation import plain
 
 #: A dimension: exponents of metre, kilogram, second and ampere, in twelfths (whole numbers,
 #: so that comparing and adding them is cheap; a square or cube root of a unit is whole too).

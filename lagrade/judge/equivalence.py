@@ -29,7 +29,7 @@ from lagrade.judge.derivatives import euler_lagrange_values
 from lagrade.judge.evaluate import FLOAT
 from lagrade.judge.sampling import Points, memo_inputs
 from lagrade.judge.tolerances import ROUNDING, SAME_FACTOR, SAME_VALUE
-from lagrade.mechanics.lagrange import Jet
+from lagrade.mechanics import Jet
 
 
 def reference_values(reference: Compiled, points: Points, backend=FLOAT) -> tuple:

@@ -38,8 +38,7 @@ from lagrade.judge.mutations import (
 )
 from lagrade.judge.sampling import Points
 from lagrade.judge.tolerances import SAME_DYNAMICS_SUSPECT, SAME_VALUE, SURE_EQUAL
-from lagrade.mechanics.lagrange import Jet
-from lagrade.mechanics.scene import SceneVariant
+from lagrade.mechanics import Jet, SceneVariant
 
 
 @dataclass(frozen=True)

@@ -2,6 +2,6 @@
 `lagrade.notation.keys`, below both judge and assign, so that the key `generate` prints and the
 key the grader checks before it are one function."""
 
-from lagrade.notation.keys import key_answer
+from lagrade.notation import key_answer
 
 __all__ = ["key_answer"]

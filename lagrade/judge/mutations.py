@@ -11,9 +11,8 @@ from typing import Any
 
 import sympy as sp
 
-from lagrade.mechanics.lagrange import Jet, LagrangianSystem
-from lagrade.mechanics.scene import SceneVariant
-from lagrade.notation.printer import plain
+from lagrade.mechanics import Jet, LagrangianSystem, SceneVariant
+from lagrade.notation import plain
 
 
 @dataclass(frozen=True)

@@ -23,8 +23,7 @@ from typing import Any
 import numpy as np
 import sympy as sp
 
-from lagrade.bank.registry import get_scene
-from lagrade.bank.scenefile import scene_from_text, sha256
+from lagrade.bank import get_scene, scene_from_text, sha256
 from lagrade.errors import LagradeError, ParseError, ReferenceUndefined, RequestError
 from lagrade.judge.catalogue import Catalogue
 from lagrade.judge.clocks import PREPARE_LIMIT, Budget
@@ -33,9 +32,7 @@ from lagrade.judge.evaluate import FLOAT
 from lagrade.judge.reference import determined_mask, lagrangian_mask
 from lagrade.judge.rows import Rows, equation_rows, lagrangian_rows
 from lagrade.judge.sampling import Points, Space, seed_for
-from lagrade.mechanics.domains import Domain
-from lagrade.mechanics.lagrange import Jet, LagrangianSystem, jet, t
-from lagrade.mechanics.scene import SceneVariant
+from lagrade.mechanics import Domain, Jet, LagrangianSystem, SceneVariant, jet, t
 
 #: A coordinate or parameter name of an ad-hoc problem: a plain name of at most 32 characters.
 _NAME = re.compile(r"^[A-Za-z][A-Za-z0-9_]{0,31}$")

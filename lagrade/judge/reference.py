@@ -14,7 +14,7 @@ from lagrade.judge.derivatives import el_seeds, euler_lagrange_values, gradient
 from lagrade.judge.evaluate import MP, finite_in_mp
 from lagrade.judge.rows import acceleration_blocks, rows_from_values
 from lagrade.judge.tolerances import SINGULAR_MASS
-from lagrade.mechanics.lagrange import Jet
+from lagrade.mechanics import Jet
 
 
 def lagrangian_mask(L: Compiled, jets: Sequence[Jet]) -> Callable[[dict], np.ndarray]:

@@ -15,7 +15,7 @@ from lagrade.judge.derivatives import euler_lagrange_values
 from lagrade.judge.evaluate import FLOAT
 from lagrade.judge.sampling import memo_inputs
 from lagrade.judge.tolerances import RANK
-from lagrade.mechanics.lagrange import Jet
+from lagrade.mechanics import Jet
 
 
 @dataclass

@@ -15,8 +15,7 @@ import sympy as sp
 
 from lagrade.errors import ReferenceUndefined
 from lagrade.judge.evaluate import COMPLEX, FLOAT, MP, MP_COMPLEX
-from lagrade.mechanics.domains import Domain
-from lagrade.mechanics.lagrange import Jet, t
+from lagrade.mechanics import Domain, Jet, t
 
 #: Parameter draws per set of sample points, and points (q, q̇, q̈, t) per parameter draw.
 GROUPS = 4

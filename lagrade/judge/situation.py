@@ -14,7 +14,7 @@ import sympy as sp
 from lagrade.judge.dimensions import NONE, dimensions_of
 from lagrade.judge.dimensions import unit_text as unit_text_of
 from lagrade.judge.problem import Problem
-from lagrade.notation.lexer import GREEK
+from lagrade.notation import GREEK
 
 _LETTER = {name: letter for letter, name in GREEK.items() if name != "sigma" or letter == "σ"}
 _DOT, _DDOT = "\u0307", "\u0308"

@@ -7,12 +7,12 @@ from __future__ import annotations
 
 from collections.abc import Iterable
 
-from lagrade.bank.registry import scene_reference
+from lagrade.bank import scene_reference
 from lagrade.judge.key import key_answer
 from lagrade.judge.parts import run_checker
 from lagrade.judge.problem import Problem, build_problem
-from lagrade.mechanics.scene import SceneVariant
-from lagrade.notation.printer import plain
+from lagrade.mechanics import SceneVariant
+from lagrade.notation import plain
 
 
 def _spec(variant: SceneVariant, quantity: str | None = None) -> dict:

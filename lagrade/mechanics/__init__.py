@@ -6,42 +6,112 @@ The small-oscillation names (`Equilibrium`, `SmallOscillations`, `frequencies_fr
 `variant_oscillations`) are loaded on first use: they need numpy and scipy, which reading an
 answer (`lagrade parse`) never does."""
 
+from __future__ import annotations
+
+from importlib import import_module
 from typing import Any
 
-from lagrade.mechanics.domains import Domain
-from lagrade.mechanics.hamilton import HamiltonianSystem, NotQuadratic, momentum_jet, momentum_name
-from lagrade.mechanics.lagrange import Jet, LagrangianSystem, jet, total_derivative
-from lagrade.mechanics.scene import PointMass, Quantity, RigidBody, Scene, SceneVariant
-from lagrade.mechanics.vanishing import identically_zero
+#: Each exported name, by the module that defines it (a module exported as a whole: its own
+#: name). Loaded on first use, so that importing the layer costs nothing it does not use.
+_EXPORTS = {
+    "Anchor": "lagrade.mechanics.figure",
+    "as_expr": "lagrade.mechanics.bodies",
+    "cartesian_symbols": "lagrade.mechanics.reparametrize",
+    "coordinates_through_positions": "lagrade.mechanics.reparametrize",
+    "coordinates_to_carry": "lagrade.mechanics.reparametrize",
+    "DDOT": "lagrade.mechanics.lagrange",
+    "deciding_values": "lagrade.mechanics.oscillations",
+    "Domain": "lagrade.mechanics.domains",
+    "DOT": "lagrade.mechanics.lagrange",
+    "Equilibrium": "lagrade.mechanics.oscillations",
+    "FigureHint": "lagrade.mechanics.figure",
+    "Fixture": "lagrade.mechanics.figure",
+    "FIXTURE_KINDS": "lagrade.mechanics.figure",
+    "frequencies_from": "lagrade.mechanics.oscillations",
+    "generalized_eigenvalues": "lagrade.mechanics.oscillations",
+    "HamiltonianSystem": "lagrade.mechanics.hamilton",
+    "identically_zero": "lagrade.mechanics.vanishing",
+    "Jet": "lagrade.mechanics.lagrange",
+    "jet": "lagrade.mechanics.lagrange",
+    "lagrange": "lagrade.mechanics.lagrange",  # the module
+    "LAGRANGIAN_PARTS": "lagrade.mechanics.scene",
+    "LagrangianSystem": "lagrade.mechanics.lagrange",
+    "momentum_jet": "lagrade.mechanics.hamilton",
+    "momentum_name": "lagrade.mechanics.hamilton",
+    "phase_space": "lagrade.mechanics.hamilton",
+    "small_oscillations": "lagrade.mechanics.oscillations",
+    "NotQuadratic": "lagrade.mechanics.hamilton",
+    "Parameter": "lagrade.mechanics.domains",
+    "PointMass": "lagrade.mechanics.bodies",
+    "Quantity": "lagrade.mechanics.scene",
+    "REAL": "lagrade.mechanics.domains",
+    "Reparametrized": "lagrade.mechanics.reparametrize",
+    "RigidBody": "lagrade.mechanics.bodies",
+    "Scene": "lagrade.mechanics.scene",
+    "SceneVariant": "lagrade.mechanics.scene",
+    "SmallOscillations": "lagrade.mechanics.oscillations",
+    "SpatialRigidBody": "lagrade.mechanics.bodies",
+    "t": "lagrade.mechanics.lagrange",
+    "collapse_trig": "lagrade.mechanics.bodies",
+    "total_derivative": "lagrade.mechanics.lagrange",
+    "variant_oscillations": "lagrade.mechanics.oscillations",
+    "ZERO_MODE": "lagrade.mechanics.oscillations",
+}
+#: The modules exported as a whole.
+_MODULES = {"lagrange"}
 
 __all__ = [
+    "Anchor",
+    "as_expr",
+    "cartesian_symbols",
+    "collapse_trig",
+    "coordinates_through_positions",
+    "coordinates_to_carry",
+    "DDOT",
+    "deciding_values",
     "Domain",
+    "DOT",
     "Equilibrium",
+    "FigureHint",
+    "Fixture",
+    "FIXTURE_KINDS",
+    "frequencies_from",
+    "generalized_eigenvalues",
     "HamiltonianSystem",
+    "identically_zero",
     "Jet",
+    "jet",
+    "lagrange",
+    "LAGRANGIAN_PARTS",
     "LagrangianSystem",
+    "momentum_jet",
+    "momentum_name",
     "NotQuadratic",
+    "Parameter",
+    "phase_space",
     "PointMass",
     "Quantity",
+    "REAL",
+    "Reparametrized",
     "RigidBody",
     "Scene",
     "SceneVariant",
-    "identically_zero",
+    "small_oscillations",
     "SmallOscillations",
-    "frequencies_from",
-    "jet",
-    "momentum_jet",
-    "momentum_name",
+    "SpatialRigidBody",
+    "t",
     "total_derivative",
     "variant_oscillations",
+    "ZERO_MODE",
 ]
-
-_OSCILLATIONS = ("Equilibrium", "SmallOscillations", "frequencies_from", "variant_oscillations")
 
 
 def __getattr__(name: str) -> Any:
-    if name in _OSCILLATIONS:
-        from lagrade.mechanics import oscillations
-
-        return getattr(oscillations, name)
-    raise AttributeError(f"module 'lagrade.mechanics' has no attribute {name!r}")
+    if name in _MODULES:
+        value = import_module(_EXPORTS[name])
+    elif name in _EXPORTS:
+        value = getattr(import_module(_EXPORTS[name]), name)
+    else:
+        raise AttributeError(f"module 'lagrade.mechanics' has no attribute {name!r}")
+    globals()[name] = value
+    return value

@@ -120,7 +120,7 @@ def gravity(g: sp.Expr, bodies: Sequence[Body], axis: str = "y") -> sp.Expr:
     return sum((b.mass * g * b.position[index] for b in bodies), sp.S.Zero)
 
 
-def _body_fields(body: Body) -> list[tuple[str, tuple]]:
+def body_fields(body: Body) -> list[tuple[str, tuple]]:
     """A body's declared expressions by field: position, mass, and a rigid body's inertia and
     angle."""
     fields = [("position", tuple(body.position)), ("mass", (body.mass,))]
@@ -143,7 +143,7 @@ def _normalized(body: Body) -> Body:
     return type(body)(**fields)
 
 
-def _tidy(expr: sp.Expr) -> sp.Expr:
+def collapse_trig(expr: sp.Expr) -> sp.Expr:
     """T as the lecture writes it: sin² + cos² collapsed, cos a cos b + sin a sin b → cos(a − b).
 
     A targeted rewrite (Pythagoras both ways, keep the shorter; then fu's TR10i) instead of

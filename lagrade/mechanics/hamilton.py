@@ -163,3 +163,13 @@ def legendre_map(system: LagrangianSystem) -> dict[sp.Symbol, sp.Expr]:
 def momentum_symbols(coordinates: Sequence[str]) -> tuple[sp.Symbol, ...]:
     """The momentum symbols of `coordinates`."""
     return tuple(momentum_jet(c).q for c in coordinates)
+
+
+def phase_space(system: LagrangianSystem) -> HamiltonianSystem:
+    """H(q, p, t) and Hamilton's equations of `system`, derived once per system (a function
+    here, not a method of LagrangianSystem, so that lagrange.py never imports this module,
+    which builds on it)."""
+    cache = system.__dict__
+    if "_phase_space" not in cache:
+        cache["_phase_space"] = HamiltonianSystem(system)
+    return cache["_phase_space"]

@@ -281,22 +281,3 @@ class LagrangianSystem:
         return expr.xreplace(
             {j.ddot: a for j, a in zip(self.jets, self.accelerations, strict=True)}
         )
-
-    # --- the next lecture: phase space and small oscillations (own modules, derived lazily) --
-    @cached_property
-    def phase_space(self):
-        """H(q, p, t) and Hamilton's equations: `lagrade.mechanics.hamilton.HamiltonianSystem`."""
-        from lagrade.mechanics.hamilton import HamiltonianSystem  # it builds on this module
-
-        return HamiltonianSystem(self)
-
-    def small_oscillations(self, values):
-        """Equilibria and normal modes at the parameter `values` (symbol → number), computed
-        once per values: `lagrade.mechanics.oscillations.SmallOscillations`."""
-        from lagrade.mechanics.oscillations import SmallOscillations  # it builds on this module
-
-        cache = self.__dict__.setdefault("_oscillations", {})
-        key = tuple(sorted((s.name, float(v)) for s, v in values.items()))
-        if key not in cache:
-            cache[key] = SmallOscillations(self, values)
-        return cache[key]

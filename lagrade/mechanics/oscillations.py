@@ -66,7 +66,7 @@ def variant_oscillations(variant) -> SmallOscillations:
     symbols = variant.parameter_symbols
     values = {symbols[n]: v for n, v in variant.values.items()}
     domains = {symbols[n]: d for n, d in variant.domains.items()}
-    return variant.system.small_oscillations(deciding_values(values, domains))
+    return small_oscillations(variant.system, deciding_values(values, domains))
 
 
 def _number(expr: sp.Expr, values: Mapping) -> float | None:
@@ -264,3 +264,13 @@ class SmallOscillations:
         if self.stable is None:
             return None
         return frequencies_from(*self.numeric(self.stable, values))
+
+
+def small_oscillations(system: LagrangianSystem, values) -> SmallOscillations:
+    """Equilibria and normal modes of `system` at the parameter `values` (symbol → number),
+    computed once per values."""
+    cache = system.__dict__.setdefault("_oscillations", {})
+    key = tuple(sorted((s.name, float(v)) for s, v in values.items()))
+    if key not in cache:
+        cache[key] = SmallOscillations(system, values)
+    return cache[key]

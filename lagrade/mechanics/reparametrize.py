@@ -24,16 +24,16 @@ from functools import cached_property
 import sympy as sp
 
 import lagrade.mechanics.lagrange as mech
-from lagrade.mechanics.scene import (
+from lagrade.mechanics.bodies import (
     AXES,
     Body,
     PointMass,
     RigidBody,
-    SceneVariant,
     SpatialRigidBody,
-    _tidy,
     as_expr,
+    collapse_trig,
 )
+from lagrade.mechanics.scene import SceneVariant
 
 
 def cartesian_symbols(variant: SceneVariant) -> dict[str, sp.Symbol]:
@@ -152,7 +152,7 @@ def _distance_inverses(
         held = [q for q in missing if q not in found and squared.has(q)]
         if not held:
             continue
-        tidied = _tidy(squared)
+        tidied = collapse_trig(squared)
         for q in held:
             k2 = sp.cancel(tidied / q**2)
             if k2 != 0 and not k2.has(*coordinates, mech.t):

@@ -21,31 +21,26 @@ import sympy as sp
 
 import lagrade.mechanics.lagrange as mech
 from lagrade.errors import SceneError
-
-# the bodies live in `bodies`; their names stay importable from here, where scenes are made
-from lagrade.mechanics.bodies import (  # noqa: F401
+from lagrade.mechanics.bodies import (
     AXES,
     Body,
-    PointMass,
     RigidBody,
     SpatialRigidBody,
-    _body_fields,
     _normalized,
-    _tidy,
     as_expr,
-    gravity,
+    body_fields,
+    collapse_trig,
 )
 from lagrade.mechanics.dissipation import DissipativeSystem
-from lagrade.mechanics.domains import (  # noqa: F401 (Parameter, param: made here)
+from lagrade.mechanics.domains import (
     Domain,
     Parameter,
-    branched,
     keeps,
-    param,
     vanishes_within,
     within,
 )
 from lagrade.mechanics.figure import FigureHint
+from lagrade.mechanics.validation import validate_variant
 from lagrade.mechanics.vanishing import without_absent
 
 #: Draws from the value pools before a scene's relations are taken as impossible to keep.
@@ -412,103 +407,9 @@ class SceneVariant:
         return subs
 
     def validate(self) -> None:
-        """Check the declaration against itself and raise one SceneError listing every problem:
-        symbols without a declared parameter, coordinates that appear nowhere, constraints that
-        the transformation equations do not satisfy identically, a DOF count that differs from
-        the number of coordinates, and a transformation without full rank."""
-        problems: list[str] = []
-        known = set(self.parameter_symbols.values()) | {mech.t}
-        for j in self.jets:
-            known |= {j.q, j.dot}
-        if self.scene.given_by_lagrangian:
-            self._validate_lagrangian(known)
-            return
-        used: set[sp.Symbol] = set()
-        for b in self.bodies:
-            for label, expr in _body_fields(b):
-                for x in expr:
-                    free = x.free_symbols
-                    used |= free
-                    for s in sorted(free - known, key=str):
-                        problems.append(
-                            f"bodies: {b.name}.{label} uses {s}, which is not a declared parameter"
-                        )
-        V = self._declared_potential
-        used |= V.free_symbols
-        for s in sorted(V.free_symbols - known, key=str):
-            problems.append(f"potential: uses {s}, which is not a declared parameter")
-        for j in self.jets:
-            if j.q not in used and j.dot not in used:
-                problems.append(
-                    f"coordinates: {j.name!r} appears in no position and not in the potential"
-                )
-        subs = self._cartesian_substitution()
-        for i, (label, f) in enumerate(self.constraints):
-            if label != "declared":
-                continue
-            residual = self.within_domains(
-                f.xreplace(subs), lambda e: sp.simplify(sp.expand_trig(e))
-            )
-            if residual != 0 and not self.vanishes_in_domains(residual):
-                hint = (
-                    ""
-                    if self.coordinate_domains or not branched(residual)
-                    else (
-                        " (if it holds where the coordinates live, declare their domains: "
-                        'domains = { r = "positive" })'
-                    )
-                )
-                problems.append(
-                    f"constraints: constraint {i + 1} ({f} = 0) is not satisfied by the "
-                    f"transformation equations; it leaves {residual}{hint}"
-                )
-        if self.dof != len(self.jets):
-            problems.append(
-                f"constraints: 3N - k gives {self.dof} degrees of freedom but the scene declares "
-                f"{len(self.jets)} coordinates {list(self.coordinates)}"
-            )
-        rank = self._jacobian_rank()
-        if rank < len(self.jets):
-            problems.append(
-                f"bodies: the transformation has rank {rank} < {len(self.jets)}; some coordinate "
-                "does not move any body independently"
-            )
-        if problems:
-            raise SceneError(self.scene.id, problems)
-
-    def _validate_lagrangian(self, known: set[sp.Symbol]) -> None:
-        """A given L: declared symbols only, no acceleration, every coordinate in it."""
-        problems = []
-        L = self.lagrangian
-        for s in sorted(L.free_symbols - known, key=str):
-            problems.append(f"lagrangian: uses {s}, which is not declared")
-        for j in self.jets:
-            if L.has(j.ddot):
-                problems.append(f"lagrangian: contains the acceleration {j.ddot}")
-            if not L.has(j.q) and not L.has(j.dot):
-                problems.append(f"coordinates: {j.name!r} appears nowhere in the Lagrangian")
-        if problems:
-            raise SceneError(self.scene.id, problems)
-
-    def _jacobian_rank(self) -> int:
-        """Rank of ∂(positions, angles)/∂q at a seeded generic point (numerically)."""
-        rows = list(self.transformation.values())
-        J = sp.Matrix([[sp.diff(r, j.q) for j in self.jets] for r in rows])
-        rng = random.Random(0)
-        point = {
-            s: rng.uniform(*self.domains[str(s)].sample_range())
-            for s in self.parameter_symbols.values()
-        }
-        point |= {
-            j.q: rng.uniform(*self.coordinate_domains[j.name].sample_range())
-            if j.name in self.coordinate_domains
-            else rng.uniform(0.2, 1.2)
-            for j in self.jets
-        } | {mech.t: 0.7}
-        numeric = J.xreplace(point).evalf()
-        import numpy as np
-
-        return int(np.linalg.matrix_rank(np.array(numeric.tolist(), dtype=float), tol=1e-9))
+        """Check the declaration against itself and raise one SceneError listing every problem
+        (`lagrade.mechanics.validation`)."""
+        validate_variant(self)
 
     # --- step 4: T, V, L -----------------------------------------------------------------------
     @cached_property
@@ -530,7 +431,7 @@ class SceneVariant:
         if self._presented is not self:
             return self._presented.kinetic_energy
         T = sum((b.kinetic_energy(self.jets) for b in self.bodies), sp.S.Zero)
-        return _tidy(self.within_domains(T))
+        return collapse_trig(self.within_domains(T))
 
     @cached_property
     def _declared_potential(self) -> sp.Expr:
@@ -629,7 +530,7 @@ class SceneVariant:
         constraints or quantities contain, or its statement names. An option can leave one out
         (no k for uniform gravity, no M for a massless pulley), and a handout that lists it
         anyway sends students looking for a term that is not there."""
-        exprs = [x for b in self.bodies for _, field in _body_fields(b) for x in field]
+        exprs = [x for b in self.bodies for _, field in body_fields(b) for x in field]
         exprs += list(self.quantities.values())
         if self.scene.given_by_lagrangian:
             exprs.append(self.lagrangian)

@@ -9,7 +9,7 @@ from collections.abc import Callable
 
 import sympy as sp
 
-from lagrade.mechanics.lagrange import total_derivative
+from lagrade.mechanics import total_derivative
 from lagrade.notation.lexer import Source
 from lagrade.notation.limits import (
     MAX_DERIVATIVE_NODES,

@@ -7,8 +7,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from lagrade.mechanics.oscillations import variant_oscillations
-from lagrade.mechanics.scene import SceneVariant
+from lagrade.mechanics import SceneVariant, phase_space, variant_oscillations
 from lagrade.notation.printer import plain
 
 
@@ -39,9 +38,9 @@ def key_answer(variant: SceneVariant, part: str, quantity: str | None = None) ->
     if part == "conserved":
         return [plain(q) for q in system.conserved_quantities.values()] or ["none"]
     if part == "hamiltonian":
-        return plain(system.phase_space.hamiltonian)
+        return plain(phase_space(system).hamiltonian)
     if part == "hamilton_equations":
-        return [plain(e) for e in system.phase_space.hamilton_equations]
+        return [plain(e) for e in phase_space(system).hamilton_equations]
     if part in ("equilibrium", "normal_modes"):
         return _oscillation_key(variant, part)
     if part == "expression":

@@ -12,9 +12,8 @@ from typing import NamedTuple
 import sympy as sp
 
 from lagrade.errors import RequestError
+from lagrade.mechanics import Domain, momentum_jet
 from lagrade.mechanics import lagrange as mechanics
-from lagrade.mechanics.domains import Domain
-from lagrade.mechanics.hamilton import momentum_jet
 from lagrade.notation.build import FUNCTIONS
 
 _NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*\Z")

@@ -13,7 +13,8 @@ import pytest
 from lagrade.assign.figures import compose
 from lagrade.assign.figures.layout import drawn, extent, labels
 from lagrade.bank import get_scene, scene_ids
-from lagrade.mechanics.scene import RigidBody, SceneVariant
+from lagrade.mechanics.bodies import RigidBody
+from lagrade.mechanics.scene import SceneVariant
 
 #: What a statement's noun obliges the figure to draw (any of these element kinds). A table
 #: seen from above (the two pucks, the rotating frame) is the page itself, so it is not here.

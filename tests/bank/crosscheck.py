@@ -8,7 +8,8 @@ from scipy.integrate import solve_ivp
 from sympy.physics import mechanics as me
 
 from lagrade.mechanics import lagrange as mech
-from lagrade.mechanics.scene import RigidBody, SceneVariant
+from lagrade.mechanics.bodies import RigidBody
+from lagrade.mechanics.scene import SceneVariant
 
 
 def to_dynamic(variant: SceneVariant):

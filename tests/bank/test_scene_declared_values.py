@@ -3,7 +3,9 @@
 import pytest
 import sympy as sp
 
-from lagrade.mechanics.scene import PointMass, Scene, as_expr, param
+from lagrade.mechanics.bodies import PointMass, as_expr
+from lagrade.mechanics.domains import param
+from lagrade.mechanics.scene import Scene
 
 
 def test_numbers_and_expressions_pass_through():

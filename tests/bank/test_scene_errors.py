@@ -13,7 +13,9 @@ import sympy as sp
 from sympy import cos, sin
 
 from lagrade.errors import SceneError
-from lagrade.mechanics.scene import PointMass, Scene, SceneVariant, gravity, param
+from lagrade.mechanics.bodies import PointMass, gravity
+from lagrade.mechanics.domains import param
+from lagrade.mechanics.scene import Scene, SceneVariant
 
 PENDULUM = Scene(
     id="test_pendulum",

@@ -12,8 +12,8 @@ import sympy as sp
 from lagrade.assign.figures.geometry import Geometry
 from lagrade.assign.figures.primitives import arc_arrow, put_text
 from lagrade.assign.figures.style import ACCENT, GREY, GREY_TEXT, INK
-from lagrade.mechanics.scene import RigidBody, SpatialRigidBody, as_expr
-from lagrade.notation.printer import name_latex
+from lagrade.mechanics import RigidBody, SpatialRigidBody, as_expr
+from lagrade.notation import name_latex
 
 
 def body_radius(g: Geometry, i: int, unit: float) -> float:

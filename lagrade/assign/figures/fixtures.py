@@ -15,10 +15,9 @@ import sympy as sp
 from lagrade.assign.figures.geometry import Geometry
 from lagrade.assign.figures.primitives import arc_arrow, incline_angle, pivot, put_text
 from lagrade.assign.figures.style import ACCENT, GREY, INK
+from lagrade.mechanics import Anchor, Fixture, as_expr
 from lagrade.mechanics import lagrange as mech
-from lagrade.mechanics.figure import Anchor, Fixture
-from lagrade.mechanics.scene import as_expr
-from lagrade.notation.printer import name_latex
+from lagrade.notation import name_latex
 
 _FILL = "#e4e4e4"
 

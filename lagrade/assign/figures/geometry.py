@@ -14,10 +14,9 @@ from typing import Any
 import numpy as np
 import sympy as sp
 
+from lagrade.mechanics import FigureHint, RigidBody, SceneVariant, as_expr
 from lagrade.mechanics import lagrange as mech
-from lagrade.mechanics.figure import FigureHint
-from lagrade.mechanics.scene import RigidBody, SceneVariant, as_expr
-from lagrade.notation.printer import name_latex
+from lagrade.notation import name_latex
 
 _ANGLE_POSES = (0.6, 1.0, 0.35, 0.8)
 _LENGTH_POSES = (0.5, 0.8, 0.35, 0.65)

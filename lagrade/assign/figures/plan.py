@@ -35,9 +35,9 @@ from lagrade.assign.figures.primitives import (
     time_mark,
 )
 from lagrade.assign.figures.style import ACCENT, GREY, INK, TRACE_STYLE
+from lagrade.mechanics import RigidBody, as_expr
 from lagrade.mechanics import lagrange as mech
-from lagrade.mechanics.scene import RigidBody, as_expr
-from lagrade.notation.printer import name_latex
+from lagrade.notation import name_latex
 
 #: What a traced path is, by its style: a constraint surface is a track the body runs on.
 TRACE_KIND = {"solid": "track", "path": "path", "time": "time"}

@@ -15,7 +15,7 @@ from lagrade.assign.figures.layout import drawn, settle
 from lagrade.assign.figures.plan import plan
 from lagrade.assign.figures.style import RC
 from lagrade.errors import LagradeError
-from lagrade.mechanics.scene import SceneVariant
+from lagrade.mechanics import SceneVariant
 
 
 class FigureError(LagradeError):

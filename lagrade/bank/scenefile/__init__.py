@@ -23,9 +23,10 @@ from pathlib import Path
 
 import lagrade.untrusted as untrusted
 from lagrade.bank.scenefile.assemble import assemble
-from lagrade.bank.scenefile.declaration import Problems, read_declaration
+from lagrade.bank.scenefile.declaration import read_declaration
+from lagrade.bank.scenefile.fields import Problems
 from lagrade.errors import SceneError, SceneFileError, UnreadableInput
-from lagrade.mechanics.scene import Scene, SceneVariant
+from lagrade.mechanics import Scene, SceneVariant
 
 #: Far more than any scene needs (the bank's largest is about 4 KB), far less than a hostile file.
 MAX_SCENE_BYTES = 256 * 1024

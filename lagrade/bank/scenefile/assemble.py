@@ -18,19 +18,13 @@ from typing import Any
 import sympy as sp
 
 from lagrade.bank.scenefile.claims import Claim, read_claim
-from lagrade.bank.scenefile.declaration import BodyDecl, Declaration, Problems
+from lagrade.bank.scenefile.declaration import BodyDecl, Declaration
+from lagrade.bank.scenefile.fields import Problems
 from lagrade.bank.scenefile.figure import FigureReader
 from lagrade.bank.scenefile.reading import Reader
 from lagrade.errors import SceneError
+from lagrade.mechanics import Parameter, PointMass, Quantity, RigidBody, Scene, SpatialRigidBody
 from lagrade.mechanics import lagrange as mech
-from lagrade.mechanics.scene import (
-    Parameter,
-    PointMass,
-    Quantity,
-    RigidBody,
-    Scene,
-    SpatialRigidBody,
-)
 
 
 @dataclass

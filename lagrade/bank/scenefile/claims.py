@@ -26,7 +26,8 @@ from typing import Any
 import numpy as np
 import sympy as sp
 
-from lagrade.bank.scenefile.declaration import Declaration, Problems, QuantityDecl, expression
+from lagrade.bank.scenefile.declaration import Declaration, QuantityDecl
+from lagrade.bank.scenefile.fields import Problems, expression
 from lagrade.mechanics import lagrange as mech
 
 _DIGITS = 50

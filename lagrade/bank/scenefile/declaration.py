@@ -11,14 +11,19 @@ from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
+from lagrade.bank.scenefile.fields import (
+    Problems,
+    Text,
+    expression,
+    list_field,
+    name_field,
+    shown,
+    table_field,
+    text_field,
+    unknown_keys,
+)
 from lagrade.errors import LagradeError
-from lagrade.mechanics.domains import Domain
-from lagrade.notation.build import FUNCTIONS
-
-#: A name in a scene file: a coordinate, parameter, body, option, choice, let or quantity.
-NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]{0,31}\Z")
-#: Names that mean something already: time, pi, the functions, and `gravity` in a potential.
-RESERVED = frozenset({"t", "pi", "gravity"}) | FUNCTIONS
+from lagrade.mechanics import Domain
 
 TOP_KEYS = (
     "title",
@@ -59,16 +64,7 @@ LIMITS = {
     "renames": 8,
     "relations": 16,
 }
-MAX_TEXT = 5_000  # characters of a title, statement, wording or description
 MAX_VALUES = 64  # numbers in a parameter's value pool
-
-
-@dataclass(frozen=True)
-class Text:
-    """An expression's text and the key it sits under (`bodies.bead.position[2]`)."""
-
-    key: str
-    text: str
 
 
 @dataclass
@@ -152,147 +148,23 @@ def cartesian_axes(body: BodyDecl) -> tuple[str, ...]:
     return ("x", "y", "z", "phi") if body.inertia is not None else ("x", "y", "z")
 
 
-class Problems:
-    """The problems found in one file, each as `key: message`, in the order found."""
-
-    def __init__(self) -> None:
-        self.items: list[str] = []
-        self.blocking = 0
-
-    def add(self, key: str, message: str, blocking: bool = True) -> None:
-        """Record a problem; a `blocking` one leaves too little to derive the scene from (an
-        unknown key does not: the scene is still checked against itself, to report all)."""
-        self.items.append(f"{key}: {message}" if key else message)
-        self.blocking += blocking
-
-    def __bool__(self) -> bool:
-        return bool(self.items)
-
-
-def _shown(value: Any) -> str:
-    text = repr(value)
-    return text if len(text) <= 60 else text[:60] + "…"
-
-
-def _unknown_keys(table: Mapping, known: tuple[str, ...], where: str, problems: Problems) -> None:
-    for key in table:
-        if key not in known:
-            prefix = f"{where}." if where else ""
-            problems.add(f"{prefix}{key}", f"unknown key (known: {', '.join(known)})", False)
-
-
-#: Kinds of names that enter expressions, so cannot be a name that means something already.
-_IN_EXPRESSIONS = frozenset({"coordinate", "parameter", "let", "quantity"})
-
-
-def _name(value: Any, key: str, what: str, problems: Problems) -> bool:
-    """Whether `value` is a usable name; the problem says why not."""
-    if not isinstance(value, str) or not NAME.match(value):
-        problems.add(
-            key,
-            f"{_shown(value)} is not a {what} name (a letter, then letters, digits or _, at "
-            "most 32 characters)",
-        )
-        return False
-    if what in _IN_EXPRESSIONS and (value in RESERVED or value.endswith(("_dot", "_ddot"))):
-        problems.add(key, f"{value!r} is reserved (t, pi, gravity, the functions, *_dot, *_ddot)")
-        return False
-    return True
-
-
-#: What no text of a scene file may hold: C0 and C1 control characters, DEL, Unicode's line
-#: and paragraph separators, and the bidirectional overrides that reorder what is shown. A
-#: statement may break lines and hold tabs; a title, unit, description or wording is one line
-#: (a line break in a unit ends the answer sheet's comment it is written into, or hides a
-#: line in it).
-_NOT_IN_TEXT = re.compile(
-    "[\x00-\x08\x0b\x0c\x0e-\x1f\x7f-\x9f\u2028\u2029\u202a-\u202e\u2066-\u2069]"
-)
-_NOT_IN_ONE_LINE = re.compile("[\t\n\r]")
-
-
-def _string(
-    table: Mapping,
-    key: str,
-    where: str,
-    problems: Problems,
-    required: bool = False,
-    lines: bool = False,
-) -> str | None:
-    """A text of the file; one line unless `lines` (see _NOT_IN_TEXT)."""
-    value = table.get(key)
-    at = f"{where}.{key}" if where else key
-    if value is None:
-        if required:
-            problems.add(at, "missing")
-        return None
-    if not isinstance(value, str):
-        problems.add(at, f"{_shown(value)} is not a string")
-        return None
-    if len(value) > MAX_TEXT:
-        problems.add(at, f"longer than {MAX_TEXT:,} characters")
-        return None
-    bad = _NOT_IN_TEXT.search(value) or (None if lines else _NOT_IN_ONE_LINE.search(value))
-    if bad:
-        char = bad.group()
-        kind = (
-            "a line break"
-            if char in "\n\r\u2028\u2029\x85\x0b\x0c"
-            else ("a tab" if char == "\t" else "an invisible control character")
-        )
-        text = "text" if lines else "one line of text"
-        problems.add(
-            at,
-            f"holds {kind} ({char.encode('unicode_escape').decode()}) at character "
-            f"{bad.start() + 1}: write it as {text} without control characters",
-        )
-        return None
-    return value
-
-
-def expression(value: Any, key: str, problems: Problems) -> Text | None:
-    """An expression's text: a string, or a number written as one (`0`, `-1.2`)."""
-    if isinstance(value, bool) or not isinstance(value, str | int | float):
-        problems.add(key, f"{_shown(value)} is not an expression (write it as a string)")
-        return None
-    if isinstance(value, float) and not math.isfinite(value):
-        problems.add(key, f"{value!r} is not a finite number")
-        return None
-    return Text(key, value if isinstance(value, str) else repr(value))
-
-
-def _table(value: Any, key: str, problems: Problems, what: str = "a table") -> dict | None:
-    if not isinstance(value, dict):
-        problems.add(key, f"{_shown(value)} is not {what}")
-        return None
-    return value
-
-
-def _list(value: Any, key: str, problems: Problems, limit: int) -> list | None:
-    if not isinstance(value, list):
-        problems.add(key, f"{_shown(value)} is not a list")
-        return None
-    if len(value) > limit:
-        problems.add(key, f"{len(value)} entries; at most {limit}")
-        return None
-    return value
-
-
 def read_declaration(data: Mapping[str, Any], problems: Problems) -> Declaration:
     """The checked declaration of a scene file's table; what is wrong goes to `problems`."""
     d = Declaration()
-    _unknown_keys(data, TOP_KEYS, "", problems)
-    d.title = _string(data, "title", "", problems, required=True) or ""
-    d.statement = _string(data, "statement", "", problems, required=True, lines=True) or ""
-    tags = _list(data.get("tags", []), "tags", problems, LIMITS["tags"]) or []
-    d.tags = tuple(t for i, t in enumerate(tags) if _name(t, f"tags[{i + 1}]", "tag", problems))
+    unknown_keys(data, TOP_KEYS, "", problems)
+    d.title = text_field(data, "title", "", problems, required=True) or ""
+    d.statement = text_field(data, "statement", "", problems, required=True, lines=True) or ""
+    tags = list_field(data.get("tags", []), "tags", problems, LIMITS["tags"]) or []
+    d.tags = tuple(
+        t for i, t in enumerate(tags) if name_field(t, f"tags[{i + 1}]", "tag", problems)
+    )
     _coordinates(data, d, problems)
     _domains(data, d, problems)
     _parameters(data, d, problems)
     _relations(data, d, problems)
     _renames(data, d, problems)
     raw_bodies = data.get("bodies", {})
-    if (table := _table(raw_bodies, "bodies", problems)) is not None:
+    if (table := table_field(raw_bodies, "bodies", problems)) is not None:
         d.bodies = _bodies(table, "bodies", problems)
     for key in ("potential", "lagrangian"):
         if key in data:
@@ -311,7 +183,7 @@ def read_declaration(data: Mapping[str, Any], problems: Problems) -> Declaration
         problems.add("bodies", "missing: declare the bodies (or give the scene's lagrangian)")
     _options(data, d, problems)
     _quantities(data, d, problems)
-    if "figure" in data and (figure := _table(data["figure"], "figure", problems)) is not None:
+    if "figure" in data and (figure := table_field(data["figure"], "figure", problems)) is not None:
         d.figure = figure
     return d
 
@@ -332,9 +204,9 @@ def _coordinates(data: Mapping[str, Any], d: Declaration, problems: Problems) ->
     if raw is None:
         problems.add("coordinates", 'missing (the generalized coordinates, e.g. ["theta"])')
         return
-    items = _list(raw, "coordinates", problems, LIMITS["coordinates"]) or []
+    items = list_field(raw, "coordinates", problems, LIMITS["coordinates"]) or []
     for i, name in enumerate(items, 1):
-        if _name(name, f"coordinates[{i}]", "coordinate", problems):
+        if name_field(name, f"coordinates[{i}]", "coordinate", problems):
             if name in d.coordinates:
                 problems.add(f"coordinates[{i}]", f"{name!r} is declared twice")
             else:
@@ -345,11 +217,11 @@ def _coordinates(data: Mapping[str, Any], d: Declaration, problems: Problems) ->
 
 def _domains(data: Mapping[str, Any], d: Declaration, problems: Problems) -> None:
     """`domains = { r = "positive", theta = "(-pi/2, pi/2)" }`: where each coordinate lives."""
-    table = _table(data.get("domains", {}), "domains", problems) or {}
+    table = table_field(data.get("domains", {}), "domains", problems) or {}
     for name, text in table.items():
         key = f"domains.{name}"
         if name not in d.coordinates:
-            problems.add(key, f"{_shown(name)} is not a coordinate")
+            problems.add(key, f"{shown(name)} is not a coordinate")
             continue
         try:
             d.domains[name] = Domain.parse(text)
@@ -363,15 +235,15 @@ _INEQUALITY = re.compile(r"(<=|>=|<|>)")
 def _relations(data: Mapping[str, Any], d: Declaration, problems: Problems) -> None:
     """`relations = ["b < R"]`: each one inequality between two expressions in the parameters
     (`<` and `<=` alike: a drawn value never lands on the boundary)."""
-    items = _list(data.get("relations", []), "relations", problems, LIMITS["relations"]) or []
+    items = list_field(data.get("relations", []), "relations", problems, LIMITS["relations"]) or []
     for i, raw in enumerate(items, 1):
         key = f"relations[{i}]"
         if not isinstance(raw, str):
-            problems.add(key, f'{_shown(raw)} is not an inequality such as "b < R"')
+            problems.add(key, f'{shown(raw)} is not an inequality such as "b < R"')
             continue
         parts = _INEQUALITY.split(raw)
         if len(parts) != 3 or not parts[0].strip() or not parts[2].strip():
-            problems.add(key, f'{_shown(raw)} is not one inequality such as "b < R"')
+            problems.add(key, f'{shown(raw)} is not one inequality such as "b < R"')
             continue
         left, sign, right = parts
         small, large = (left, right) if sign.startswith("<") else (right, left)
@@ -383,32 +255,32 @@ def _dissipation(data: Mapping[str, Any], d: Declaration, problems: Problems) ->
     `forces = { x = "F_0 cos(omega t)" }`, one per coordinate they act along."""
     if "dissipation" in data:
         d.dissipation = expression(data["dissipation"], "dissipation", problems)
-    table = _table(data.get("forces", {}), "forces", problems) or {}
+    table = table_field(data.get("forces", {}), "forces", problems) or {}
     for name, value in table.items():
         key = f"forces.{name}"
         if name not in d.coordinates:
             problems.add(
-                key, f"{_shown(name)} is not a coordinate (a force is given per coordinate)"
+                key, f"{shown(name)} is not a coordinate (a force is given per coordinate)"
             )
         elif (text := expression(value, key, problems)) is not None:
             d.forces[name] = text
 
 
 def _parameters(data: Mapping[str, Any], d: Declaration, problems: Problems) -> None:
-    table = _table(data.get("parameters", {}), "parameters", problems) or {}
+    table = table_field(data.get("parameters", {}), "parameters", problems) or {}
     if len(table) > LIMITS["parameters"]:
         problems.add("parameters", f"{len(table)} parameters; at most {LIMITS['parameters']}")
         return
     for name, spec in table.items():
         key = f"parameters.{name}"
-        if not _name(name, key, "parameter", problems):
+        if not name_field(name, key, "parameter", problems):
             continue
         if name in d.coordinates:
             problems.add(key, f"{name!r} is already a coordinate")
             continue
-        if (spec := _table(spec, key, problems)) is None:
+        if (spec := table_field(spec, key, problems)) is None:
             continue
-        _unknown_keys(spec, PARAMETER_KEYS, key, problems)
+        unknown_keys(spec, PARAMETER_KEYS, key, problems)
         if "domain" not in spec:
             problems.add(f"{key}.domain", "missing (positive, nonnegative, real or an interval)")
             continue
@@ -418,19 +290,19 @@ def _parameters(data: Mapping[str, Any], d: Declaration, problems: Problems) -> 
             problems.add(f"{key}.domain", str(error))
             continue
         values = _values(spec.get("values", []), f"{key}.values", domain, problems)
-        unit = _string(spec, "unit", key, problems) or ""
-        description = _string(spec, "description", key, problems) or ""
+        unit = text_field(spec, "unit", key, problems) or ""
+        description = text_field(spec, "description", key, problems) or ""
         d.parameters.append(ParameterDecl(name, domain, unit, values, description))
 
 
 def _values(raw: Any, key: str, domain: Domain, problems: Problems) -> tuple[float, ...]:
-    items = _list(raw, key, problems, MAX_VALUES)
+    items = list_field(raw, key, problems, MAX_VALUES)
     if items is None:
         return ()
     values = []
     for i, v in enumerate(items, 1):
         if isinstance(v, bool) or not isinstance(v, int | float) or not math.isfinite(v):
-            problems.add(f"{key}[{i}]", f"{_shown(v)} is not a finite number")
+            problems.add(f"{key}[{i}]", f"{shown(v)} is not a finite number")
         elif not domain.contains(float(v)):
             problems.add(f"{key}[{i}]", f"{v} lies outside the domain {domain.text}")
         else:
@@ -442,18 +314,18 @@ def _renames(data: Mapping[str, Any], d: Declaration, problems: Problems) -> Non
     if isinstance(data.get("renames"), list):
         _rename_sets(data["renames"], d, problems)
         return
-    table = _table(data.get("renames", {}), "renames", problems) or {}
+    table = table_field(data.get("renames", {}), "renames", problems) or {}
     for coordinate, names in table.items():
         key = f"renames.{coordinate}"
         if coordinate not in d.coordinates:
             problems.add(key, f"{coordinate!r} is not a coordinate")
             continue
-        items = _list(names, key, problems, LIMITS["renames"])
+        items = list_field(names, key, problems, LIMITS["renames"])
         if not items:
             if items is not None:
                 problems.add(key, "empty")
             continue
-        if not all(_name(n, key, "coordinate", problems) for n in items):
+        if not all(name_field(n, key, "coordinate", problems) for n in items):
             continue
         if items[0] != coordinate:
             problems.add(key, f"the first name must be {coordinate!r} itself")
@@ -467,7 +339,7 @@ def _renames(data: Mapping[str, Any], d: Declaration, problems: Problems) -> Non
 def _rename_sets(raw: list, d: Declaration, problems: Problems) -> None:
     """`renames = [["x", "y"], ["q_1", "q_2"]]`: each set names every coordinate, in order, and a
     variant takes one set whole (no `q_1` beside `y`); the first set is the coordinates."""
-    sets = _list(raw, "renames", problems, LIMITS["renames"]) or []
+    sets = list_field(raw, "renames", problems, LIMITS["renames"]) or []
     found: list[tuple[str, ...]] = []
     for i, names in enumerate(sets, 1):
         key = f"renames[{i}]"
@@ -476,7 +348,7 @@ def _rename_sets(raw: list, d: Declaration, problems: Problems) -> None:
                 key, f"a set of names gives one name per coordinate ({len(d.coordinates)})"
             )
             return
-        if not all(_name(n, key, "coordinate", problems) for n in names):
+        if not all(name_field(n, key, "coordinate", problems) for n in names):
             return
         if len(set(names)) != len(names) or tuple(names) in found:
             problems.add(key, "a name is given twice, or the set is")
@@ -497,9 +369,12 @@ def _bodies(table: Mapping[str, Any], where: str, problems: Problems) -> list[Bo
     bodies = []
     for name, spec in table.items():
         key = f"{where}.{name}"
-        if not _name(name, key, "body", problems) or (spec := _table(spec, key, problems)) is None:
+        if (
+            not name_field(name, key, "body", problems)
+            or (spec := table_field(spec, key, problems)) is None
+        ):
             continue
-        _unknown_keys(spec, BODY_KEYS, key, problems)
+        unknown_keys(spec, BODY_KEYS, key, problems)
         mass = expression(spec["mass"], f"{key}.mass", problems) if "mass" in spec else None
         if "mass" not in spec:
             problems.add(f"{key}.mass", "missing")
@@ -563,7 +438,7 @@ def _spatial(
 
 
 def _expressions(raw: Any, key: str, problems: Problems) -> list[Text]:
-    items = _list(raw, key, problems, LIMITS["constraints"]) or []
+    items = list_field(raw, key, problems, LIMITS["constraints"]) or []
     found = []
     for i, x in enumerate(items, 1):
         if (text := expression(x, f"{key}[{i}]", problems)) is not None:
@@ -572,13 +447,13 @@ def _expressions(raw: Any, key: str, problems: Problems) -> list[Text]:
 
 
 def _options(data: Mapping[str, Any], d: Declaration, problems: Problems) -> None:
-    table = _table(data.get("options", {}), "options", problems) or {}
+    table = table_field(data.get("options", {}), "options", problems) or {}
     if len(table) > LIMITS["options"]:
         problems.add("options", f"{len(table)} options; at most {LIMITS['options']}")
         return
     for option, raw in table.items():
         key = f"options.{option}"
-        if not _name(option, key, "option", problems):
+        if not name_field(option, key, "option", problems):
             continue
         if isinstance(raw, list):  # plain choices: ["solid", "hollow"]
             raw = (
@@ -586,7 +461,7 @@ def _options(data: Mapping[str, Any], d: Declaration, problems: Problems) -> Non
                 if all(isinstance(c, str) for c in raw)
                 else raw
             )
-        if (choices := _table(raw, key, problems, "a table of choices")) is None:
+        if (choices := table_field(raw, key, problems, "a table of choices")) is None:
             continue
         if not choices or len(choices) > LIMITS["choices"]:
             problems.add(key, f"offers {len(choices)} choices; from 1 to {LIMITS['choices']}")
@@ -597,51 +472,56 @@ def _options(data: Mapping[str, Any], d: Declaration, problems: Problems) -> Non
 
 
 def _choice(name: str, spec: Any, key: str, problems: Problems) -> ChoiceDecl | None:
-    if not _name(name, key, "choice", problems) or (spec := _table(spec, key, problems)) is None:
+    if (
+        not name_field(name, key, "choice", problems)
+        or (spec := table_field(spec, key, problems)) is None
+    ):
         return None
-    _unknown_keys(spec, CHOICE_KEYS, key, problems)
-    choice = ChoiceDecl(name, key, wording=_string(spec, "wording", key, problems))
-    lets = _table(spec.get("let", {}), f"{key}.let", problems) or {}
+    unknown_keys(spec, CHOICE_KEYS, key, problems)
+    choice = ChoiceDecl(name, key, wording=text_field(spec, "wording", key, problems))
+    lets = table_field(spec.get("let", {}), f"{key}.let", problems) or {}
     if len(lets) > LIMITS["lets"]:
         problems.add(f"{key}.let", f"{len(lets)} names; at most {LIMITS['lets']}")
         lets = {}
     for let, value in lets.items():
-        if _name(let, f"{key}.let.{let}", "let", problems):
+        if name_field(let, f"{key}.let.{let}", "let", problems):
             if (text := expression(value, f"{key}.let.{let}", problems)) is not None:
                 choice.lets[let] = text
-    if "bodies" in spec and (bodies := _table(spec["bodies"], f"{key}.bodies", problems)):
+    if "bodies" in spec and (bodies := table_field(spec["bodies"], f"{key}.bodies", problems)):
         choice.bodies = _bodies(bodies, f"{key}.bodies", problems)
     choice.constraints = _expressions(spec.get("constraints", []), f"{key}.constraints", problems)
-    if "figure" in spec and (figure := _table(spec["figure"], f"{key}.figure", problems)):
+    if "figure" in spec and (figure := table_field(spec["figure"], f"{key}.figure", problems)):
         choice.figure = figure
     return choice
 
 
 def _quantities(data: Mapping[str, Any], d: Declaration, problems: Problems) -> None:
-    table = _table(data.get("quantities", {}), "quantities", problems) or {}
+    table = table_field(data.get("quantities", {}), "quantities", problems) or {}
     if len(table) > LIMITS["quantities"]:
         problems.add("quantities", f"{len(table)} quantities; at most {LIMITS['quantities']}")
         return
     for name, spec in table.items():
         key = f"quantities.{name}"
-        if not _name(name, key, "quantity", problems) or not (spec := _table(spec, key, problems)):
+        if not name_field(name, key, "quantity", problems) or not (
+            spec := table_field(spec, key, problems)
+        ):
             continue
-        _unknown_keys(spec, QUANTITY_KEYS, key, problems)
+        unknown_keys(spec, QUANTITY_KEYS, key, problems)
         if "value" not in spec:
             problems.add(f"{key}.value", "missing (the closed form in the parameters)")
             continue
         value = expression(spec["value"], f"{key}.value", problems)
         check = None
-        if "check" in spec and (check := _table(spec["check"], f"{key}.check", problems)):
-            _unknown_keys(check, CHECK_KEYS, f"{key}.check", problems)
+        if "check" in spec and (check := table_field(spec["check"], f"{key}.check", problems)):
+            unknown_keys(check, CHECK_KEYS, f"{key}.check", problems)
         if value is not None:
             d.quantities.append(
                 QuantityDecl(
                     name,
                     key,
-                    _string(spec, "description", key, problems, required=True) or "",
+                    text_field(spec, "description", key, problems, required=True) or "",
                     value,
-                    _string(spec, "unit", key, problems) or "",
+                    text_field(spec, "unit", key, problems) or "",
                     check,
                 )
             )

@@ -30,9 +30,10 @@ from typing import Any
 
 import sympy as sp
 
-from lagrade.bank.scenefile.declaration import Declaration, Problems, expression
+from lagrade.bank.scenefile.declaration import Declaration
+from lagrade.bank.scenefile.fields import Problems, expression
 from lagrade.bank.scenefile.reading import Reader
-from lagrade.mechanics.figure import FIXTURE_KINDS, FigureHint, Fixture
+from lagrade.mechanics import FIXTURE_KINDS, FigureHint, Fixture
 
 FIGURE_KEYS = (
     "poses",

@@ -16,7 +16,8 @@ from collections.abc import Iterable
 
 import sympy as sp
 
-from lagrade.bank.scenefile.declaration import Declaration, Problems, Text, cartesian_axes
+from lagrade.bank.scenefile.declaration import Declaration, cartesian_axes
+from lagrade.bank.scenefile.fields import Problems, Text
 from lagrade.errors import LagradeError, ParseError
 from lagrade.mechanics import lagrange as mech
 from lagrade.notation import Vocabulary, parse_expression

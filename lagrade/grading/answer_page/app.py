@@ -28,7 +28,7 @@ from starlette.responses import HTMLResponse, JSONResponse, PlainTextResponse, R
 from starlette.routing import Route
 
 import lagrade.untrusted as untrusted
-from lagrade.assign.templating import environment
+from lagrade.assign import environment
 from lagrade.errors import UnreadableInput
 from lagrade.grading.answer_page import saving
 from lagrade.grading.answer_page.room import ClassRoom

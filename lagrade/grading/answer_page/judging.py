@@ -25,8 +25,7 @@ import lagrade.grading.resume as resume
 from lagrade.grading.answer_page import preview as preview_module
 from lagrade.grading.rubric import Rubric
 from lagrade.grading.student import grade_student, warm_up
-from lagrade.judge.live import LivePool
-from lagrade.judge.worker import Limits, Outcome
+from lagrade.judge import Limits, LivePool, Outcome
 
 #: Seconds an item has before its first part sets its own deadline (reading a saved sheet).
 ITEM_SECONDS = 20.0

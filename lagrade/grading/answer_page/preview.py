@@ -14,8 +14,7 @@ from collections.abc import Mapping
 from typing import Any
 
 from lagrade.grading.student import part_spec, question
-from lagrade.judge.clocks import PartTimeout, time_limit
-from lagrade.judge.read import read_answer
+from lagrade.judge import PartTimeout, read_answer, time_limit
 
 #: Seconds one preview may take (a preview is asked at every pause in typing).
 PREVIEW_TIME_LIMIT = 3.0

@@ -19,9 +19,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from lagrade.assign.assignment import Assignment, load_assignment
-from lagrade.assign.variants import VariantChoice
-from lagrade.assign.views import MULTILINE, problem_view
+from lagrade.assign import MULTILINE, Assignment, VariantChoice, load_assignment, problem_view
 from lagrade.grading.answer_page.due import DueRule, due_rule
 from lagrade.grading.answer_page.judging import Judging
 from lagrade.grading.answer_page.settings import PageSettings, load_settings

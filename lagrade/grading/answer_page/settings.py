@@ -20,7 +20,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from lagrade.assign.assignment import assignment_table
+from lagrade.assign import assignment_table
 from lagrade.errors import RequestError
 from lagrade.grading.instants import read_instant, zone
 

@@ -11,7 +11,7 @@ from pathlib import Path
 from typing import Any
 
 import lagrade.grading.atomic as atomic
-from lagrade.assign.templating import one_line, toml_literal, toml_string
+from lagrade.assign import one_line, toml_literal, toml_string
 from lagrade.errors import OutputError
 from lagrade.grading.savelog import Save, SaveLog, modified_ns
 from lagrade.grading.submission import (

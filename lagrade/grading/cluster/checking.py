@@ -21,8 +21,7 @@ from lagrade.errors import LagradeError
 from lagrade.grading.cluster.chunks import chunk_size, cut, describe, settled
 from lagrade.grading.cluster.connect import connect, threads
 from lagrade.grading.cluster.on_worker import check_chunk
-from lagrade.judge.check import MAX_ID_LENGTH
-from lagrade.judge.verdict import Verdict
+from lagrade.judge import MAX_ID_LENGTH, Verdict
 
 #: Request lines read, cut and sent per round (the parent holds two rounds at most).
 ROUND = 5_000

@@ -21,7 +21,7 @@ from lagrade.grading.cluster.on_worker import error_outcome, grade_chunk, hold
 from lagrade.grading.rubric import Rubric
 from lagrade.grading.student import asked_questions, part_spec, structure_key
 from lagrade.grading.submission import read_regular_file
-from lagrade.judge.worker import Limits, Outcome
+from lagrade.judge import Limits, Outcome
 
 #: Chunks in flight per thread of the cluster: one running, one waiting, so that a thread never
 #: idles between chunks; the rest wait here, unread.

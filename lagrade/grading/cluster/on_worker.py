@@ -20,11 +20,9 @@ import threading
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
-from lagrade.assign.manifest import project_version
+from lagrade.assign import project_version
 from lagrade.errors import ClusterError
-from lagrade.judge.check import check_pool, run_batch
-from lagrade.judge.driver import forget_problems
-from lagrade.judge.worker import Limits, Outcome, Pool
+from lagrade.judge import Limits, Outcome, Pool, check_pool, forget_problems, run_batch
 
 if TYPE_CHECKING:
     from lagrade.grading.rubric import Rubric

@@ -18,7 +18,7 @@ from fractions import Fraction
 from typing import Any
 
 from lagrade.judge.evaluate.program import PI, I, Program, constant
-from lagrade.notation.screen import fold
+from lagrade.notation import fold
 
 #: The parser's function names → (instruction, constant power): sqrt is x^(1/2) as in sympy.
 _CALLS: dict[str, tuple[str, Fraction | None]] = {

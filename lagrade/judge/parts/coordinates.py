@@ -10,7 +10,7 @@ from lagrade.judge.parts.items import list_items
 from lagrade.judge.parts.reading import read_names
 from lagrade.judge.problem import Problem
 from lagrade.judge.verdict import Verdict
-from lagrade.notation.parse import NameRead
+from lagrade.notation import NameRead
 
 
 def read_coordinates(problem: Problem, answer: Any) -> list[NameRead]:

@@ -14,8 +14,7 @@ from lagrade.judge.parts.reading import own_lagrangian, read_names
 from lagrade.judge.problem import Problem
 from lagrade.judge.verdict import Verdict
 from lagrade.mechanics import LagrangianSystem, identically_zero
-from lagrade.notation.parse import NameRead
-from lagrade.notation.printer import plain
+from lagrade.notation import NameRead, plain
 
 
 def read_cyclic(problem: Problem, answer: Any) -> list[NameRead]:

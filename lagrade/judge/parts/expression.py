@@ -36,7 +36,7 @@ from lagrade.judge.sampling import coordinate_range
 from lagrade.judge.situation import unit_text
 from lagrade.judge.tolerances import NUMERIC_TOLERANCE, ROUNDING
 from lagrade.judge.verdict import Verdict
-from lagrade.mechanics.domains import Domain
+from lagrade.mechanics import Domain
 
 
 def _domains_for(problem: Problem) -> dict:

@@ -18,8 +18,7 @@ from typing import Any
 import sympy as sp
 
 from lagrade.errors import ParseError, RequestError
-from lagrade.notation.limits import MAX_TOTAL_LENGTH
-from lagrade.notation.parse import is_latex
+from lagrade.notation import MAX_TOTAL_LENGTH, is_latex
 
 #: What a student writes for an empty list (no cyclic coordinate, no conserved quantity).
 NONE_WORDS = frozenset({"none", "no", "-", "", "∅", "nothing"})

@@ -37,14 +37,21 @@ from lagrade.judge.sampling import Points, seed_for
 from lagrade.judge.situation import rounded
 from lagrade.judge.tolerances import ROUNDING, SAME_FREQUENCY
 from lagrade.judge.verdict import Verdict, invalid
-from lagrade.mechanics import SmallOscillations, frequencies_from
-from lagrade.mechanics.oscillations import ZERO_MODE, deciding_values, generalized_eigenvalues
+from lagrade.mechanics import (
+    ZERO_MODE,
+    SmallOscillations,
+    deciding_values,
+    frequencies_from,
+    generalized_eigenvalues,
+    phase_space,
+    small_oscillations,
+)
 
 
 def oscillations(problem: Problem) -> SmallOscillations:
     """The question's equilibria and modes, the stable one chosen at the handout's values (the
     middle of each domain where a value is missing: an ad-hoc Lagrangian)."""
-    return problem.system.small_oscillations(deciding_values(problem.values, problem.domains))
+    return small_oscillations(problem.system, deciding_values(problem.values, problem.domains))
 
 
 def _stable(problem: Problem, part: str):
@@ -60,7 +67,7 @@ def _matrices(problem: Problem) -> dict:
     cache = problem.__dict__.setdefault("_oscillation", {})
     if not cache:
         osc = oscillations(problem)
-        hs = problem.system.phase_space
+        hs = phase_space(problem.system)
         qs = [j.q for j in problem.jets]
         U = hs.effective_potential
         cache["gradient"] = [Compiled.of(sp.diff(U, q)) for q in qs]

@@ -44,14 +44,14 @@ from lagrade.judge.sampling import coordinate_range
 from lagrade.judge.situation import symbol_text
 from lagrade.judge.tolerances import SAME_VALUE
 from lagrade.judge.verdict import Verdict
-from lagrade.mechanics.lagrange import Jet
-from lagrade.mechanics.reparametrize import (
+from lagrade.mechanics import (
+    Jet,
     Reparametrized,
     cartesian_symbols,
+    collapse_trig,
     coordinates_through_positions,
     coordinates_to_carry,
 )
-from lagrade.mechanics.scene import _tidy
 
 #: The parts judged in the student's coordinates when their transformation is valid.
 FOLLOWING = frozenset({"lagrangian", "T", "V", "eom", "momenta", "cyclic", "conserved"})
@@ -231,7 +231,7 @@ def _tidied(expr: sp.Expr, problem: Problem) -> sp.Expr:
     (a radius: the reference is judged only there)."""
     rooted = expr.replace(
         lambda e: e.is_Pow and e.exp.is_Rational and e.exp.q == 2,
-        lambda e: sp.Pow(_tidy(e.base), e.exp),
+        lambda e: sp.Pow(collapse_trig(e.base), e.exp),
     )
     positive = {sp.Abs(j.q): j.q for j in problem.jets if coordinate_range(j.name)[0] > 0}
     return rooted.xreplace(positive) if positive else rooted

@@ -23,7 +23,7 @@ from lagrade.judge.parts.items import single_text
 from lagrade.judge.parts.reading import ADDITIVE_CONSTANTS, Read, not_labelled, read, read_parsed
 from lagrade.judge.problem import Problem, parser
 from lagrade.judge.sampling import Points
-from lagrade.mechanics import HamiltonianSystem, momentum_jet
+from lagrade.mechanics import HamiltonianSystem, momentum_jet, phase_space
 
 #: The sample points of the parts on phase space: those of `eom` (the mass matrix regular, so
 #: the Legendre map is invertible there).
@@ -32,7 +32,7 @@ POINTS = "eom"
 
 def phase_system(problem: Problem) -> HamiltonianSystem:
     """The question's H and Hamilton's equations (derived on first use)."""
-    return problem.system.phase_space
+    return phase_space(problem.system)
 
 
 def momentum_symbols(problem: Problem) -> tuple[sp.Symbol, ...]:

@@ -20,8 +20,7 @@ from lagrade.judge.parts.ambiguity import note_ambiguous
 from lagrade.judge.parts.items import single_text
 from lagrade.judge.problem import Problem, parser
 from lagrade.judge.verdict import unreadable_line
-from lagrade.notation.parse import NameRead
-from lagrade.notation.printer import plain
+from lagrade.notation import NameRead, plain
 
 
 class Side:

@@ -25,7 +25,7 @@ from lagrade.judge.problem import NEEDS_BODIES, Problem
 from lagrade.judge.rows import row_rank
 from lagrade.judge.sampling import Points
 from lagrade.judge.verdict import Verdict, invalid
-from lagrade.notation.printer import plain
+from lagrade.notation import plain
 
 
 def check_transformation(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
