@@ -94,7 +94,7 @@ class Part:
 
 
 @dataclass(frozen=True)
-class Problem:
+class AssignedProblem:
     """A scene with the parts to ask and the limits of its variant pool. `scene_ref` is the
     assignment's `scene` as written (a bank id or a scene file's path); `loaded` the scene it
     names, read when the assignment was."""
@@ -125,7 +125,7 @@ class Assignment:
     title: str
     course: str
     due: str
-    problems: tuple[Problem, ...]
+    problems: tuple[AssignedProblem, ...]
     instructions: str = ""
 
     @property
@@ -239,7 +239,7 @@ def parse_assignment(
         problems.append(f"points: {default_points!r} is not a positive number")
         default_points = 1
     raw_problems = data.get("problems")
-    parsed: list[Problem] = []
+    parsed: list[AssignedProblem] = []
     if not isinstance(raw_problems, list) or not raw_problems:
         problems.append("problems: the assignment asks no problem (add [[problems]] tables)")
     else:
@@ -272,9 +272,9 @@ def _is_points(value: Any) -> bool:
     return isinstance(value, int | float) and not isinstance(value, bool) and value > 0
 
 
-def _one_scene_per_id(parsed: list[Problem], problems: list[str]) -> None:
+def _one_scene_per_id(parsed: list[AssignedProblem], problems: list[str]) -> None:
     """Two different scenes under one id would share figures, manifest entries and variants."""
-    seen: dict[str, Problem] = {}
+    seen: dict[str, AssignedProblem] = {}
     for p in parsed:
         first = seen.setdefault(p.scene_id, p)
         if first.scene is not p.scene:
@@ -290,7 +290,7 @@ def _indented(message: str) -> str:
 
 def _parse_problem(
     index: int, raw: Any, default_points: float, problems: list[str], resolve: SceneResolver
-) -> Problem | None:
+) -> AssignedProblem | None:
     where = f"problems[{index}]"
     if not isinstance(raw, dict):
         problems.append(f"{where}: {raw!r} is not a table")
@@ -333,7 +333,7 @@ def _parse_problem(
         title = ""
     if scene is None or len(problems) > before:
         return None
-    return Problem(
+    return AssignedProblem(
         index, scene.id, tuple(parts), title or scene.title, variants, names, options,
         scene_ref, scene,
     )  # fmt: skip

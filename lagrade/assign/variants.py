@@ -17,7 +17,7 @@ import hashlib
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 
-from lagrade.assign.assignment import Problem
+from lagrade.assign.assignment import AssignedProblem
 from lagrade.mechanics import Scene, SceneVariant
 
 #: Candidate seeds tried per wanted variant before the pool is taken as exhausted.
@@ -58,7 +58,9 @@ def variant_seed(assignment_seed: int, problem_index: int, k: int) -> int:
     return digest("lagrade-pool", assignment_seed, problem_index, k) >> 33
 
 
-def build_pool(problem: Problem, assignment_seed: int, wanted: int) -> tuple[VariantChoice, ...]:
+def build_pool(
+    problem: AssignedProblem, assignment_seed: int, wanted: int
+) -> tuple[VariantChoice, ...]:
     """Up to `wanted` distinct variants allowed by the problem's `names` and `options`; fewer
     when the scene offers fewer combinations."""
     scene = problem.scene
@@ -83,7 +85,7 @@ def build_pool(problem: Problem, assignment_seed: int, wanted: int) -> tuple[Var
 
 
 def assign(
-    problem: Problem,
+    problem: AssignedProblem,
     assignment_seed: int,
     student_ids: Sequence[str],
     pool: Sequence[VariantChoice],
@@ -108,7 +110,7 @@ def assign(
 
 
 def student_variants(
-    problem: Problem, assignment_seed: int, student_ids: Sequence[str]
+    problem: AssignedProblem, assignment_seed: int, student_ids: Sequence[str]
 ) -> dict[str, VariantChoice]:
     """The pool (as large as `problem.variants`, or one per student) and each student's draw."""
     wanted = problem.variants or max(1, len(student_ids))

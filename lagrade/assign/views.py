@@ -13,7 +13,7 @@ from typing import Any
 import sympy as sp
 from markupsafe import Markup
 
-from lagrade.assign.assignment import EXPRESSION, Problem
+from lagrade.assign.assignment import EXPRESSION, AssignedProblem
 from lagrade.assign.figures import draw
 from lagrade.assign.phase_solution import PHASE_PARTS, PHASE_PROMPTS, phase_solution
 from lagrade.assign.prose import Prose, render_prose
@@ -196,7 +196,7 @@ def _number(value: sp.Expr) -> str:
     return f"{number.real:.4g}"
 
 
-def problem_view(problem: Problem, choice: VariantChoice, name: str) -> dict[str, Any]:
+def problem_view(problem: AssignedProblem, choice: VariantChoice, name: str) -> dict[str, Any]:
     """Everything a template shows about one student's variant of one problem; `name` is the
     figure's file name (without extension) in the `figures/` folder."""
     scene = problem.scene
@@ -239,7 +239,7 @@ def problem_view(problem: Problem, choice: VariantChoice, name: str) -> dict[str
     }
 
 
-def _phase(problem: Problem, choice: VariantChoice) -> dict[str, Any]:
+def _phase(problem: AssignedProblem, choice: VariantChoice) -> dict[str, Any]:
     """The solution of the parts on phase space and small oscillations, when one is asked."""
     if not any(part.part in PHASE_PARTS for part in problem.parts):
         return {}
@@ -247,7 +247,7 @@ def _phase(problem: Problem, choice: VariantChoice) -> dict[str, Any]:
     return phase_solution(problem.scene, *presentation(choice), values)
 
 
-def key_answers(problem: Problem, choice: VariantChoice) -> dict[str, Any]:
+def key_answers(problem: AssignedProblem, choice: VariantChoice) -> dict[str, Any]:
     """Every answer of the key as a student types it, by part (by quantity for an expression
     part): the text the grader checks before it accepts a variant."""
     symbolic = symbolic_solution(problem.scene, *presentation(choice))
@@ -278,7 +278,7 @@ def _parameters(choice: VariantChoice, variant: SceneVariant) -> list[dict[str, 
 
 
 def _quantities(
-    problem: Problem, choice: VariantChoice, variant: SceneVariant
+    problem: AssignedProblem, choice: VariantChoice, variant: SceneVariant
 ) -> dict[str, dict[str, Any]]:
     """The quantities the expression parts ask for: closed form, and value at the student's
     parameter values."""
@@ -308,7 +308,7 @@ def _quantities(
     return quantities
 
 
-def _parts(problem: Problem, variant: SceneVariant) -> list[dict[str, Any]]:
+def _parts(problem: AssignedProblem, variant: SceneVariant) -> list[dict[str, Any]]:
     """The parts asked, each with its prompt, points, unit (numeric follow-ups) and the names
     its answer may use."""
     declared = {q.name: q for q in problem.scene.quantities}
@@ -342,7 +342,7 @@ def _parts(problem: Problem, variant: SceneVariant) -> list[dict[str, Any]]:
     return parts
 
 
-def _sheet(problem: Problem, answers: dict[str, Any]) -> str:
+def _sheet(problem: AssignedProblem, answers: dict[str, Any]) -> str:
     """The problem's key in the answer sheet's own TOML, as a student would hand it in."""
     lines = [f"[problem{problem.index}]"]
     for part in problem.parts:
@@ -374,7 +374,7 @@ def presentation(choice: VariantChoice) -> tuple[tuple, tuple]:
     return tuple(sorted(choice.names.items())), tuple(sorted(choice.options.items()))
 
 
-def figure_name(problem: Problem, choice: VariantChoice) -> str:
+def figure_name(problem: AssignedProblem, choice: VariantChoice) -> str:
     """`p<index>-<scene>-<digest of names and options>`: students who share a presentation
     share a figure file."""
     tag = json.dumps([sorted(choice.names.items()), sorted(choice.options.items())])

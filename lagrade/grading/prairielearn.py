@@ -32,9 +32,9 @@ import lagrade.grading.atomic as atomic
 import lagrade.untrusted as untrusted
 from lagrade.assign import (
     MULTILINE,
+    AssignedProblem,
     Assignment,
     Part,
-    Problem,
     VariantChoice,
     build_pool,
     load_assignment,
@@ -98,12 +98,12 @@ def vendored_folder(out: Path) -> Path:
     return found
 
 
-def _folder_name(assignment: Assignment, problem: Problem) -> str:
+def _folder_name(assignment: Assignment, problem: AssignedProblem) -> str:
     slug = re.sub(r"[^a-z0-9]+", "-", assignment.title.lower()).strip("-")[:40] or "lagrade"
     return f"{slug}-p{problem.index}-{problem.scene.id}"
 
 
-def _info(assignment: Assignment, problem: Problem) -> dict[str, Any]:
+def _info(assignment: Assignment, problem: AssignedProblem) -> dict[str, Any]:
     """info.json: the uuid is derived from the assignment's title and the problem, so that a
     re-export updates the same PrairieLearn question instead of making a new one."""
     name = f"{assignment.title}\x1f{problem.index}\x1f{problem.scene.id}"
@@ -116,7 +116,7 @@ def _info(assignment: Assignment, problem: Problem) -> dict[str, Any]:
     }
 
 
-def _question_html(problem: Problem) -> str:
+def _question_html(problem: AssignedProblem) -> str:
     """PrairieLearn's mustache, not jinja: the statement and prompts come rendered (escaped) in
     `params` from `generate` (`{{{ }}}`); everything from a submission is plain text in
     `feedback`, escaped by mustache (`{{ }}`)."""
@@ -219,7 +219,7 @@ def test(data):
 def _server_py(
     assignment_text: str,
     scenes: Mapping[str, str],
-    problem: Problem,
+    problem: AssignedProblem,
     pool: tuple[VariantChoice, ...],
     vendored: str,
 ) -> str:

@@ -14,7 +14,7 @@ from typing import Any
 import lagrade.grading.resume as resume
 from lagrade.assign import (
     EXPRESSION,
-    Problem,
+    AssignedProblem,
     VariantChoice,
     environment,
     key_answers,
@@ -132,12 +132,12 @@ def _read_part(task: Mapping[str, Any], entry: Mapping[str, Any], part: Any) -> 
     return {"read": read, "unreadable": reading.unreadable_lines}
 
 
-_problems: dict[tuple[str, int, str], tuple[Problem, Rubric]] = {}
+_problems: dict[tuple[str, int, str], tuple[AssignedProblem, Rubric]] = {}
 
 
 def problem_of(
     assignment: str, index: int, scenes: Mapping[str, str] | None = None
-) -> tuple[Problem, Rubric]:
+) -> tuple[AssignedProblem, Rubric]:
     """The assignment's problem and rubric, parsed once per process; its scenes from the texts
     server.py carries (a question exported before scene files names bank scenes only)."""
     key = (assignment, index, json.dumps(dict(scenes or {}), sort_keys=True))

@@ -15,7 +15,7 @@ from lagrade.judge.tolerances import DIFFERENT_ABOVE, EQUAL_BELOW, MP_EQUAL_BELO
 
 
 @dataclass(frozen=True)
-class Outcome:
+class Decision:
     """A decision: equal or not, which method decided, the worst ratio of residual to term size,
     and when different the index of a point where the answers differ (and why)."""
 
@@ -29,7 +29,7 @@ class Outcome:
 Residual = Callable[[object], tuple[np.ndarray, np.ndarray]]
 
 
-def decide(residual: Residual, backends: tuple = (FLOAT, MP)) -> Outcome:
+def decide(residual: Residual, backends: tuple = (FLOAT, MP)) -> Decision:
     """Decide whether `residual` vanishes identically. `residual(backend)` returns arrays
     (r, s) of the residual and the size of the terms it is made of, per point (a second axis
     is allowed: several components per point). nan in r means the answer is undefined there.
@@ -50,21 +50,21 @@ def decide(residual: Residual, backends: tuple = (FLOAT, MP)) -> Outcome:
     worst = float(per_point[finite].max()) if finite.any() else 0.0
     if finite.all():
         if worst < EQUAL_BELOW:
-            return Outcome(True, "numeric", worst)
+            return Decision(True, "numeric", worst)
         if worst > DIFFERENT_ABOVE:
-            return Outcome(False, "numeric", worst, int(per_point.argmax()))
+            return Decision(False, "numeric", worst, int(per_point.argmax()))
     elif worst > DIFFERENT_ABOVE:
         # different where both sides have values: the counter-example is quoted there, not at
         # a point where one side is undefined
         differ = np.flatnonzero(finite & (per_point > DIFFERENT_ABOVE))
-        return Outcome(False, "numeric", math.inf, int(differ[per_point[differ].argmax()]))
+        return Decision(False, "numeric", math.inf, int(differ[per_point[differ].argmax()]))
     with mpmath.workdps(MP_DIGITS), np.errstate(all="ignore"):
         try:
             r_mp, s_mp = residual(mp_backend)
         except (ZeroDivisionError, OverflowError, ValueError):
             # mpmath raises where float64 gives inf or nan (1/0, 0 ** -1): undefined there.
             where = int(np.flatnonzero(~finite)[0]) if not finite.all() else int(per_point.argmax())
-            return Outcome(False, "numeric+mpmath50", math.inf, where, "undefined")
+            return Decision(False, "numeric+mpmath50", math.inf, where, "undefined")
         ratio_mp = np.array(
             [_mp_ratio(a, b) for a, b in zip(np.ravel(r_mp), np.ravel(s_mp), strict=True)]
         ).reshape(np.shape(r_mp))
@@ -73,11 +73,11 @@ def decide(residual: Residual, backends: tuple = (FLOAT, MP)) -> Outcome:
     )
     if not np.all(np.isfinite(per_point)):
         where = int(np.flatnonzero(~np.isfinite(per_point))[0])
-        return Outcome(False, "numeric+mpmath50", math.inf, where, "undefined")
+        return Decision(False, "numeric+mpmath50", math.inf, where, "undefined")
     worst_mp = float(per_point.max())
     if worst_mp < MP_EQUAL_BELOW:
-        return Outcome(True, "numeric+mpmath50", worst_mp)
-    return Outcome(False, "numeric+mpmath50", worst_mp, int(per_point.argmax()))
+        return Decision(True, "numeric+mpmath50", worst_mp)
+    return Decision(False, "numeric+mpmath50", worst_mp, int(per_point.argmax()))
 
 
 def _ratio(r: np.ndarray, s: np.ndarray) -> np.ndarray:

@@ -24,7 +24,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from lagrade.judge.compiled import Compiled, to_length, total
-from lagrade.judge.decision import EQUAL_BELOW, Outcome, decide
+from lagrade.judge.decision import EQUAL_BELOW, Decision, decide
 from lagrade.judge.derivatives import euler_lagrange_values
 from lagrade.judge.evaluate import FLOAT
 from lagrade.judge.sampling import Points, memo_inputs
@@ -42,7 +42,7 @@ def reference_values(reference: Compiled, points: Points, backend=FLOAT) -> tupl
     )[1]
 
 
-def expressions_equal(answer: Compiled, reference: Compiled, points: Points) -> Outcome:
+def expressions_equal(answer: Compiled, reference: Compiled, points: Points) -> Decision:
     """answer ≡ reference on the domain: a − b vanishes at every point, relative to the terms;
     in complex arithmetic where the reference is complex (`Points.complex_values`)."""
 
@@ -55,7 +55,7 @@ def expressions_equal(answer: Compiled, reference: Compiled, points: Points) -> 
     return decide(residual, points.backends)
 
 
-def differ_by_constant(answer: Compiled, reference: Compiled, points: Points) -> Outcome:
+def differ_by_constant(answer: Compiled, reference: Compiled, points: Points) -> Decision:
     """answer − reference is the same number at all points of a parameter group (another zero
     level of a potential): the residual is the spread of the difference within each group."""
 
@@ -86,7 +86,7 @@ def offset_removed(values, group: np.ndarray):
     return values - first, abs(first)
 
 
-def values_equal(answer: Compiled, values: Callable[[object], tuple], points: Points) -> Outcome:
+def values_equal(answer: Compiled, values: Callable[[object], tuple], points: Points) -> Decision:
     """answer ≡ a reference given only by its values at the points (`values(backend)` returns
     (value, size)), e.g. the momenta of a student's own Lagrangian."""
 
@@ -112,7 +112,7 @@ def common_factor(factors: Sequence[float]) -> float | None:
 class LagrangianMatch:
     """How a Lagrangian relates to a reference: E(L′) = c E(L) with c per parameter group."""
 
-    outcome: Outcome
+    outcome: Decision
     factors: tuple[float, ...] = ()  # c per parameter group
     answer_el: tuple[np.ndarray, np.ndarray] | None = None  # E(answer) and its size, float64
 

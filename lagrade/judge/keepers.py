@@ -25,7 +25,7 @@ from lagrade.judge.sampling import Points
 from lagrade.judge.tolerances import SAME_FACTOR, SAME_VALUE
 
 
-class Catalogue(Protocol):
+class CatalogueView(Protocol):
     """What the filters use of their catalogue (`lagrade.judge.catalogue.Catalogue`)."""
 
     problem: Any
@@ -40,7 +40,7 @@ class Catalogue(Protocol):
 
 
 def fingerprint(
-    catalogue: Catalogue, compiled: Compiled, mode: str, points: Points
+    catalogue: CatalogueView, compiled: Compiled, mode: str, points: Points
 ) -> np.ndarray | None:
     """What the part's test sees of an answer: E(L) (at the scale written: a multiple of a
     mutant is another explanation), plain values, or values up to a constant per parameter
@@ -55,7 +55,7 @@ def fingerprint(
 
 
 def keeper(
-    catalogue: Catalogue, mode: str, reference_of: Callable[[], Compiled]
+    catalogue: CatalogueView, mode: str, reference_of: Callable[[], Compiled]
 ) -> Callable[[Mutant], bool]:
     """The filter that drops mutants that change nothing the part's test sees, and
     duplicates (the first, most specific, wins), by fingerprint at the part's points; it
@@ -90,7 +90,7 @@ def keeper(
     return keep
 
 
-def same_dynamics(catalogue: Catalogue, m: Mutant, reference: Compiled, points: Points) -> bool:
+def same_dynamics(catalogue: CatalogueView, m: Mutant, reference: Compiled, points: Points) -> bool:
     """A 'mistake' whose Euler–Lagrange equations are a multiple of the reference's is no
     mistake: the Lagrangian check accepts it (or, negative, names the convention), so the
     catalogue must not name it. The float64
@@ -112,7 +112,7 @@ def same_dynamics(catalogue: Catalogue, m: Mutant, reference: Compiled, points: 
     return bool(match.outcome.equal) and bool(factors) and same_sign
 
 
-def row_keeper(catalogue: Catalogue) -> Callable[[tuple[int, Mutant]], bool]:
+def row_keeper(catalogue: CatalogueView) -> Callable[[tuple[int, Mutant]], bool]:
     """`keeper` for row mutants: a mutated row that still follows from the right equations
     changes nothing, and equal rows are duplicates (rows that differ by a factor are not: see
     the module's docstring)."""

@@ -4,11 +4,11 @@ from __future__ import annotations
 
 from collections import Counter
 
-from lagrade.assign.assignment import Part, Problem
+from lagrade.assign.assignment import AssignedProblem, Part
 from lagrade.assign.variants import build_pool, digest, student_variants
 
-WEDGE = Problem(1, "wedge", (Part("lagrangian", 1),))
-HOOP = Problem(2, "hoop", (Part("lagrangian", 1),))
+WEDGE = AssignedProblem(1, "wedge", (Part("lagrangian", 1),))
+HOOP = AssignedProblem(2, "hoop", (Part("lagrangian", 1),))
 
 
 def test_digest_is_stable_across_processes() -> None:
@@ -31,7 +31,7 @@ def test_pool_is_reproducible_by_scene_variant() -> None:
 
 
 def test_small_pool_is_spread_evenly() -> None:
-    problem = Problem(1, "wedge", (Part("lagrangian", 1),), variants=4)
+    problem = AssignedProblem(1, "wedge", (Part("lagrangian", 1),), variants=4)
     chosen = student_variants(problem, 5, [f"s{i}" for i in range(13)])
     counts = Counter(c.key for c in chosen.values())
     assert len(counts) == 4 and max(counts.values()) - min(counts.values()) <= 1
@@ -46,7 +46,7 @@ def test_exhausted_scene_spreads_over_every_combination() -> None:
 
 
 def test_restricted_names_are_respected() -> None:
-    problem = Problem(1, "wedge", (Part("lagrangian", 1),), names={"x_M": ("X",)})
+    problem = AssignedProblem(1, "wedge", (Part("lagrangian", 1),), names={"x_M": ("X",)})
     chosen = student_variants(problem, 5, [f"s{i}" for i in range(10)])
     assert {c.names["x_M"] for c in chosen.values()} == {"X"}
 

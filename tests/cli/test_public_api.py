@@ -140,11 +140,11 @@ EXPORTS = {
         "verify_variant",
     ],
     "lagrade.assign": [
+        "AssignedProblem",
         "Assignment",
         "EXPRESSION",
         "MULTILINE",
         "Part",
-        "Problem",
         "Student",
         "VariantChoice",
         "assignment_table",

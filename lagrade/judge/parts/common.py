@@ -13,7 +13,7 @@ import sympy as sp
 
 from lagrade.errors import UnsupportedExpression
 from lagrade.judge.compiled import Compiled
-from lagrade.judge.decision import Outcome
+from lagrade.judge.decision import Decision
 from lagrade.judge.derivatives import euler_lagrange_values
 from lagrade.judge.dimensions import hint_for, tells
 from lagrade.judge.equivalence import offset_removed
@@ -99,7 +99,7 @@ def _is_reference_with_values(
 
 
 def witness_point(
-    points: Points, outcome: Outcome, *exprs: sp.Expr | Compiled
+    points: Points, outcome: Decision, *exprs: sp.Expr | Compiled
 ) -> dict[str, float] | None:
     """The point where the answers differ, in the symbols of `exprs` (all, without them)."""
     if outcome.where is None:
@@ -169,7 +169,7 @@ def _value_at(expr: Compiled, env: Mapping) -> complex | float:
 
 
 def values_text(
-    problem: Problem, points: Points, outcome: Outcome, answer: Compiled, reference: Compiled,
+    problem: Problem, points: Points, outcome: Decision, answer: Compiled, reference: Compiled,
     what: str, unit: str = "",
 ) -> str:  # fmt: skip
     """ ", where your T is 0.412 and the reference's is 0.623" at the witness of `outcome`
@@ -199,7 +199,7 @@ def values_text(
 def acceleration_text(
     problem: Problem,
     points: Points,
-    outcome: Outcome,
+    outcome: Decision,
     equation: Compiled,
     position: int | None = None,
 ) -> str:
@@ -257,7 +257,7 @@ def _acceleration_unit(problem: Problem, name: str) -> str:
     return f" {unit}" if unit else ""
 
 
-def method_name(*outcomes: Outcome) -> str:
+def method_name(*outcomes: Decision) -> str:
     return "numeric+mpmath50" if any(o.method.endswith("mpmath50") for o in outcomes) else "numeric"
 
 

@@ -12,7 +12,7 @@ from typing import Any
 import numpy as np
 
 from lagrade.judge.compiled import Compiled, to_length
-from lagrade.judge.decision import Outcome, decide
+from lagrade.judge.decision import Decision, decide
 from lagrade.judge.derivatives import time_derivative_on_shell
 from lagrade.judge.evaluate import FLOAT, UnsupportedExpression
 from lagrade.judge.parts.common import (
@@ -51,7 +51,7 @@ def _accelerations(problem: Problem, points: Points):
 
 def _conservation(
     problem: Problem, Q: Compiled, points: Points
-) -> tuple[Outcome, bool, np.ndarray]:
+) -> tuple[Decision, bool, np.ndarray]:
     """(is D_t Q = 0 on-shell, is Q constant, gradient of Q on phase space at the points: with
     respect to the coordinates and velocities, parameters and t held fixed)."""
     jets = problem.jets

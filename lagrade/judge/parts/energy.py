@@ -12,7 +12,7 @@ import numpy as np
 import sympy as sp
 
 from lagrade.judge.compiled import Compiled
-from lagrade.judge.decision import Outcome
+from lagrade.judge.decision import Decision
 from lagrade.judge.dimensions import hint_for
 from lagrade.judge.equivalence import (
     affine_match,
@@ -49,7 +49,7 @@ from lagrade.judge.verdict import Verdict
 
 def judge_lagrangian(
     problem: Problem, expr: sp.Expr | Compiled, diagnose: bool = True
-) -> tuple[str, float, list[str], Outcome, dict[str, float] | None, tuple[str, ...]]:
+) -> tuple[str, float, list[str], Decision, dict[str, float] | None, tuple[str, ...]]:
     """(status, score, feedback, outcome, witness, mistakes) for a Lagrangian answer (a sympy
     expression, or compiled already); the witness is a point where the motion differs, when it
     does. `diagnose=False`: a wrong answer's status alone, without feedback."""
@@ -60,14 +60,14 @@ def judge_lagrangian(
             "incorrect",
             0.0,
             ["A Lagrangian depends on coordinates, velocities and t, not on accelerations."],
-            Outcome(False, "structure", math.inf),
+            Decision(False, "structure", math.inf),
             None,
             ("acceleration",),
         )
     fast = _affine_to_reference(problem, answer, points)
     if fast is not None:  # c (T − V) + k: the same motion, settled by values alone
         notes = _factor_notes(fast.factor) + ([_CONSTANT_NOTE] if fast.shifted else [])
-        return ("correct", 1.0, notes, Outcome(True, "numeric", fast.worst), None, ())
+        return ("correct", 1.0, notes, Decision(True, "numeric", fast.worst), None, ())
     match = lagrangians_match(answer, reference_el(problem, points), problem.jets, points)
     out = match.outcome
     factors = np.array(match.factors)

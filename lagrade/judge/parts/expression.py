@@ -21,7 +21,7 @@ import sympy as sp
 from lagrade.errors import ParseError, RequestError
 from lagrade.judge.adaptive import ExactThenAdaptive
 from lagrade.judge.compiled import Compiled
-from lagrade.judge.decision import Outcome
+from lagrade.judge.decision import Decision
 from lagrade.judge.equivalence import expressions_equal
 from lagrade.judge.parts.common import (
     incorrect,
@@ -310,7 +310,7 @@ def _check_one(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
     points = problem.points("expression")
     out = expressions_equal(ans, ref, points)
     if decided is not None:
-        out = Outcome(False, "exact_then_adaptive", out.worst, out.where)
+        out = Decision(False, "exact_then_adaptive", out.worst, out.where)
     if out.equal:
         return Verdict("expression", "correct", 1.0, (), got.echo, method_name(out))
     # The catalogue's slips are real-valued tests: a complex question gets the plain sentence.
