@@ -118,11 +118,14 @@ def _continued(line: str, width: int) -> list[str]:
 
 
 def _cut(line: str, limit: int) -> int:
-    """The last space before `limit` outside brackets (between terms), else the last space."""
+    """The last space before `limit` outside brackets (between terms), else the last space
+    inside them; never one of the line's leading spaces (a continuation's indentation: cutting
+    there would leave the line as long as it was)."""
+    start = len(line) - len(line.lstrip(" "))
     depth, best, any_space = 0, -1, -1
     for at, ch in enumerate(line[:limit]):
         depth += (ch == "(") - (ch == ")")
-        if ch == " " and at > 0:
+        if ch == " " and at > start:
             any_space = at
             best = at if depth == 0 else best
     return best if best > 0 else any_space
