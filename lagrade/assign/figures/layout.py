@@ -84,14 +84,18 @@ def _free(box: Any, taken: Iterable[Any], frame: Any, ink: np.ndarray) -> bool:
     return inside and not any(box.overlaps(t) for t in taken) and not crosses(box, ink)
 
 
-def _declutter(ax: Any, renderer: Any, obstacles: Sequence[Any]) -> bool:
+def _declutter(ax: Any, renderer: Any, obstacles: Sequence[Any], placed: Sequence[Any]) -> bool:
     """Move each label, in drawing order, to the nearest place clear of the labels before it,
-    the bodies and every drawn line and arrow; True when one moved."""
+    the bodies and every drawn line and arrow; True when one moved. A label the scene file
+    placed stays where it is, and the others keep clear of it."""
     frame = ax.get_window_extent(renderer)
-    taken = [o.get_window_extent(renderer).padded(_GAP) for o in obstacles]
+    taken = [o.get_window_extent(renderer).padded(_GAP) for o in (*obstacles, *placed)]
     ink = ink_segments(ax, renderer)
     moved = False
+    pinned = set(map(id, placed))
     for text in labels(ax):
+        if id(text) in pinned:
+            continue
         box = text.get_window_extent(renderer).padded(_GAP)
         if not _free(box, taken, frame, ink):
             for ring in _RINGS:
@@ -137,12 +141,14 @@ def _fit(ax: Any, renderer: Any) -> bool:
     return True
 
 
-def settle(fig: Any, ax: Any, obstacles: Sequence[Any], rounds: int = 8) -> None:
-    """Declutter and fit in turns until neither changes anything."""
+def settle(
+    fig: Any, ax: Any, obstacles: Sequence[Any], placed: Sequence[Any] = (), rounds: int = 8
+) -> None:
+    """Declutter and fit in turns until neither changes anything; `placed` labels stay put."""
     renderer = fig.canvas.get_renderer()
     ax.apply_aspect()
     for _ in range(rounds):
-        moved = _declutter(ax, renderer, obstacles)
+        moved = _declutter(ax, renderer, obstacles, placed)
         grew = _fit(ax, renderer)
         if not moved and not grew:
             return
