@@ -105,8 +105,8 @@ def _plan_shapes(d: Drawing, ns: SimpleNamespace) -> None:
         d.add(
             "body",
             body_name,
-            lambda ax, u, v=vertices: ax.fill(
-                *v.T, facecolor="#e4e4e4", edgecolor=INK, linewidth=1.2, zorder=2
+            lambda ax, u, v=vertices, n=body_name: ax.fill(
+                *v.T, facecolor="#e4e4e4", edgecolor=INK, linewidth=1.2, zorder=2, gid=f"body-{n}"
             ),
         )
         index = next((k for k, b in enumerate(g.bodies) if b.name == body_name), None)

@@ -13,7 +13,7 @@ import numpy as np
 from lagrade.assign.figures.geometry import Geometry
 from lagrade.assign.figures.layout import drawn, settle
 from lagrade.assign.figures.plan import plan
-from lagrade.assign.figures.primitives import label_id
+from lagrade.assign.figures.primitives import PLACES, label_id
 from lagrade.assign.figures.style import RC
 from lagrade.errors import LagradeError
 from lagrade.mechanics import SceneVariant
@@ -95,8 +95,8 @@ def compose(variant: SceneVariant) -> Composed:
             for a in e.artists
             if isinstance(a, Circle)
         ]
-        ids = {label_id(name) for name in hint.labels}
-        settle(fig, ax, discs, [t for t in ax.texts if t.get_gid() in ids])
+        ways = {label_id(name): PLACES[place][0] for name, place in hint.labels.items()}
+        settle(fig, ax, discs, {t: ways[t.get_gid()] for t in ax.texts if t.get_gid() in ways})
     return Composed(fig, ax, tuple(elements))
 
 
