@@ -34,6 +34,7 @@ _EXPORTS = {
     "Jet": "lagrade.mechanics.lagrange",
     "jet": "lagrade.mechanics.lagrange",
     "lagrange": "lagrade.mechanics.lagrange",  # the module
+    "LABEL_PLACES": "lagrade.mechanics.figure",
     "LAGRANGIAN_PARTS": "lagrade.mechanics.scene",
     "LagrangianSystem": "lagrade.mechanics.lagrange",
     "momentum_jet": "lagrade.mechanics.hamilton",
@@ -82,6 +83,7 @@ __all__ = [
     "Jet",
     "jet",
     "lagrange",
+    "LABEL_PLACES",
     "LAGRANGIAN_PARTS",
     "LagrangianSystem",
     "momentum_jet",

@@ -3,10 +3,10 @@ the oscillators hang between walls on springs): the `FigureHint` a scene declare
 bodies (a scene file's `[figure]` table), read by `lagrade.assign.figures`.
 
 Geometry draws what moves; a hint declares what does not show in the positions: springs, ropes,
-pulleys, walls, surfaces, supports and bars. `FIXTURE_KINDS` is the list, and the figure test
-holds every scene to it: what a scene's statement names (a spring, a wall, a pulley) must be
-declared and drawn. The hint's expressions are the scene's own, in its canonical names, given
-as functions of the variant's namespace `s` (as a scene's bodies are).
+pulleys, walls, surfaces, supports, bars and dashpots. `FIXTURE_KINDS` is the list, and the
+figure test holds every scene to it: what a scene's statement names (a spring, a wall, a
+pulley) must be declared and drawn. The hint's expressions are the scene's own, in its
+canonical names, given as functions of the variant's namespace `s` (as a scene's bodies are).
 """
 
 from __future__ import annotations
@@ -21,8 +21,12 @@ Point = tuple[Any, ...]
 Anchor = Point | str
 
 #: What a fixture can be. A wall and a surface are hatched on their `side`; a bar stands for a
-#: rigid body (the ladder) and replaces its disc; a support is a fixed, hatched pivot.
-FIXTURE_KINDS = ("spring", "rope", "pulley", "wall", "surface", "support", "bar")
+#: rigid body (the ladder) and replaces its disc; a support is a fixed, hatched pivot; a
+#: dashpot (a damper: a cylinder and its piston) draws a Rayleigh function's damping.
+FIXTURE_KINDS = ("spring", "rope", "pulley", "wall", "surface", "support", "bar", "dashpot")
+#: Where a body's mass label can be placed, beside the body; without a place the layout puts
+#: it up and to the right, and moves it off whatever is there.
+LABEL_PLACES = ("above", "below", "left", "right")
 
 
 @dataclass(frozen=True)
@@ -61,7 +65,8 @@ class FigureHint:
     (vertex, A, B), an angle marked at the vertex from ray A to ray B instead of the automatic
     mark; radii: rigid body → its drawn radius (a cylinder's R); spans: coordinate → (A, B), a
     length measured between two anchors (the distance between the pucks), not along one body's
-    sweep.
+    sweep; labels: body → where its mass label sits (one of LABEL_PLACES), kept there by the
+    layout.
     """
 
     poses: Mapping[str, Callable[[SimpleNamespace], Any]] = field(default_factory=dict)
@@ -82,3 +87,4 @@ class FigureHint:
     spans: Mapping[str, Callable[[SimpleNamespace], tuple[Anchor, Anchor]]] = field(
         default_factory=dict
     )
+    labels: Mapping[str, str] = field(default_factory=dict)

@@ -20,6 +20,7 @@ from lagrade.mechanics.scene import SceneVariant
 #: seen from above (the two pucks, the rotating frame) is the page itself, so it is not here.
 NOUNS = {
     "spring": {"spring"},
+    "dashpot": {"dashpot"},
     "string": {"rope"},
     "rope": {"rope"},
     "pulley": {"pulley"},

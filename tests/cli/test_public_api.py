@@ -39,6 +39,7 @@ EXPORTS = {
         "Fixture",
         "HamiltonianSystem",
         "Jet",
+        "LABEL_PLACES",
         "LAGRANGIAN_PARTS",
         "LagrangianSystem",
         "NotQuadratic",

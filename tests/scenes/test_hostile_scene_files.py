@@ -74,6 +74,11 @@ CASES = [
     ("a right-to-left override in a unit", PENDULUM.replace('unit = "kg"', 'unit = "\\u202egk"'), "parameters.m.unit: holds an invisible control character (\\u202e)"),
     ("a tab in a quantity's description", PENDULUM + '[quantities.w]\ndescription = "angular\\tfrequency"\nvalue = "sqrt(g/l)"\n', "quantities.w.description: holds a tab"),
     ("a control character in a statement", PENDULUM.replace("Use {theta}.", "Use {theta}.\\u0007"), "statement: holds an invisible control character (\\x07)"),
+    ("a label placed nowhere", PENDULUM + '[figure]\nlabels = { bob = "top" }\n', "figure.labels.bob: 'top' is not a place for a label (above, below, left or right)"),
+    ("a label for no body", PENDULUM + '[figure]\nlabels = { rod = "left" }\n', "figure.labels.rod: 'rod' is not a body of the scene"),
+    ("a label place that is code", PENDULUM + '[figure]\nlabels = { bob = { __class__ = 1 } }\n', "figure.labels.bob: {'__class__': 1} is not a place for a label"),
+    ("labels that are not a table", PENDULUM + '[figure]\nlabels = ["left"]\n', "figure.labels: is not a table"),
+    ("a dashpot with one end", PENDULUM + '[figure]\nfixtures = [{ kind = "dashpot", points = [[0, 0]] }]\n', "figure.fixtures[1].points: is not a list of 2 entries"),
     ("a line break in an option's wording", PENDULUM + '[options.o.a]\nwording = "one\\ntwo"\n[options.o.b]\n', "wording: holds a line break"),
 ]  # fmt: skip
 

@@ -17,8 +17,8 @@ Output is SVG and PDF, byte-identical across runs (fixed hash salt, no dates).
 
 Modules, each importing only those before it: `style` (inks, line
 styles, matplotlib settings), `geometry` (numeric positions and the questions asked of them),
-`primitives` (labels, arrows, marks), `bodies` (bodies and 3-D axes), `fixtures` (springs, ropes,
-pulleys, walls, surfaces, bars), `plan` (what to draw, in order, each element with its kind),
+`primitives` (labels, arrows, marks), `bodies` (bodies and 3-D axes), `fixtures` (springs, dashpots,
+ropes, pulleys, walls, surfaces, bars), `plan` (what to draw, in order, each element with its kind),
 `layout` (labels apart, everything in frame), `render` (`compose`, and `draw`: SVG and PDF).
 """
 

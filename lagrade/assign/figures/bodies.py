@@ -10,7 +10,7 @@ import numpy as np
 import sympy as sp
 
 from lagrade.assign.figures.geometry import Geometry
-from lagrade.assign.figures.primitives import arc_arrow, put_text
+from lagrade.assign.figures.primitives import arc_arrow, beside, label_id, put_text
 from lagrade.assign.figures.style import ACCENT, GREY, GREY_TEXT, INK
 from lagrade.mechanics import RigidBody, SpatialRigidBody, as_expr
 from lagrade.notation import name_latex
@@ -47,23 +47,33 @@ def body_disc(ax: Any, unit: float, g: Geometry, i: int, b: Any) -> None:
 
     at = g.at(i)[0]
     r = body_radius(g, i, unit)
+    gid = f"body-{b.name}"
     if b.mass == 0:  # a massless helper (a moving pulley's axle): a small ring, no label
-        ax.add_patch(Circle(tuple(at), 0.02 * unit, facecolor="white", edgecolor=INK, zorder=4))
+        ax.add_patch(
+            Circle(tuple(at), 0.02 * unit, facecolor="white", edgecolor=INK, zorder=4, gid=gid)
+        )
         return
     if isinstance(b, SpatialRigidBody):
         spinning_disc(ax, g, b, at, r)
     elif isinstance(b, RigidBody):
         ax.add_patch(
-            Circle(tuple(at), r, facecolor="#f2f2f2", edgecolor=INK, linewidth=1.4, zorder=4)
+            Circle(
+                tuple(at), r, facecolor="#f2f2f2", edgecolor=INK, linewidth=1.4, zorder=4, gid=gid
+            )
         )
         phi = g.number(b.angle)
         tip = at + r * np.array([math.cos(phi), math.sin(phi)])
         ax.plot(*np.array([at, tip]).T, color=INK, linewidth=1.2, zorder=5)
         ax.plot(*at, marker="o", markersize=2.5, color=INK, zorder=5)
     else:
-        ax.add_patch(Circle(tuple(at), r, facecolor=INK, edgecolor=INK, zorder=4))
+        ax.add_patch(Circle(tuple(at), r, facecolor=INK, edgecolor=INK, zorder=4, gid=gid))
+    mass = f"${sp.latex(b.mass)}$"
+    place = g.hint.labels.get(b.name)
+    if place:  # where the scene file puts it; the layout leaves it there
+        beside(ax, unit, at, np.array([r, r]), place, mass, label_id(b.name))
+        return
     # beside the disc, up and to the right; the layout moves it if something else is there
-    put_text(ax, at + (r + 0.05 * unit) * np.array([0.8, 0.8]), f"${sp.latex(b.mass)}$")
+    put_text(ax, at + (r + 0.05 * unit) * np.array([0.8, 0.8]), mass, gid=label_id(b.name))
 
 
 def euler_axes(g: Geometry, b: SpatialRigidBody, spin: bool = True) -> np.ndarray:

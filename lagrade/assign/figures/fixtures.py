@@ -1,6 +1,6 @@
-"""Drawing the fixtures a hint declares (springs, ropes, pulleys, walls, surfaces, supports and
-bars), in scene units: each function gets its anchors already as numbers, and `unit`, the
-figure's extent, sizes the zigzags and hatches."""
+"""Drawing the fixtures a hint declares (springs, dashpots, ropes, pulleys, walls, surfaces,
+supports and bars), in scene units: each function gets its anchors already as numbers, and
+`unit`, the figure's extent, sizes the zigzags and hatches."""
 
 from __future__ import annotations
 
@@ -13,7 +13,14 @@ import numpy as np
 import sympy as sp
 
 from lagrade.assign.figures.geometry import Geometry
-from lagrade.assign.figures.primitives import arc_arrow, incline_angle, pivot, put_text
+from lagrade.assign.figures.primitives import (
+    arc_arrow,
+    beside,
+    incline_angle,
+    label_id,
+    pivot,
+    put_text,
+)
 from lagrade.assign.figures.style import ACCENT, GREY, INK
 from lagrade.mechanics import Anchor, Fixture, as_expr
 from lagrade.mechanics import lagrange as mech
@@ -61,6 +68,31 @@ def spring(ax: Any, unit: float, a: np.ndarray, b: np.ndarray, label: str) -> No
         put_text(ax, (a + b) / 2 + 0.075 * unit * (n if n[1] >= 0 else -n), label)
 
 
+def dashpot(ax: Any, unit: float, a: np.ndarray, b: np.ndarray, label: str) -> None:
+    """A dashpot (a damper) from a to b: a cylinder, open toward b, on a lead from a, and a
+    piston in it on a rod from b; the cylinder stays fixed to a as the rod slides."""
+    length = float(np.hypot(*(b - a)))
+    if length < 1e-12:
+        return
+    along, n = (b - a) / length, _normal(a, b)
+    cylinder = min(0.4 * length, 0.16 * unit)
+    start = a + 0.5 * (length - cylinder) * along  # centred between its ends
+    end = start + cylinder * along
+    half = 0.028 * unit
+    outline = [end + half * n, start + half * n, start - half * n, end - half * n]
+    piston = start + 0.6 * cylinder * along
+    line = dict(color=INK, linewidth=1.0, zorder=3, solid_capstyle="butt")
+    ax.plot(*np.array([a, start]).T, **line)
+    ax.plot(*np.array(outline).T, color=INK, linewidth=1.2, zorder=3, solid_joinstyle="miter")
+    ax.plot(
+        *np.array([piston + 0.75 * half * n, piston - 0.75 * half * n]).T,
+        **{**line, "linewidth": 2.0},
+    )
+    ax.plot(*np.array([piston, b]).T, **line)
+    if label:
+        put_text(ax, (start + end) / 2 + (half + 0.05 * unit) * (n if n[1] >= 0 else -n), label)
+
+
 def rope(ax: Any, unit: float, pts: np.ndarray) -> None:
     ax.plot(*pts.T, color=INK, linewidth=1.0, zorder=2)
 
@@ -96,15 +128,28 @@ def support(ax: Any, unit: float, at: np.ndarray) -> None:
     ax.plot(*at, marker="o", markersize=3, color=INK, zorder=4)
 
 
-def bar(ax: Any, unit: float, a: np.ndarray, b: np.ndarray, mass: str, length: str) -> None:
-    """A rigid bar (a ladder) from a to b, with its mass at the middle and its length beside."""
+def bar(
+    ax: Any,
+    unit: float,
+    a: np.ndarray,
+    b: np.ndarray,
+    mass: str,
+    length: str,
+    body: str,
+    place: str,
+) -> None:
+    """A rigid bar (a ladder) from a to b, with its mass at the middle (or on the side of the bar
+    the scene file places it) and its length beside."""
     ax.plot(*np.array([a, b]).T, color=GREY, linewidth=5.0, zorder=3, solid_capstyle="round")
     ax.plot(*np.array([a, b]).T, color=INK, linewidth=0.8, zorder=3)
     n = _normal(a, b)
     n = n if n[0] + n[1] >= 0 else -n
     middle = (a + b) / 2
     ax.plot(*middle, marker="o", markersize=4, color=INK, zorder=4)
-    put_text(ax, middle + 0.07 * unit * n, mass)
+    if place:
+        beside(ax, unit, middle, np.abs(b - a) / 2, place, mass, label_id(body))
+    else:
+        put_text(ax, middle + 0.07 * unit * n, mass, gid=label_id(body))
     if length:
         quarter = a + 0.25 * (b - a)
         put_text(ax, quarter + 0.07 * unit * n, length)
@@ -148,6 +193,8 @@ def _draw(
     label = f"${name_latex(f.label)}$" if f.label else ""
     if f.kind == "spring":
         return lambda ax, u: spring(ax, u, pts[0], pts[-1], label)
+    if f.kind == "dashpot":
+        return lambda ax, u: dashpot(ax, u, pts[0], pts[-1], label)
     if f.kind == "rope":
         return lambda ax, u: rope(ax, u, pts)
     if f.kind == "pulley":
@@ -162,7 +209,8 @@ def _draw(
         return lambda ax, u: support(ax, u, pts[0])
     body = next(b for b in g.bodies if b.name == f.body)
     mass = f"${sp.latex(body.mass)}$"
-    return lambda ax, u: bar(ax, u, pts[0], pts[-1], mass, label)
+    place = g.hint.labels.get(f.body, "")
+    return lambda ax, u: bar(ax, u, pts[0], pts[-1], mass, label, f.body, place)
 
 
 def plan_fixtures(

@@ -6,7 +6,7 @@ scene's size, so only the renderer knows where it ends)."""
 from __future__ import annotations
 
 import math
-from collections.abc import Iterable, Sequence
+from collections.abc import Iterable, Mapping, Sequence
 from typing import Any
 
 import numpy as np
@@ -84,21 +84,34 @@ def _free(box: Any, taken: Iterable[Any], frame: Any, ink: np.ndarray) -> bool:
     return inside and not any(box.overlaps(t) for t in taken) and not crosses(box, ink)
 
 
-def _declutter(ax: Any, renderer: Any, obstacles: Sequence[Any]) -> bool:
-    """Move each label, in drawing order, to the nearest place clear of the labels before it,
-    the bodies and every drawn line and arrow; True when one moved."""
+def _toward(way: tuple[float, float]) -> tuple[tuple[float, float], ...]:
+    """The directions within 45° of `way`, straight on first: a placed label that moves stays
+    on the side of its body it was put."""
+    near = [d for d in _DIRECTIONS if d[0] * way[0] + d[1] * way[1] > math.cos(math.radians(46))]
+    return tuple(sorted(near, key=lambda d: -(d[0] * way[0] + d[1] * way[1])))
+
+
+def _declutter(
+    ax: Any, renderer: Any, obstacles: Sequence[Any], placed: Mapping[Any, tuple[float, float]]
+) -> bool:
+    """Move each label to the nearest place clear of the labels settled before it, the bodies
+    and every drawn line and arrow; True when one moved. The labels the scene file placed go
+    first, and move only away from their body (within 45° of straight on, so still on the side
+    asked for); the others follow in drawing order, in any direction."""
     frame = ax.get_window_extent(renderer)
     taken = [o.get_window_extent(renderer).padded(_GAP) for o in obstacles]
     ink = ink_segments(ax, renderer)
     moved = False
-    for text in labels(ax):
+    first = [t for t in labels(ax) if t in placed]
+    for text in (*first, *(t for t in labels(ax) if t not in placed)):
+        directions = _toward(placed[text]) if text in placed else _DIRECTIONS
         box = text.get_window_extent(renderer).padded(_GAP)
         if not _free(box, taken, frame, ink):
             for ring in _RINGS:
                 shift = next(
                     (
                         (ring * dx, ring * dy)
-                        for dx, dy in _DIRECTIONS
+                        for dx, dy in directions
                         if _free(box.translated(ring * dx, ring * dy), taken, frame, ink)
                     ),
                     None,
@@ -137,12 +150,20 @@ def _fit(ax: Any, renderer: Any) -> bool:
     return True
 
 
-def settle(fig: Any, ax: Any, obstacles: Sequence[Any], rounds: int = 8) -> None:
-    """Declutter and fit in turns until neither changes anything."""
+def settle(
+    fig: Any,
+    ax: Any,
+    obstacles: Sequence[Any],
+    placed: Mapping[Any, tuple[float, float]] | None = None,
+    rounds: int = 8,
+) -> None:
+    """Declutter and fit in turns until neither changes anything. `placed` maps each label the
+    scene file placed to its direction from its body, the one way it may move."""
+    placed = placed or {}
     renderer = fig.canvas.get_renderer()
     ax.apply_aspect()
     for _ in range(rounds):
-        moved = _declutter(ax, renderer, obstacles)
+        moved = _declutter(ax, renderer, obstacles, placed)
         grew = _fit(ax, renderer)
         if not moved and not grew:
             return

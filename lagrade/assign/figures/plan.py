@@ -26,10 +26,12 @@ from lagrade.assign.figures.primitives import (
     along_label,
     arc_arrow,
     arrow_along,
+    beside,
     dimension,
     field_arrow,
     gravity_arrow,
     incline_angle,
+    label_id,
     pivot,
     put_text,
     time_mark,
@@ -103,20 +105,27 @@ def _plan_shapes(d: Drawing, ns: SimpleNamespace) -> None:
         d.add(
             "body",
             body_name,
-            lambda ax, u, v=vertices: ax.fill(
-                *v.T, facecolor="#e4e4e4", edgecolor=INK, linewidth=1.2, zorder=2
+            lambda ax, u, v=vertices, n=body_name: ax.fill(
+                *v.T, facecolor="#e4e4e4", edgecolor=INK, linewidth=1.2, zorder=2, gid=f"body-{n}"
             ),
         )
         index = next((k for k, b in enumerate(g.bodies) if b.name == body_name), None)
         if index is not None:
-            centroid = vertices.mean(axis=0)
-            d.add(
-                "label",
-                body_name,
-                lambda ax, u, c=centroid, b=g.bodies[index]: put_text(
-                    ax, c, f"${sp.latex(b.mass)}$", zorder=6
-                ),
-            )
+            d.add("label", body_name, _shape_label(g, index, vertices))
+
+
+def _shape_label(g: Geometry, index: int, vertices: np.ndarray) -> Callable:
+    """A shaped body's mass label: at its centroid, or beside its outline where the scene file
+    places it."""
+    b = g.bodies[index]
+    mass, place = f"${sp.latex(b.mass)}$", g.hint.labels.get(b.name)
+    if place:
+        lo, hi = vertices.min(axis=0), vertices.max(axis=0)
+        return lambda ax, u: beside(
+            ax, u, (lo + hi) / 2, (hi - lo) / 2, place, mass, label_id(b.name)
+        )
+    centroid = vertices.mean(axis=0)
+    return lambda ax, u: put_text(ax, centroid, mass, zorder=6, gid=label_id(b.name))
 
 
 def _plan_coordinate(

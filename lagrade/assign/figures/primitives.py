@@ -12,17 +12,52 @@ import numpy as np
 from lagrade.assign.figures.style import ACCENT, GREY, INK
 
 
-def put_text(ax: Any, at: np.ndarray, text: str, color: str = INK, zorder: int = 7) -> None:
-    ax.text(
+def put_text(
+    ax: Any,
+    at: np.ndarray,
+    text: str,
+    color: str = INK,
+    zorder: int = 7,
+    align: tuple[str, str] = ("center", "center"),
+    gid: str | None = None,
+) -> Any:
+    return ax.text(
         float(at[0]),
         float(at[1]),
         text,
-        ha="center",
-        va="center",
+        ha=align[0],
+        va=align[1],
         color=color,
         fontsize=12,
         zorder=zorder,
+        gid=gid,
     )
+
+
+#: A placed label's direction from what it labels, and the alignment that puts its near edge
+#: there (so a long label grows away from the body, not over it).
+PLACES = {
+    "above": ((0.0, 1.0), ("center", "bottom")),
+    "below": ((0.0, -1.0), ("center", "top")),
+    "left": ((-1.0, 0.0), ("right", "center")),
+    "right": ((1.0, 0.0), ("left", "center")),
+}
+
+
+def label_id(body: str) -> str:
+    """The SVG id of a body's mass label (the layout keeps a placed one where it was put)."""
+    return f"label-{body}"
+
+
+def beside(
+    ax: Any, unit: float, centre: np.ndarray, reach: np.ndarray, place: str, text: str, gid: str
+) -> Any:
+    """A label on the `place` side of something centred at `centre` that reaches `reach`
+    (half its width, half its height) from there, a small gap beyond its edge."""
+    (dx, dy), align = PLACES[place]
+    gap = 0.03 * unit
+    at = centre + np.array([dx * (reach[0] + gap), dy * (reach[1] + gap)])
+    return put_text(ax, at, text, align=align, gid=gid)
 
 
 def _unit_normal(a: np.ndarray, b: np.ndarray) -> np.ndarray:

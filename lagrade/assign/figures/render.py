@@ -13,6 +13,7 @@ import numpy as np
 from lagrade.assign.figures.geometry import Geometry
 from lagrade.assign.figures.layout import drawn, settle
 from lagrade.assign.figures.plan import plan
+from lagrade.assign.figures.primitives import PLACES, label_id
 from lagrade.assign.figures.style import RC
 from lagrade.errors import LagradeError
 from lagrade.mechanics import SceneVariant
@@ -94,7 +95,8 @@ def compose(variant: SceneVariant) -> Composed:
             for a in e.artists
             if isinstance(a, Circle)
         ]
-        settle(fig, ax, discs)
+        ways = {label_id(name): PLACES[place][0] for name, place in hint.labels.items()}
+        settle(fig, ax, discs, {t: ways[t.get_gid()] for t in ax.texts if t.get_gid() in ways})
     return Composed(fig, ax, tuple(elements))
 
 

@@ -14,6 +14,7 @@ cannot tell the figure, read into a `FigureHint` for each presentation.
     radii = { pulley = "R" }                        # rigid body → its drawn radius
     angles = { theta = [vertex, from, to] }         # coordinate → an angle marked there
     spans = { r = ["mass1", "mass2"] }              # coordinate → a length between two anchors
+    labels = { bob = "left" }                       # body → where its mass label sits
     fixtures = [{ kind = "spring", points = [[-1.2, 0], "mass"], label = "k" }]
 
 A point is a list of 2 (or, in a 3-D scene, 3) expressions; an anchor is a point or a body's
@@ -33,7 +34,7 @@ import sympy as sp
 from lagrade.bank.scenefile.declaration import Declaration
 from lagrade.bank.scenefile.fields import Problems, expression
 from lagrade.bank.scenefile.reading import Reader
-from lagrade.mechanics import FIXTURE_KINDS, FigureHint, Fixture
+from lagrade.mechanics import FIXTURE_KINDS, LABEL_PLACES, FigureHint, Fixture
 
 FIGURE_KEYS = (
     "poses",
@@ -49,6 +50,7 @@ FIGURE_KEYS = (
     "radii",
     "angles",
     "spans",
+    "labels",
     "fixtures",
 )
 FIXTURE_KEYS = ("kind", "points", "radius", "label", "side", "body", "angle")
@@ -62,9 +64,12 @@ _TABLES = (
     "radii",
     "angles",
     "spans",
+    "labels",
 )
 #: How many anchors each fixture kind takes (a rope is a polyline: two or more).
-_ANCHORS = {"spring": 2, "wall": 2, "surface": 2, "bar": 2, "pulley": 1, "support": 1}
+_ANCHORS = {
+    "spring": 2, "dashpot": 2, "wall": 2, "surface": 2, "bar": 2, "pulley": 1, "support": 1,
+}  # fmt: skip
 MAX_FIXTURES = 64
 MAX_POINTS = 64
 
@@ -146,7 +151,7 @@ class FigureReader:
         owners = {
             "poses": "coordinate", "ranges": "coordinate", "sweeps": "coordinate",
             "angles": "coordinate", "spans": "coordinate", "shapes": "body", "offsets": "body",
-            "radii": "body", "dimensions": "parameter",
+            "radii": "body", "labels": "body", "dimensions": "parameter",
         }  # fmt: skip
         names = {
             "coordinate": self.coordinates,
@@ -174,6 +179,12 @@ class FigureReader:
             return value
         if kind == "ranges":
             return self._each(value, at, 2, 2, self._expr)
+        if kind == "labels":
+            if value not in LABEL_PLACES:
+                places = ", ".join(LABEL_PLACES[:-1]) + f" or {LABEL_PLACES[-1]}"
+                self.problems.add(at, f"{value!r} is not a place for a label ({places})")
+                return None
+            return value
         if kind in ("offsets",):
             return self._point(value, at)
         if kind == "shapes":
@@ -362,4 +373,5 @@ def _hint(m: Mapping[str, Any], sub: Callable) -> FigureHint:
             c: (lambda s, ps=ps: tuple(anchor(a, s) for a in ps))
             for c, ps in m.get("spans", {}).items()
         },
+        labels=dict(m.get("labels", {})),
     )
