@@ -26,7 +26,7 @@ from lagrade.bank import scene_reference
 from lagrade.grading.prompts import prompt_html
 from lagrade.grading.rubric import Rubric, rubric_from_table
 from lagrade.grading.student import grade_part, part_spec, question, sheet_given, stopped_part
-from lagrade.judge import PartTimeout, read_answer, time_limit
+from lagrade.judge import GRACE, PartTimeout, deadline, read_answer, time_limit
 
 
 def render_variant(
@@ -123,6 +123,7 @@ def read_task(task: Mapping[str, Any]) -> dict[str, dict]:
 def _read_part(task: Mapping[str, Any], entry: Mapping[str, Any], part: Any) -> dict[str, Any]:
     spec = {"key": part.key, "part": part.part, "quantity": part.quantity}
     answer = _answer(task["submitted"].get(part.key))
+    deadline(task["part_time_limit"] + GRACE)  # the parent kills C code that ignores the alarm
     try:
         with time_limit(task["part_time_limit"]):
             reading = read_answer(question(part_spec(entry, spec)), part.part, answer)

@@ -20,6 +20,8 @@ from lagrade.judge.deriving import deriving
 #: Each exported name, by the module that defines it (a module exported as a whole: its own
 #: name). Loaded on first use, so that importing the layer costs nothing it does not use.
 _EXPORTS = {
+    "GRACE": "lagrade.judge.clocks",
+    "deadline": "lagrade.judge.clocks",
     "build_problem": "lagrade.judge.problem",
     "cached_problem": "lagrade.judge.driver",
     "check_pool": "lagrade.judge.check",
@@ -57,9 +59,11 @@ __all__ = [
     "cached_problem",
     "check",
     "check_pool",
+    "deadline",
     "deriving",
     "FOLLOWING",
     "forget_problems",
+    "GRACE",
     "is_unreadable_line",
     "judge",
     "key_answer",

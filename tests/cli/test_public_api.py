@@ -110,6 +110,7 @@ EXPORTS = {
     ],
     "lagrade.judge": [
         "FOLLOWING",
+        "GRACE",
         "Limits",
         "LivePool",
         "MAX_ID_LENGTH",
@@ -126,6 +127,7 @@ EXPORTS = {
         "cached_problem",
         "check",
         "check_pool",
+        "deadline",
         "deriving",
         "forget_problems",
         "is_unreadable_line",

@@ -14,7 +14,7 @@ from collections.abc import Mapping
 from typing import Any
 
 from lagrade.grading.student import part_spec, question
-from lagrade.judge import PartTimeout, read_answer, time_limit
+from lagrade.judge import GRACE, PartTimeout, deadline, read_answer, time_limit
 
 #: Seconds one preview may take (a preview is asked at every pause in typing).
 PREVIEW_TIME_LIMIT = 3.0
@@ -24,6 +24,7 @@ def preview(entry: Mapping[str, Any], part: Mapping[str, Any], text: str) -> dic
     """{"status": "empty"|"read"|"unreadable"|"timeout", "lines": [{"plain", "mathml"}],
     "message": the parser's error (caret included) when unreadable, or one per unreadable line,
     "warnings": the parser's notes on how it read the answer}."""
+    deadline(PREVIEW_TIME_LIMIT + GRACE)  # the parent kills C code that ignores the alarm
     try:
         with time_limit(PREVIEW_TIME_LIMIT):
             reading = read_answer(question(part_spec(entry, part)), part["part"], text)
