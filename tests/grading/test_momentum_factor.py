@@ -46,6 +46,7 @@ def test_the_missing_factor_of_a_spherical_pendulum_is_named(typed, answer, fact
     assert verdict.status == "incorrect" and verdict.score == 0.5
     (sentence,) = verdict.feedback
     assert sentence.startswith(f"p_phi is ∂L/∂phi_dot {said} ("), sentence
+    assert "at θ = " in sentence  # the situation names what the difference depends on
     assert sp.simplify(answer * factor - _spherical_p_phi()) == 0  # the correction it implies
 
 

@@ -134,13 +134,13 @@ def check_momenta(problem: Problem, answer: Any, given: Mapping | None) -> Verdi
             any_wrong = True
             continue
         any_wrong, follows_all = True, False
-        witness = witness or witness_point(points, out, ans)
+        witness = witness or witness_point(points, out, ans, reference)
         mutant = problem.catalogue.match_momentum(k, ans, points)
         if mutant is not None:
             feedback.append(as_sentence(mutant.message))
             mistakes.append(mutant.kind)
         else:
-            where = where_text(witness_point(points, out, ans), problem)
+            where = where_text(witness_point(points, out, ans, reference), problem)
             factor = _factor_text(problem, k, ans, points)
             derivative = f"∂L/∂{j.name}_dot"
             said = f"is {derivative} {factor}" if factor else f"is not {derivative}"
