@@ -30,7 +30,8 @@ def test_the_reciprocal_is_shown_at_the_handout_values():
     assert quoted == {"g": values["g"], "l": values["l"]}, text
     mine = math.sqrt(values["l"] / values["g"])  # what the student computes from the handout
     theirs = math.sqrt(values["g"] / values["l"])
-    assert f"your answer is {mine:.3g}" in text and f"reference's is {theirs:.3g}" in text, text
+    # sqrt(l/g) is a time, not an angular velocity: the unit is the reference's alone
+    assert f"your answer is {mine:.3g} and the reference's is {theirs:.3g} rad/s)" in text, text
     assert verdict.witness == {"g": values["g"], "l": values["l"]}
 
 
@@ -39,6 +40,7 @@ def test_every_parameter_quoted_is_the_handouts():
     verdict = check(WEDGE, "expression", "g sin(alpha)", time_limit=20)
     text = " ".join(verdict.feedback)
     assert "(for example with" in text, text
+    assert re.search(r"your answer is \S+ m/s² and the reference's is \S+ m/s²\)", text), text
     assert verdict.witness == {n: values[n] for n in ("M", "alpha", "g", "m")}
     for name, value in _quoted(text).items():
         key = {"α": "alpha"}.get(name, name)

@@ -15,7 +15,7 @@ from lagrade.errors import UnsupportedExpression
 from lagrade.judge.compiled import Compiled
 from lagrade.judge.decision import Decision
 from lagrade.judge.derivatives import euler_lagrange_values
-from lagrade.judge.dimensions import hint_for, tells
+from lagrade.judge.dimensions import dimension, dimensions_of, hint_for, tells
 from lagrade.judge.equivalence import offset_removed
 from lagrade.judge.evaluate import FLOAT, MP, MP_DIGITS
 from lagrade.judge.mutations import Mutant
@@ -229,7 +229,19 @@ def values_text(
     if pair is None:
         return ""
     suffix = f" {unit}" if unit else ""
-    return f", where your {what} is {pair[0]}{suffix} and the reference's is {pair[1]}{suffix}"
+    mine = suffix if suffix and _same_dimension(problem, answer, reference) else ""
+    return f", where your {what} is {pair[0]}{mine} and the reference's is {pair[1]}{suffix}"
+
+
+def _same_dimension(problem: Problem, answer: Compiled, reference: Compiled) -> bool:
+    """Whether the answer has the reference's dimension, so that the reference's unit may be
+    put after the answer's value too (sqrt(l/g) is no angular velocity: "your answer is
+    0.16", not "0.16 rad/s"). False when a dimension cannot be told."""
+    known = dimensions_of(problem)
+    if not known:
+        return False
+    mine, theirs = (dimension(e.expr, known) for e in (answer, reference))
+    return mine is not None and mine == theirs and not isinstance(mine, str)
 
 
 def acceleration_text(
