@@ -19,6 +19,8 @@ from lagrade.errors import UnreadableInput
 from lagrade.grading.latex_escapes import escape_unknown, unmark
 from lagrade.grading.latex_escapes import repair as repair_escapes
 from lagrade.grading.latex_escapes import warning as escape_warning
+from lagrade.grading.sheet_quotes import quote_primes
+from lagrade.grading.sheet_quotes import warning as quote_warning
 
 #: The largest answer sheet read; a real one is a few kilobytes.
 MAX_SHEET_BYTES = 1024 * 1024
@@ -143,16 +145,18 @@ def sheet_from_bytes(
         return _bad(path, digest, "the file is binary, not a text answer sheet")
     form = "json" if path.suffix.lower() == ".json" else "toml"
     load = untrusted.load_json if form == "json" else untrusted.load_toml
+    primed: list[str] = []  # the answers whose quotes `quote_primes` placed
     try:
         text = untrusted.decode(data, "the file")
         try:
             raw = load(text, "the answer sheet")
         except UnreadableInput as first:
-            # \dot, \sin, \alpha in a "…" string: escapes the format cannot read void the
-            # whole sheet; read them as the LaTeX meant, with a note per answer, when that
-            # makes the sheet readable (otherwise the first error stands)
-            fixed, found = escape_unknown(text, form)
-            if not found:
+            # \dot, \sin, \alpha in a "…" string, or a prime in a '…' one: what the format
+            # cannot read voids the whole sheet; read it as meant, with a note per answer, when
+            # that makes the sheet readable (otherwise the first error stands)
+            fixed, primed = quote_primes(text) if form == "toml" else (text, [])
+            fixed, found = escape_unknown(fixed, form)
+            if not found and not primed:
                 raise
             try:
                 raw = load(fixed, "the answer sheet")
@@ -170,6 +174,8 @@ def sheet_from_bytes(
     if not isinstance(raw, dict):
         return _bad(path, digest, "the answer sheet must be a table of problems")
     sheet = _structure(path, digest, raw, student_id, problem_count, keys or {})
+    if primed:
+        sheet = replace(sheet, warnings=(*sheet.warnings, *map(quote_warning, primed)))
     return _repair_escapes(sheet, text)
 
 

@@ -15,7 +15,7 @@ from lagrade.errors import UnsupportedExpression
 from lagrade.judge.compiled import Compiled
 from lagrade.judge.decision import Decision
 from lagrade.judge.derivatives import euler_lagrange_values
-from lagrade.judge.dimensions import hint_for, tells
+from lagrade.judge.dimensions import dimension, dimensions_of, hint_for, tells
 from lagrade.judge.equivalence import offset_removed
 from lagrade.judge.evaluate import FLOAT, MP, MP_DIGITS
 from lagrade.judge.mutations import Mutant
@@ -126,23 +126,59 @@ def where_text(
     return f" (for example {situation(witness, problem)}{values})"
 
 
+def _handout_values(problem: Problem) -> dict[sp.Symbol, np.ndarray] | None:
+    """The handout's parameter values (the student's own variant) as a one-point env, or None
+    when some parameter has none (an ad-hoc question without a handout)."""
+    if not problem.values or any(s not in problem.values for s in problem.domains):
+        return None
+    return {s: np.array([float(v)]) for s, v in problem.values.items()}
+
+
+def _motion(problem: Problem) -> set[sp.Symbol]:
+    return {j.q for j in problem.jets} | {j.dot for j in problem.jets}
+
+
 def _handout_point(problem: Problem, points: Points, i: int, symbols: set) -> dict | None:
     """Sample point i as a one-point env, with the handout's parameter values in place of the
-    sampled ones when the situation quotes coordinates or velocities (it then leaves the
-    parameters to the handout); as sampled when it quotes the parameters themselves (a
-    formula in the parameters alone). The numbers quoted must be ones a student can
-    reproduce. None when some parameter has no handout value."""
+    sampled ones, so that every parameter value quoted is the student's own. A formula in the
+    parameters alone is quoted at the handout's values (`handout_witness`), or as sampled
+    when there is no handout (an ad-hoc question: nothing else to quote). The numbers quoted
+    must be ones a student can reproduce. None when a state is quoted and some parameter has
+    no handout value."""
     env = {s: np.array([float(np.ravel(v)[i] if np.ndim(v) else v)]) for s, v in points.env.items()}
-    motion = {j.q for j in problem.jets} | {j.dot for j in problem.jets}
+    motion = _motion(problem)
+    handout = _handout_values(problem)
     if not symbols & motion:
-        return env
+        return env if handout is None else {**env, **handout}
     # the state as the sentence quotes it (three significant figures: `situation.rounded`), so
     # that what is computed there is what a student computes from the quoted numbers
     env.update({s: np.array([float(f"{env[s][0]:.3g}")]) for s in motion if s in env})
-    if any(s not in problem.values for s in problem.domains):
+    return None if handout is None else {**env, **handout}
+
+
+def handout_witness(
+    problem: Problem, points: Points, outcome: Decision, answer: Compiled, reference: Compiled
+) -> dict[str, float] | None:
+    """Where a wrong answer shows, in numbers the student was given: for a formula in the
+    parameters alone, the handout's values (the student's own variant) rather than a sampled
+    point; no point at all when both sides look the same there (three significant figures),
+    rather than a point the student never saw. Otherwise `witness_point`."""
+    witness = witness_point(points, outcome, answer, reference)
+    symbols = answer.symbols | reference.symbols
+    if witness is None or symbols & _motion(problem) or _handout_values(problem) is None:
+        return witness
+    env = _handout_point(problem, points, outcome.where, symbols)
+    try:
+        with np.errstate(all="ignore"):
+            mine, theirs = (_value_at(e, env) for e in (answer, reference))
+    except UnsupportedExpression:
         return None
-    env.update({s: np.array([float(v)]) for s, v in problem.values.items()})
-    return env
+    if np.isfinite(mine) == np.isfinite(theirs) and (
+        not np.isfinite(mine) or _shown_pair(float(np.real(mine)), float(np.real(theirs))) is None
+    ):
+        return None
+    names = {s: s.name for s in symbols if s in env}
+    return {names[s]: float(env[s][0]) for s in sorted(names, key=names.get)}
 
 
 def _shown_pair(mine: float, theirs: float) -> tuple[str, str] | None:
@@ -193,7 +229,19 @@ def values_text(
     if pair is None:
         return ""
     suffix = f" {unit}" if unit else ""
-    return f", where your {what} is {pair[0]}{suffix} and the reference's is {pair[1]}{suffix}"
+    mine = suffix if suffix and _same_dimension(problem, answer, reference) else ""
+    return f", where your {what} is {pair[0]}{mine} and the reference's is {pair[1]}{suffix}"
+
+
+def _same_dimension(problem: Problem, answer: Compiled, reference: Compiled) -> bool:
+    """Whether the answer has the reference's dimension, so that the reference's unit may be
+    put after the answer's value too (sqrt(l/g) is no angular velocity: "your answer is
+    0.16", not "0.16 rad/s"). False when a dimension cannot be told."""
+    known = dimensions_of(problem)
+    if not known:
+        return False
+    mine, theirs = (dimension(e.expr, known) for e in (answer, reference))
+    return mine is not None and mine == theirs and not isinstance(mine, str)
 
 
 def acceleration_text(

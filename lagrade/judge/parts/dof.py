@@ -11,11 +11,16 @@ from lagrade.errors import ParseError
 from lagrade.judge.parts.items import single_text
 from lagrade.judge.problem import Problem
 from lagrade.judge.verdict import Verdict, invalid
+from lagrade.notation import Vocabulary, parse_expression
 
 #: The longest whole number read as a count of degrees of freedom.
 MAX_DIGITS = 30
 #: What a `dof` answer that is not a whole number is told.
 WHOLE_NUMBER = "Write the number of degrees of freedom as a whole number, e.g. 2."
+#: What a worked count may be labelled with before its '=': `DOF = 2`, `3N − k = 6 − 4 = 2`.
+_LABEL = re.compile(r"\s*(?:dof|f|n|s|3\s*n\s*[-−]\s*k)\s*", re.IGNORECASE)
+#: The longest side of a worked count read as arithmetic.
+_MAX_SIDE = 80
 
 
 def read_dof(problem: Problem, answer: Any) -> str:
@@ -23,16 +28,47 @@ def read_dof(problem: Problem, answer: Any) -> str:
     if not isinstance(answer, int):
         answer = single_text(answer, "dof")
     text = str(answer).strip()
+    if isinstance(answer, str) and "=" in text:
+        text = _worked_count(text)
     if isinstance(answer, bool) or not (isinstance(answer, int) or re.fullmatch(r"[+-]?\d+", text)):
         raise ParseError(WHOLE_NUMBER, (0, len(text)), text)
     return text
+
+
+def _worked_count(text: str) -> str:
+    """The count a worked line ends with, as students write it on paper: `3N − k = 6 − 4 = 2`
+    (each side before the last a label or whole-number arithmetic giving the same count), so
+    that a right count is not refused for its working; the text itself when it is no such
+    line (then `WHOLE_NUMBER` is said). Arithmetic that gives another number is named."""
+    *sides, last = text.split("=")
+    last = last.strip()
+    if not re.fullmatch(rf"[+-]?\d{{1,{MAX_DIGITS}}}", last):
+        return text
+    for side in sides:
+        if _LABEL.fullmatch(side):
+            continue
+        if len(side) > _MAX_SIDE:
+            return text
+        try:
+            value = parse_expression(side, Vocabulary((), {})).lhs
+        except ParseError:
+            return text
+        if value != int(last):
+            shown = side.strip()
+            raise ParseError(
+                f"{shown} is {value}, not {last}; write the number of degrees of freedom "
+                "alone, e.g. 2.",
+                (0, len(shown)),
+                text,
+            )
+    return last
 
 
 def check_dof(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
     try:
         text = read_dof(problem, answer)
     except ParseError as error:
-        return invalid("dof", WHOLE_NUMBER, error.source)
+        return invalid("dof", error.message, error.source)
     if len(text.lstrip("+-")) > MAX_DIGITS:  # int() of 4,300+ digits raises; no system needs it
         return Verdict(
             "dof",

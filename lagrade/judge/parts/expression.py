@@ -23,12 +23,7 @@ from lagrade.judge.adaptive import ExactThenAdaptive
 from lagrade.judge.compiled import Compiled
 from lagrade.judge.decision import Decision
 from lagrade.judge.equivalence import expressions_equal
-from lagrade.judge.parts.common import (
-    incorrect,
-    method_name,
-    values_text,
-    witness_point,
-)
+from lagrade.judge.parts.common import handout_witness, incorrect, method_name, values_text
 from lagrade.judge.parts.items import single_text
 from lagrade.judge.parts.reading import Read, read_single
 from lagrade.judge.problem import Problem
@@ -324,7 +319,7 @@ def _check_one(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
         got,
         mutant,
         "Your answer is not equal to the expected expression",
-        witness_point(points, out, ans, ref),
+        handout_witness(problem, points, out, ans, ref),
         out.method if decided is not None else method_name(out),
         problem,
         values_text(problem, points, out, ans, ref, "answer", unit_text(problem.unit)),

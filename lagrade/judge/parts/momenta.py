@@ -5,12 +5,17 @@ from __future__ import annotations
 from collections.abc import Mapping
 from typing import Any
 
+import numpy as np
+import sympy as sp
+
 from lagrade.errors import ParseError
 from lagrade.judge.compiled import Compiled
 from lagrade.judge.derivatives import gradient
 from lagrade.judge.dimensions import hint_for, tells
 from lagrade.judge.equivalence import expressions_equal, lagrangians_match, values_equal
 from lagrade.judge.evaluate import UnsupportedExpression
+from lagrade.judge.matching import full, vanish_rows
+from lagrade.judge.mutations import expanded_terms
 from lagrade.judge.parts.common import (
     as_sentence,
     method_name,
@@ -32,6 +37,7 @@ from lagrade.judge.parts.reading import (
 from lagrade.judge.problem import Problem
 from lagrade.judge.tolerances import SAME_VALUE
 from lagrade.judge.verdict import Verdict, invalid
+from lagrade.notation import plain
 
 
 def read_momenta(problem: Problem, answer: Any) -> Lines:
@@ -128,14 +134,17 @@ def check_momenta(problem: Problem, answer: Any, given: Mapping | None) -> Verdi
             any_wrong = True
             continue
         any_wrong, follows_all = True, False
-        witness = witness or witness_point(points, out, ans)
+        witness = witness or witness_point(points, out, ans, reference)
         mutant = problem.catalogue.match_momentum(k, ans, points)
         if mutant is not None:
             feedback.append(as_sentence(mutant.message))
             mistakes.append(mutant.kind)
         else:
-            where = where_text(witness_point(points, out, ans), problem)
-            feedback.append(f"p_{j.name} is not ∂L/∂{j.name}_dot{where}.")
+            where = where_text(witness_point(points, out, ans, reference), problem)
+            factor = _factor_text(problem, k, ans, points)
+            derivative = f"∂L/∂{j.name}_dot"
+            said = f"is {derivative} {factor}" if factor else f"is not {derivative}"
+            feedback.append(f"p_{j.name} {said}{where}.")
         dimensions = hint_for(problem, by_coordinate[k], f"momentum:{k}") if tells(mutant) else ""
         if dimensions:
             feedback.append(f"p_{j.name}: {dimensions[0].lower()}{dimensions[1:]}")
@@ -179,3 +188,38 @@ def _own_is_same_gauge(problem: Problem, own: Compiled) -> bool:
     match = lagrangians_match(own, reference_el(problem, points), problem.jets, points)
     c = match.factor
     return match.outcome.equal and c is not None and abs(c - 1) <= SAME_VALUE
+
+
+def _factors(momentum: sp.Expr) -> list[sp.Expr]:
+    """The factors of the momentum's terms that are not numbers, and the base of each power
+    among them (r from r²), in the order they are printed: the candidates of `_factor_text`."""
+    out: dict[sp.Expr, None] = {}
+    for term in expanded_terms(momentum):
+        for f in sp.Mul.make_args(term):
+            if f.is_number:
+                continue
+            out[f] = None
+            if isinstance(f, sp.Pow) and f.exp.is_Integer and f.exp > 1:
+                out[f.base] = None
+    return list(out)
+
+
+def _factor_text(problem: Problem, k: int, ans: Compiled, points) -> str:
+    """ "without its factor r^2" when the answer times one factor of the reference's terms is
+    the reference at every sample point, "with an extra factor r" when the answer is the
+    reference times one; nothing otherwise. Checked by the correction it implies (the
+    answer corrected so equals ∂L/∂q̇ at the points), never by how the answer is printed."""
+    env, n = points.env, len(points.group)
+    try:
+        with np.errstate(all="ignore"):
+            a, sa = full(ans.values(env), n)
+            r, sr = full(problem.momenta[k].values(env), n)
+            for f in _factors(problem.system.generalized_momenta[k]):
+                fv, _ = full(Compiled.of(f).values(env), n)
+                if vanish_rows((a * fv - r)[None], (sa * np.abs(fv) + sr)[None])[0]:
+                    return f"without its factor {plain(f)}"
+                if vanish_rows((a - r * fv)[None], (sa + sr * np.abs(fv))[None])[0]:
+                    return f"with an extra factor {plain(f)}"
+    except (UnsupportedExpression, ValueError, ZeroDivisionError, OverflowError):
+        return ""
+    return ""
