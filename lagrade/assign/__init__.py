@@ -3,12 +3,10 @@ figures, jinja2 templates, and the generation of handouts, keys, answer sheets a
 
 from __future__ import annotations
 
-from importlib import import_module
-from typing import Any
-
 # a name that is also a module of this package is bound here, so that importing the module (which
 # sets the package's attribute to it) never shadows it
 from lagrade.assign.generate import generate
+from lagrade.exports import lazy_exports
 
 #: Each exported name, by the module that defines it (a module exported as a whole: its own
 #: name). Loaded on first use, so that importing the layer costs nothing it does not use.
@@ -75,13 +73,4 @@ __all__ = [
     "VariantChoice",
 ]
 
-
-def __getattr__(name: str) -> Any:
-    if name in _MODULES:
-        value = import_module(_EXPORTS[name])
-    elif name in _EXPORTS:
-        value = getattr(import_module(_EXPORTS[name]), name)
-    else:
-        raise AttributeError(f"module 'lagrade.assign' has no attribute {name!r}")
-    globals()[name] = value
-    return value
+__getattr__ = lazy_exports(__name__, _EXPORTS, _MODULES)

@@ -9,8 +9,7 @@ pool and the request reader (`check --batch` on its way to its workers) does not
 
 from __future__ import annotations
 
-from importlib import import_module
-from typing import Any
+from lagrade.exports import lazy_exports
 
 # a name that is also a module of this package is bound here, so that importing the module (which
 # sets the package's attribute to it) never shadows it
@@ -89,13 +88,4 @@ __all__ = [
     "verify_variant",
 ]
 
-
-def __getattr__(name: str) -> Any:
-    if name in _MODULES:
-        value = import_module(_EXPORTS[name])
-    elif name in _EXPORTS:
-        value = getattr(import_module(_EXPORTS[name]), name)
-    else:
-        raise AttributeError(f"module 'lagrade.judge' has no attribute {name!r}")
-    globals()[name] = value
-    return value
+__getattr__ = lazy_exports(__name__, _EXPORTS, _MODULES)

@@ -8,8 +8,7 @@ answer (`lagrade parse`) never does."""
 
 from __future__ import annotations
 
-from importlib import import_module
-from typing import Any
+from lagrade.exports import lazy_exports
 
 #: Each exported name, by the module that defines it (a module exported as a whole: its own
 #: name). Loaded on first use, so that importing the layer costs nothing it does not use.
@@ -107,13 +106,4 @@ __all__ = [
     "ZERO_MODE",
 ]
 
-
-def __getattr__(name: str) -> Any:
-    if name in _MODULES:
-        value = import_module(_EXPORTS[name])
-    elif name in _EXPORTS:
-        value = getattr(import_module(_EXPORTS[name]), name)
-    else:
-        raise AttributeError(f"module 'lagrade.mechanics' has no attribute {name!r}")
-    globals()[name] = value
-    return value
+__getattr__ = lazy_exports(__name__, _EXPORTS, _MODULES)
