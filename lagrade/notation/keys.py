@@ -7,7 +7,13 @@ from __future__ import annotations
 
 import sympy as sp
 
-from lagrade.mechanics import SceneVariant, phase_space, variant_oscillations
+from lagrade.mechanics import (
+    ZERO_MODE,
+    SceneVariant,
+    generalized_modes,
+    phase_space,
+    variant_oscillations,
+)
 from lagrade.notation.printer import plain
 
 
@@ -41,13 +47,32 @@ def key_answer(variant: SceneVariant, part: str, quantity: str | None = None) ->
         return plain(phase_space(system).hamiltonian)
     if part == "hamilton_equations":
         return [plain(e) for e in phase_space(system).hamilton_equations]
-    if part in ("equilibrium", "normal_modes"):
+    if part in ("equilibrium", "normal_modes", "mode_shapes"):
         return _oscillation_key(variant, part)
     if part == "expression":
         if quantity is None or quantity not in variant.quantities:
             raise KeyError(f"scene {variant.scene.id!r} has no quantity {quantity!r}")
         return plain(variant.quantities[quantity])
     raise KeyError(f"no key for part {part!r}")
+
+
+def mode_shape_lines(osc) -> list[str]:
+    """`omega = ω: (a_1, …)` for each oscillating mode about the stable equilibrium: closed
+    forms where sympy gives them, else scipy's `eigh` at the handout's values (each vector
+    scaled so that its largest entry is 1)."""
+    if osc.mode_shapes is not None:
+        return [
+            f"omega = {plain(w)}: ({', '.join(plain(x) for x in a)})" for w, a in osc.mode_shapes
+        ]
+    lam, vectors = generalized_modes(*osc.numeric(osc.stable))
+    top = max(float(abs(lam).max()), 1e-300)
+    out = []
+    for k, value in enumerate(lam):
+        if value <= ZERO_MODE * top:
+            continue
+        a = vectors[:, k] / vectors[abs(vectors[:, k]).argmax(), k]
+        out.append(f"omega = {value ** 0.5:.12g}: ({', '.join(f'{x:.12g}' for x in a)})")
+    return out
 
 
 def _oscillation_key(variant: SceneVariant, part: str) -> str:
@@ -58,6 +83,8 @@ def _oscillation_key(variant: SceneVariant, part: str) -> str:
         raise KeyError(f"no key for part {part!r}: {osc.why_not}")
     if part == "equilibrium":
         return ", ".join(f"{q.name} = {plain(v)}" for q, v in osc.stable.at.items())
+    if part == "mode_shapes":
+        return mode_shape_lines(osc) or ["none"]
     closed = osc.frequencies
     if closed is not None:
         shown = [plain(w) for w in closed if w != 0]
