@@ -284,6 +284,20 @@ class SmallOscillations:
                 out.append((w, tuple(sp.factor(sp.simplify(x / first)) for x in a)))
         return tuple(out)
 
+    def numeric_mode_shapes(self) -> list[tuple[float, np.ndarray]]:
+        """(ω, a) of each oscillating mode about `stable` at the variant's values, by scipy's
+        `eigh(K, M)`, each a scaled so that its largest entry is 1 (for a key when `mode_shapes`
+        has no closed form)."""
+        if self.stable is None:
+            return []
+        lam, vectors = generalized_modes(*self.numeric(self.stable))
+        top = max(float(np.abs(lam).max()), 1e-300)
+        return [
+            (float(np.sqrt(value)), vectors[:, k] / vectors[np.abs(vectors[:, k]).argmax(), k])
+            for k, value in enumerate(lam)
+            if value > ZERO_MODE * top
+        ]
+
     def numeric_frequencies(self, values: Mapping | None = None) -> np.ndarray | None:
         """The angular frequencies about `stable` at `values` (default: the variant's), by
         scipy's generalized symmetric eigensolver; None without a stable equilibrium."""

@@ -7,13 +7,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from lagrade.mechanics import (
-    ZERO_MODE,
-    SceneVariant,
-    generalized_modes,
-    phase_space,
-    variant_oscillations,
-)
+from lagrade.mechanics import SceneVariant, phase_space, variant_oscillations
 from lagrade.notation.printer import plain
 
 
@@ -64,15 +58,10 @@ def mode_shape_lines(osc) -> list[str]:
         return [
             f"omega = {plain(w)}: ({', '.join(plain(x) for x in a)})" for w, a in osc.mode_shapes
         ]
-    lam, vectors = generalized_modes(*osc.numeric(osc.stable))
-    top = max(float(abs(lam).max()), 1e-300)
-    out = []
-    for k, value in enumerate(lam):
-        if value <= ZERO_MODE * top:
-            continue
-        a = vectors[:, k] / vectors[abs(vectors[:, k]).argmax(), k]
-        out.append(f"omega = {value ** 0.5:.12g}: ({', '.join(f'{x:.12g}' for x in a)})")
-    return out
+    return [
+        f"omega = {w:.12g}: ({', '.join(f'{x:.12g}' for x in a)})"
+        for w, a in osc.numeric_mode_shapes()
+    ]
 
 
 def _oscillation_key(variant: SceneVariant, part: str) -> str:
