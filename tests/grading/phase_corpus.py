@@ -255,6 +255,57 @@ CASES: list[Case] = [
     ),
     Case(HOOP, "normal_modes", "omega sqrt(1 - (g/(omega^2 R))^2)", "correct"),
     Case(HOOP, "normal_modes", "sqrt(g/R - omega^2)", "incorrect"),
+    # mode shapes: the carts move together at sqrt(k/m), oppositely at sqrt(3k/m)
+    Case(CARTS, "mode_shapes", "omega = sqrt(k/m): (1, 1)\nomega = sqrt(3 k/m): (1, -1)", "correct"),
+    Case(CARTS, "mode_shapes", "sqrt(3 k/m): (-2, 2); sqrt(k/m): (5, 5)", "correct"),
+    Case(
+        CARTS,
+        "mode_shapes",
+        "omega = sqrt(k/m): (1, -1)\nomega = sqrt(3 k/m): (1, 1)",
+        "incorrect",
+        "swapped",
+    ),
+    Case(
+        CARTS,
+        "mode_shapes",
+        "omega = sqrt(k/m): (1, 0)\nomega = sqrt(3 k/m): (1, -1)",
+        "incorrect",
+        "wrong_shape",  # M = m 1 here, so K's eigenvectors are the modes and (1, 0) is none
+    ),
+    Case(
+        DOUBLE,
+        "mode_shapes",
+        "omega = sqrt((2 - sqrt(2)) g/l): (1, sqrt(2))\n"
+        "omega = sqrt((2 + sqrt(2)) g/l): (1, -sqrt(2))",
+        "correct",
+    ),
+    Case(
+        DOUBLE,
+        "mode_shapes",
+        "omega = sqrt((2 - sqrt(2)) g/l): (1, 1)\nomega = sqrt((2 + sqrt(2)) g/l): (1, -1)",
+        "incorrect",
+        "wrong_shape",
+    ),
+    Case(
+        DOUBLE,
+        "mode_shapes",
+        "omega = sqrt((2 - sqrt(2)) g/l): (1, 0)\nomega = sqrt((2 + sqrt(2)) g/l): (0, 1)",
+        "incorrect",
+        "mass_ignored",  # the eigenvectors of K = m g l diag(2, 1) alone
+    ),
+    Case(
+        TRIATOMIC,
+        "mode_shapes",
+        "omega = sqrt(k/m): (1, 0, -1)\nomega = sqrt(k/m (1 + 2 m/M)): (1, -2 m/M, 1)",
+        "correct",
+    ),
+    Case(
+        TRIATOMIC,
+        "mode_shapes",
+        "omega = sqrt(k/m): (1, 0, -1)\nomega = sqrt(k/m (1 + 2 m/M)): (1, -2, 1)",
+        "incorrect",
+        "mass_ignored",  # (1, -2, 1) is an eigenvector of K alone (K a = 3 k a)
+    ),
 ]
 
 
@@ -354,6 +405,8 @@ def verify(case: Case) -> str:
         M = s.mass().subs(at).subs(values)
         lam = [complex(sp.N(x)) for x in (M.inv() * K).eigenvals(multiple=True)]
         return "correct" if all(x.real >= -1e-12 for x in lam) else "incorrect"
+    if case.part == "mode_shapes":
+        return _verify_modes(case, s, U)
     # normal modes: the stable equilibrium of each system here is q = 0 but for the hoop
     at = (
         {s.q[0]: sp.acos(s.params["g"] / (s.params["omega"] ** 2 * s.params["R"]))}
@@ -373,6 +426,38 @@ def verify(case: Case) -> str:
             return "incorrect"  # not even real
         given = sorted(g.real for g in given if abs(g) > 1e-12)
         if len(given) != len(nonzero) or not np.allclose(given, nonzero, rtol=1e-9):
+            return "incorrect"
+    return "correct"
+
+
+def _verify_modes(case: Case, s: Plain, U: sp.Expr) -> str:
+    """Each line `omega = w: (a, …)` solves (K − w² M) a = 0 at q = 0 (every system asked for
+    mode shapes here rests there), a ≠ 0, and the lines give each nonzero frequency once; at
+    two parameter points, to 30 digits (the frequencies compared in float64)."""
+    at = {q: 0 for q in s.q}
+    K, M = sp.hessian(U, s.q).subs(at), s.mass().subs(at)
+    lines = [x for x in case.answer.replace(";", "\n").splitlines() if x.strip()]
+    for seed in (1, 2):
+        values = s.point(seed)
+        Kv, Mv = K.subs(values), M.subs(values)
+        want = sorted(
+            abs(complex(sp.N(x, 30))) ** 0.5 for x in (Mv.inv() * Kv).eigenvals(multiple=True)
+        )
+        free = [w for w in want if w > 1e-9 * max(want)]
+        for line in lines:
+            head, tail = line.rsplit(":", 1)
+            w = s.read(head.split("=", 1)[1] if "=" in head else head).subs(values)
+            a = sp.Matrix([s.read(x).subs(values) for x in tail.strip()[1:-1].split(",")])
+            if len(a) != len(s.q) or a.is_zero_matrix:
+                return "incorrect"
+            residual = (Kv - w**2 * Mv) * a
+            if any(abs(complex(sp.N(r, 30))) > 1e-20 for r in residual):
+                return "incorrect"
+            hit = next((f for f in free if abs(complex(sp.N(w, 30)) - f) < 1e-12 * f), None)
+            if hit is None:
+                return "incorrect"
+            free.remove(hit)
+        if free:
             return "incorrect"
     return "correct"
 
