@@ -111,24 +111,44 @@ def _read_mode(problem: Problem, text: str, latex: bool) -> Mode:
             (0, len(text)),
             text,
         )
-    head, tail = text[:colon].strip(), text[colon + 1 :].strip()
-    inner = next(
-        (tail[len(a) : len(tail) - len(b)] for a, b in _BRACKETS if tail.startswith(a) and tail.endswith(b)),
-        None,
-    )
-    if not head or inner is None:
+    head, tail = text[:colon].rstrip(), text[colon + 1 :].rstrip()
+    start = colon + 1 + len(tail) - len(tail.lstrip())
+    tail = tail.lstrip()
+    opening = next((a for a, b in _BRACKETS if tail.startswith(a) and tail.endswith(b)), None)
+    if not head.strip() or opening is None:
         raise ParseError(
             f"Write the mode as {FORMAT}, the amplitudes in brackets after the colon.",
             (colon, len(text)),
             text,
         )
-    frequency = read_labelled(problem, Piece(head, latex), ("omega", "w"))
-    vector = tuple(read(problem, Piece(c, latex), mode="expression") for c in _components(inner))
+    closing = dict(_BRACKETS)[opening]
+    inner = tail[len(opening) : len(tail) - len(closing)]
+    frequency = _within(text, 0, lambda: read_labelled(problem, Piece(head, latex), ("omega", "w")))
+    vector = tuple(
+        _within(
+            text,
+            start + len(opening) + at,
+            lambda c=c: read(problem, Piece(c, latex), mode="expression"),
+        )
+        for at, c in _components(inner)
+    )
     return Mode(frequency, vector)
 
 
-def _components(inner: str) -> list[str]:
-    """The vector's entries: split at every comma outside brackets (`(3,3)` is two entries,
+def _within(text: str, offset: int, reading):
+    """A piece's reading, its parse error placed in the whole line (the caret under the
+    amplitude that does not read, not under a fragment shown alone)."""
+    try:
+        return reading()
+    except ParseError as error:
+        if not error.source or error.source not in text:
+            raise
+        a, b = error.span
+        raise ParseError(error.message, (a + offset, b + offset), text, error.hint) from None
+
+
+def _components(inner: str) -> list[tuple[int, str]]:
+    """The vector's entries with their offsets: split at every comma outside brackets (`(3,3)` is two entries,
     not the decimal comma a list's item would be), a LaTeX command's character never."""
     pieces, depth, start, i = [], 0, 0, 0
     while i < len(inner):
@@ -141,11 +161,11 @@ def _components(inner: str) -> list[str]:
         elif c in ")}]":
             depth = max(0, depth - 1)
         elif c == "," and depth == 0:
-            pieces.append(inner[start:i])
+            pieces.append((start, inner[start:i]))
             start = i + 1
         i += 1
-    pieces.append(inner[start:])
-    return [p.strip() for p in pieces]
+    pieces.append((start, inner[start:]))
+    return [(at + len(p) - len(p.lstrip()), p.strip()) for at, p in pieces]
 
 
 def _top_level_colon(text: str) -> int | None:
