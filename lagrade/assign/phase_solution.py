@@ -1,10 +1,10 @@
 """The key's solution of the next lecture's parts (`hamiltonian`, `hamilton_equations`,
-`equilibrium`, `normal_modes`, `mode_shapes`) for one student's variant: H, Hamilton's
-equations, the stable equilibrium, the normal-mode frequencies and their mode vectors set as math in every format, or the reason there are
-none, and the answers as a student types them (`lagrade.notation.keys`, the text the grader
-checks). Derived only for a problem that asks one of them: most handouts never pay for it. The
-equilibrium that is stable can depend on the values (a hoop turning fast or slowly), so this is
-computed per variant, not per presentation."""
+`equilibrium`, `normal_modes`, `mode_shapes`) for one student's variant: H, Hamilton's equations,
+the stable equilibrium, the normal-mode frequencies and their mode vectors set as math in every
+format, or the reason there are none, and the answers as a student types them
+(`lagrade.notation.keys`, the text the grader checks). Derived only for a problem that asks one of
+them: most handouts never pay for it. The equilibrium that is stable can depend on the values (a
+hoop turning fast or slowly), so this is computed per variant, not per presentation."""
 
 from __future__ import annotations
 

@@ -31,8 +31,8 @@ from lagrade.judge.parts.eom import read_eom
 from lagrade.judge.parts.expression import read_expression
 from lagrade.judge.parts.hamilton_equations import read_hamilton_equations
 from lagrade.judge.parts.hamiltonian import read_hamiltonian
-from lagrade.judge.parts.momenta import read_momenta
 from lagrade.judge.parts.mode_shapes import ModeLines, read_mode_shapes
+from lagrade.judge.parts.momenta import read_momenta
 from lagrade.judge.parts.oscillation import read_equilibrium, read_normal_modes
 from lagrade.judge.parts.reading import Lines, Read, Unreadable, reading_notes
 from lagrade.judge.parts.transformation import read_transformation

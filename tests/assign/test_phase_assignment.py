@@ -1,8 +1,8 @@
-"""The next lecture's parts (`hamiltonian`, `hamilton_equations`, `equilibrium`,
-`normal_modes`, `mode_shapes`) through the whole chain: `generate` (every key verified by the grader, the key
-shows H, Hamilton's equations, the equilibrium and the frequencies), `grade` (the key's own
-answers get full marks, a wrong H is named), and `export prairielearn` (server.py graded the
-way PrairieLearn calls it). They reach every entry point through the one door, `run_checker`."""
+"""The next lecture's parts (`hamiltonian`, `hamilton_equations`, `equilibrium`, `normal_modes`,
+`mode_shapes`) through the whole chain: `generate` (every key verified by the grader, the key shows
+H, Hamilton's equations, the equilibrium and the frequencies), `grade` (the key's own answers get
+full marks, a wrong H is named), and `export prairielearn` (server.py graded the way PrairieLearn
+calls it). They reach every entry point through the one door, `run_checker`."""
 
 from __future__ import annotations
 

@@ -256,7 +256,9 @@ CASES: list[Case] = [
     Case(HOOP, "normal_modes", "omega sqrt(1 - (g/(omega^2 R))^2)", "correct"),
     Case(HOOP, "normal_modes", "sqrt(g/R - omega^2)", "incorrect"),
     # mode shapes: the carts move together at sqrt(k/m), oppositely at sqrt(3k/m)
-    Case(CARTS, "mode_shapes", "omega = sqrt(k/m): (1, 1)\nomega = sqrt(3 k/m): (1, -1)", "correct"),
+    Case(
+        CARTS, "mode_shapes", "omega = sqrt(k/m): (1, 1)\nomega = sqrt(3 k/m): (1, -1)", "correct"
+    ),
     Case(CARTS, "mode_shapes", "sqrt(3 k/m): (-2, 2); sqrt(k/m): (5, 5)", "correct"),
     Case(
         CARTS,

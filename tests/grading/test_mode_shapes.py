@@ -57,7 +57,8 @@ def _label(L, q, v, values: dict, modes: list[tuple[sp.Expr, tuple]]) -> str:
 
 
 def _text(modes) -> str:
-    return "\n".join(f"omega = {sp.sstr(w)}: ({', '.join(sp.sstr(x) for x in a)})" for w, a in modes)
+    lines = [f"omega = {sp.sstr(w)}: ({', '.join(sp.sstr(x) for x in a)})" for w, a in modes]
+    return "\n".join(lines)
 
 
 SLOW, FAST = sp.sqrt(k / m), sp.sqrt((k + 2 * k_c) / m)
@@ -124,7 +125,8 @@ def test_the_bank_double_pendulums_key_and_a_swapped_key():
         ("omega = sqrt(k/m): 1", "amplitudes in brackets"),
         ("omega = sqrt(k/m): (1, 1, 1)", "one amplitude per coordinate, in the order (x_1, x_2)"),
         ("omega = sqrt(k/m): (x_1, 1)", "holds no coordinate"),
-        ("omega = sqrt(k/m): (1, 1 +)", "  omega = sqrt(k/m): (1, 1 +)\n" + " " * 27 + "^"),  # the caret under the +
+        # the caret under the + in the whole line
+        ("omega = sqrt(k/m): (1, 1 +)", "  omega = sqrt(k/m): (1, 1 +)\n" + " " * 27 + "^"),
     ],
 )
 def test_bad_text_is_invalid_with_a_message(answer, message):
@@ -136,7 +138,8 @@ def test_bad_text_is_invalid_with_a_message(answer, message):
 
 def test_the_preview_reads_each_mode_without_judging():
     problem = build_problem({"scene": "coupled_oscillators", "seed": 2})
-    reading = read_answer(problem, "mode_shapes", "omega = sqrt(k/m): (1, 1)\nsqrt(3k/m): (1, -1 +)")
+    answer = "omega = sqrt(k/m): (1, 1)\nsqrt(3k/m): (1, -1 +)"
+    reading = read_answer(problem, "mode_shapes", answer)
     assert reading.status == "read"
     assert reading.lines[0].plain == "omega = sqrt(k/m): (1, 1)"
     assert reading.lines[1].error.startswith("Line 2")

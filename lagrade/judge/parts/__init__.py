@@ -45,8 +45,8 @@ from lagrade.judge.parts.eom import check_eom
 from lagrade.judge.parts.expression import check_expression
 from lagrade.judge.parts.hamilton_equations import check_hamilton_equations
 from lagrade.judge.parts.hamiltonian import check_hamiltonian
-from lagrade.judge.parts.momenta import check_momenta
 from lagrade.judge.parts.mode_shapes import check_mode_shapes
+from lagrade.judge.parts.momenta import check_momenta
 from lagrade.judge.parts.oscillation import check_equilibrium, check_normal_modes
 from lagrade.judge.parts.own_coordinates import (
     FOLLOWING,

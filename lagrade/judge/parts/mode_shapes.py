@@ -148,8 +148,8 @@ def _within(text: str, offset: int, reading):
 
 
 def _components(inner: str) -> list[tuple[int, str]]:
-    """The vector's entries with their offsets: split at every comma outside brackets (`(3,3)` is two entries,
-    not the decimal comma a list's item would be), a LaTeX command's character never."""
+    """The vector's entries with their offsets: split at every comma outside brackets (`(3,3)`
+    is two entries, not the decimal comma a list's item would be), at no LaTeX command."""
     pieces, depth, start, i = [], 0, 0, 0
     while i < len(inner):
         c = inner[i]
@@ -254,7 +254,8 @@ def check_mode_shapes(problem: Problem, answer: Any, given: Mapping | None) -> V
         if not _mode(w, ref, modes, used):
             wrong += 1
             kind = _slip(w, ref, modes)
-            feedback.append(f"{mode.echo}: " + (_SLIPS[kind] if kind else _no_frequency(ref, modes)))
+            why = _SLIPS[kind] if kind else _no_frequency(ref, modes)
+            feedback.append(f"{mode.echo}: {why}")
             mistakes.append(kind or "not_a_frequency")
             continue
         k = np.argmax(used & ~before, axis=1)
@@ -266,8 +267,9 @@ def check_mode_shapes(problem: Problem, answer: Any, given: Mapping | None) -> V
         other = next((j for j in modes if fits(a, ref[:, j] ** 2)), None)
         if other is not None:
             feedback.append(
-                f"{mode.echo}: this is the shape of the mode at ω = {rounded(float(ref[0, other]))} "
-                f"rad/s (at the first point drawn), not of ω = {rounded(float(ref[0, k[0]]))}."
+                f"{mode.echo}: this is the shape of the mode at ω = "
+                f"{rounded(float(ref[0, other]))} rad/s (at the first point drawn), not of "
+                f"ω = {rounded(float(ref[0, k[0]]))}."
             )
             mistakes.append("swapped")
         elif _eigenvector_of_K(K, a):
