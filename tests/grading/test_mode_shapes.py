@@ -5,11 +5,12 @@ The labels are recomputed here without lagrade: the Lagrangians written out from
 textbooks, M and K as sympy Hessians at q = 0, and (K − ω² M) a = 0 checked at the variant's
 own values with numpy (`_label`).
 
-- Two equal masses and three springs (Taylor, Classical Mechanics, §11.1–§11.2: the carts
-  move together at ω = √(k/m) and oppositely at a higher frequency); the bank's middle spring
-  is k_c, so the second mode is √((k + 2 k_c)/m) with shape (1, −1).
-- The double pendulum (Taylor §11.4 for equal masses and lengths: ω² = (2 ∓ √2) g/l with
-  shapes (1, ±√2)); the bank's general form has a₂/a₁ = (2 − 2λ) … from the same 2×2 problem."""
+- Two equal masses and three springs, the middle one k_c (after Taylor, Classical Mechanics,
+  ch. 11, which opens with this system; its section numbers were not checked here): the masses
+  move together at ω = √(k/m), (1, 1), and oppositely at √((k + 2 k_c)/m), (1, −1).
+- The double pendulum with equal masses and lengths (Kibble & Berkshire, Classical Mechanics,
+  5th ed., ch. 11, example "Normal modes of the double pendulum", eqs. 11.20–11.21, read for
+  this test: ω² = (2 ∓ √2) g/l, with shapes (1, ±√2) from the same 2×2 problem)."""
 
 from __future__ import annotations
 
