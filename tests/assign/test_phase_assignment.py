@@ -60,7 +60,7 @@ def test_the_key_shows_the_new_parts_in_every_format(generated):
     assert "Normal-mode angular frequencies" in (keys / "s001.html").read_text()
     assert md.count("### Mode shapes") == 1  # asked of the double pendulum alone
     assert "Mode shapes" in (keys / "s001.html").read_text()
-    assert r"\textbf{Mode shapes.}" in (keys / "s001.tex").read_text()
+    assert r"\par\textbf{Mode shapes}" in (keys / "s001.tex").read_text()
     assert r"\textbf{Hamiltonian.}" in (keys / "s001.tex").read_text()
     sheet = (generated / "ps" / "answer_sheets" / "s001.toml").read_text()
     assert "hamilton_equations = '''" in sheet and "p_x_dot" in sheet
