@@ -144,3 +144,31 @@ def test_the_preview_reads_each_mode_without_judging():
     assert reading.status == "read"
     assert reading.lines[0].plain == "omega = sqrt(k/m): (1, 1)"
     assert reading.lines[1].error.startswith("Line 2")
+
+
+@pytest.mark.parametrize(
+    ("answer", "status", "mistake"),
+    [
+        (
+            ["omega = sqrt(k_z/m): (0, 0, 1)", "sqrt(k/m): (1, 1, 0)", "sqrt(k/m): (1, -1, 0)"],
+            "correct",
+            None,
+        ),
+        (
+            ["omega = sqrt(k_z/m): (0, 0, 1)", "sqrt(k/m): (1, 0, 0)", "sqrt(k/m): (2, 0, 0)"],
+            "incorrect",
+            "repeated",
+        ),
+    ],
+)
+def test_a_repeated_frequency_takes_any_two_independent_vectors_of_its_plane(
+    answer, status, mistake
+):
+    """A particle in a trap with k_x = k_y = k (free_particle, seed 3): the plane z = 0 is one
+    frequency's modes, so (1, 1, 0) and (1, −1, 0) are right and one direction twice is not."""
+    verdict = run_checker(
+        build_problem({"scene": "free_particle", "seed": 3}), "mode_shapes", answer
+    )
+    assert verdict.status == status, verdict.feedback
+    if mistake:
+        assert mistake in verdict.mistakes

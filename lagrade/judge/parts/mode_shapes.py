@@ -10,7 +10,8 @@ judged up to scale, by physics at every parameter draw: a belongs to the mode of
 degenerate pair accepts any vector of its plane. The modes come in any order, each matched to
 its frequency (as `normal_modes` matches them); a zero mode (ω = 0) may be left out. Named
 mistakes: the shape of another mode (`swapped`), an eigenvector of K alone, the masses left out
-(`mass_ignored`), a vector of no mode (`wrong_shape`), a frequency of no mode, a missing mode."""
+(`mass_ignored`), a vector of no mode (`wrong_shape`), the same direction twice for a repeated
+frequency (`repeated`), a frequency of no mode, a missing mode."""
 
 from __future__ import annotations
 
@@ -201,6 +202,7 @@ def check_mode_shapes(problem: Problem, answer: Any, given: Mapping | None) -> V
     feedback, mistakes = lines.feedback(), []
     used = np.zeros(ref.shape, dtype=bool)
     right = wrong = 0
+    accepted: list[tuple[np.ndarray, np.ndarray]] = []  # (a, λ) of each mode credited
 
     def fits(a: np.ndarray, lam: np.ndarray) -> bool:
         """(K − λ M) a = 0 at every point, relative to the terms' size."""
@@ -261,6 +263,16 @@ def check_mode_shapes(problem: Problem, answer: Any, given: Mapping | None) -> V
         k = np.argmax(used & ~before, axis=1)
         lam = ref[np.arange(points.n), k] ** 2
         if fits(a, lam):
+            if _dependent(a, [b for b, other in accepted if np.allclose(other, lam)]):
+                used[np.arange(points.n), k] = False  # a degenerate pair needs two directions
+                feedback.append(
+                    f"{mode.echo}: this frequency's other vector already points this way; a "
+                    "repeated frequency has a plane of modes, so give two independent vectors."
+                )
+                mistakes.append("repeated")
+                wrong += 1
+                continue
+            accepted.append((a, lam))
             right += 1
             continue
         wrong += 1
@@ -304,6 +316,16 @@ def _no_frequency(ref: np.ndarray, modes: list[int]) -> str:
         "this is not a normal-mode frequency (at the first point drawn, the frequencies are "
         f"{shown} rad/s)."
     )
+
+
+def _dependent(a: np.ndarray, others: list[np.ndarray]) -> bool:
+    """Whether `a` lies in the span of `others` (vectors already credited to the same
+    frequency) at every point: no new direction of a degenerate mode's plane."""
+    if not others:
+        return False
+    stacked = np.stack([*others, a], axis=1)  # (points, vectors, n)
+    rank = [np.linalg.matrix_rank(m, tol=SAME_MODE * np.abs(m).max()) for m in stacked]
+    return all(r < stacked.shape[1] for r in rank)
 
 
 def _eigenvector_of_K(K: np.ndarray, a: np.ndarray) -> bool:
