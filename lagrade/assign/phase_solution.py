@@ -1,10 +1,10 @@
 """The key's solution of the next lecture's parts (`hamiltonian`, `hamilton_equations`,
-`equilibrium`, `normal_modes`) for one student's variant: H, Hamilton's equations, the stable
-equilibrium and the normal-mode frequencies set as math in every format, or the reason there are
-none, and the answers as a student types them (`lagrade.notation.keys`, the text the grader
-checks). Derived only for a problem that asks one of them: most handouts never pay for it. The
-equilibrium that is stable can depend on the values (a hoop turning fast or slowly), so this is
-computed per variant, not per presentation."""
+`equilibrium`, `normal_modes`, `mode_shapes`) for one student's variant: H, Hamilton's equations,
+the stable equilibrium, the normal-mode frequencies and their mode vectors set as math in every
+format, or the reason there are none, and the answers as a student types them
+(`lagrade.notation.keys`, the text the grader checks). Derived only for a problem that asks one of
+them: most handouts never pay for it. The equilibrium that is stable can depend on the values (a
+hoop turning fast or slowly), so this is computed per variant, not per presentation."""
 
 from __future__ import annotations
 
@@ -26,7 +26,7 @@ from lagrade.notation import key_answer
 from lagrade.notation import printer as rm
 
 #: The parts on phase space and about small oscillations, in the order a handout asks them.
-PHASE_PARTS = ("hamiltonian", "hamilton_equations", "equilibrium", "normal_modes")
+PHASE_PARTS = ("hamiltonian", "hamilton_equations", "equilibrium", "normal_modes", "mode_shapes")
 #: Their prompts on the handout.
 PHASE_PROMPTS = {
     "hamiltonian": "Write the Hamiltonian H in the coordinates and the momenta p_q "
@@ -37,6 +37,9 @@ PHASE_PROMPTS = {
     "coordinate = value (a coordinate that may take any value can be left out).",
     "normal_modes": "Give the angular frequencies of small oscillations about it, separated by "
     "commas, in any order (a zero frequency may be left out).",
+    "mode_shapes": "For each normal-mode frequency give its mode vector, one mode per line, as "
+    "omega = frequency: (amplitudes of the coordinates in their order), e.g. "
+    "omega = sqrt(k/m): (1, -1); any scale, any order of modes.",
 }
 
 
@@ -47,7 +50,7 @@ def can_ask(variant: SceneVariant, part: str) -> str | None:
         phase_space(variant.system).velocity_matrix  # noqa: B018 - raises NotQuadratic
     except NotQuadratic as error:
         return str(error)
-    if part in ("equilibrium", "normal_modes"):
+    if part in ("equilibrium", "normal_modes", "mode_shapes"):
         return variant_oscillations(variant).why_not
     return None
 
@@ -98,8 +101,24 @@ def _phase_solution(scene: Scene, names: tuple, options: tuple, values: tuple) -
         out["normal_modes"] = [rm.render(w, coords) for w in osc.frequencies]
     else:
         out["normal_modes"] = [rm.render(sp.Float(w, 6), coords) for w in osc.numeric_frequencies()]
-    out["key_answers"] |= {p: key_answer(v, p) for p in ("equilibrium", "normal_modes")}
+    out["mode_shapes"] = [
+        {"frequency": rm.render(w, coords), "vector": rm.render(sp.Tuple(*a), coords)}
+        for w, a in _mode_shapes(osc)
+    ]
+    out["key_answers"] |= {
+        p: key_answer(v, p) for p in ("equilibrium", "normal_modes", "mode_shapes")
+    }
     return out
+
+
+def _mode_shapes(osc) -> list[tuple[sp.Expr, tuple[sp.Expr, ...]]]:
+    """(ω, a) of each oscillating mode: closed forms where sympy gives them, else scipy's
+    `eigh` at the handout's values to six figures (the largest entry 1)."""
+    if osc.mode_shapes is not None:
+        return list(osc.mode_shapes)
+    return [
+        (sp.Float(w, 6), tuple(sp.Float(x, 6) for x in a)) for w, a in osc.numeric_mode_shapes()
+    ]
 
 
 def phase_data(variant: SceneVariant) -> dict[str, Any]:

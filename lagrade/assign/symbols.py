@@ -48,7 +48,7 @@ def part_symbols(variant: SceneVariant, part: str) -> list[dict[str, Any]]:
             {"what": "left-hand sides", "names": coordinates},
             {"what": "may use", "names": parameters},
         ]
-    if part == "normal_modes":
+    if part in ("normal_modes", "mode_shapes"):
         return [{"what": "may use", "names": parameters}]
     groups = []
     if part == "transformation":

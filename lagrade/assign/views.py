@@ -52,7 +52,9 @@ ONE_CONSERVED_PROMPT = (
 #: Parts with a key answer of their own (an expression part's key is its quantity's name).
 KEYED_PARTS = tuple(PROMPTS)
 #: Parts whose answer sheet field holds several lines (one equation or item per line).
-MULTILINE = frozenset({"transformation", "eom", "momenta", "conserved", "hamilton_equations"})
+MULTILINE = frozenset(
+    {"transformation", "eom", "momenta", "conserved", "hamilton_equations", "mode_shapes"}
+)
 
 
 def _statement(variant: SceneVariant) -> dict[str, Any]:

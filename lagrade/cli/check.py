@@ -39,6 +39,7 @@ PART_NAMES = (
     "hamilton_equations",
     "equilibrium",
     "normal_modes",
+    "mode_shapes",
 )
 #: `lagrade.judge.check.DEFAULT_TIME_LIMIT` (pinned equal by the same test).
 DEFAULT_TIME_LIMIT = 2.0

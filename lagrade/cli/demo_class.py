@@ -48,8 +48,15 @@ variants = 8
 
 [[problems]]
 scene = "kepler"
-parts = ["lagrangian", "eom", "momenta", "cyclic", "conserved", "hamiltonian"]
-points = { lagrangian = 2, eom = 3, conserved = 2, hamiltonian = 2 }
+parts = ["lagrangian", "eom", "momenta", "cyclic", "conserved", "hamiltonian",
+         "hamilton_equations"]
+points = { lagrangian = 2, eom = 3, conserved = 2, hamiltonian = 2, hamilton_equations = 2 }
+variants = 8
+
+[[problems]]
+scene = "coupled_oscillators"
+parts = ["lagrangian", "equilibrium", "normal_modes", "mode_shapes"]
+points = { normal_modes = 2, mode_shapes = 2 }
 variants = 8
 
 [rubric]
@@ -252,6 +259,14 @@ def _answers(
             if mistake and name == "V":
                 answers[key] = notation(variant, -variant.potential_energy)
                 planted.append(f"{key}: sign of V")
+            elif mistake and name == "normal_modes":  # ω² for the first frequency
+                first, *rest = key_text.split(", ")
+                answers[key] = ", ".join([f"({first})^2", *rest])
+                planted.append(f"{key}: omega squared")
+            elif mistake and name == "mode_shapes" and len(key_text) == 2:
+                (w1, a1), (w2, a2) = (line.split(": ", 1) for line in key_text)
+                answers[key] = f"{w1}: {a2}\n{w2}: {a1}"
+                planted.append(f"{key}: the two vectors swapped")
     return answers, planted
 
 

@@ -102,7 +102,7 @@ def prepare(problem: Problem, part: str, diagnosis: bool = False) -> None:
                 _ = problem.system.conserved_quantities
             if part in ("hamiltonian", "hamilton_equations"):  # the points on phase space
                 phase_points(problem, problem.points(POINTS))
-            if part in ("equilibrium", "normal_modes"):
+            if part in ("equilibrium", "normal_modes", "mode_shapes"):
                 prepare_oscillations(problem)
         _prepared.add(key)
     if diagnosis:

@@ -31,6 +31,7 @@ from lagrade.judge.parts.eom import read_eom
 from lagrade.judge.parts.expression import read_expression
 from lagrade.judge.parts.hamilton_equations import read_hamilton_equations
 from lagrade.judge.parts.hamiltonian import read_hamiltonian
+from lagrade.judge.parts.mode_shapes import ModeLines, read_mode_shapes
 from lagrade.judge.parts.momenta import read_momenta
 from lagrade.judge.parts.oscillation import read_equilibrium, read_normal_modes
 from lagrade.judge.parts.reading import Lines, Read, Unreadable, reading_notes
@@ -55,6 +56,7 @@ READERS: dict[str, Callable[[Problem, Any], Any]] = {
     "hamilton_equations": read_hamilton_equations,
     "equilibrium": read_equilibrium,
     "normal_modes": read_normal_modes,
+    "mode_shapes": read_mode_shapes,
 }
 #: Parts written on phase space: their formulas are typeset with the momenta as variables
 #: (ṗ_θ for p_theta_dot).
@@ -122,7 +124,13 @@ def read_answer(problem: Problem, part: str, answer: Any) -> Reading:
 
 def _lines(problem: Problem, part: str, got: Any):
     """The lines of what a reader returned, shown as the part's verdict shows its reading."""
-    if isinstance(got, Lines):
+    if isinstance(got, ModeLines):  # a frequency and its vector: the plain echo says both
+        for k, entry in enumerate(got.entries):
+            if isinstance(entry, Unreadable):
+                yield ReadLine("", error=unreadable_line(k + 1, entry.error))
+            else:
+                yield ReadLine(entry.echo)
+    elif isinstance(got, Lines):
         for k, entry in enumerate(got.entries):
             if isinstance(entry, Unreadable):
                 yield ReadLine("", error=unreadable_line(k + 1, entry.error))

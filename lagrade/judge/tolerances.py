@@ -56,6 +56,9 @@ ZERO_ROW = 1e-10
 #: Normal-mode frequencies agree within this fraction (the reference is scipy's generalized
 #: eigensolver's, in float64).
 SAME_FREQUENCY = 1e-8
+#: A mode vector a belongs to the frequency ω when |(K − ω² M) a| is below this fraction of
+#: (|K| + ω² |M|) |a| (both matrices and ω² in float64: a few ulps of each term's size).
+SAME_MODE = 1e-7
 #: A Hamiltonian matches a catalogued mistake within this fraction of its terms' size (the
 #: momenta it is evaluated at are solved in float64, one step more than an L's values).
 H_MATCH = 1e-7

@@ -88,6 +88,13 @@ def generalized_eigenvalues(K: np.ndarray, M: np.ndarray) -> np.ndarray:
     return eigh(K, M, eigvals_only=True)
 
 
+def generalized_modes(K: np.ndarray, M: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """λ ascending and the mode vectors a_k (the columns, M-normalised) of K a = λ M a."""
+    from scipy.linalg import eigh
+
+    return eigh(K, M)
+
+
 def frequencies_from(K: np.ndarray, M: np.ndarray) -> np.ndarray:
     """The angular frequencies √λ, ascending, zero modes as 0 (NaN for an unstable λ < 0)."""
     lam = generalized_eigenvalues(K, M)
@@ -257,6 +264,39 @@ class SmallOscillations:
                 squares += [value] * times
         out = [sp.sqrt(sp.factor(sp.simplify(s))) for s in squares]
         return tuple(sorted(out, key=lambda w: _number(w, self.values) or 0.0))
+
+    @cached_property
+    def mode_shapes(self) -> tuple[tuple[sp.Expr, tuple[sp.Expr, ...]], ...] | None:
+        """(ω, a) of each oscillating mode about `stable` in closed form, a solving
+        (K − ω² M) a = 0 scaled so that its first nonzero entry is 1 (a degenerate ω once per
+        vector of a basis of its plane); None when the frequencies have no closed form."""
+        eq, closed = self.stable, self.frequencies
+        if eq is None or closed is None:
+            return None
+        out = []
+        for w in dict.fromkeys(closed):
+            if w == 0:
+                continue
+            basis = (eq.stiffness - w**2 * eq.mass).applyfunc(sp.simplify).nullspace(simplify=True)
+            for vector in basis:
+                a = list(vector)
+                first = next(x for x in a if sp.simplify(x) != 0)
+                out.append((w, tuple(sp.factor(sp.simplify(x / first)) for x in a)))
+        return tuple(out)
+
+    def numeric_mode_shapes(self) -> list[tuple[float, np.ndarray]]:
+        """(ω, a) of each oscillating mode about `stable` at the variant's values, by scipy's
+        `eigh(K, M)`, each a scaled so that its largest entry is 1 (for a key when `mode_shapes`
+        has no closed form)."""
+        if self.stable is None:
+            return []
+        lam, vectors = generalized_modes(*self.numeric(self.stable))
+        top = max(float(np.abs(lam).max()), 1e-300)
+        return [
+            (float(np.sqrt(value)), vectors[:, k] / vectors[np.abs(vectors[:, k]).argmax(), k])
+            for k, value in enumerate(lam)
+            if value > ZERO_MODE * top
+        ]
 
     def numeric_frequencies(self, values: Mapping | None = None) -> np.ndarray | None:
         """The angular frequencies about `stable` at `values` (default: the variant's), by

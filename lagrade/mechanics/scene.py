@@ -58,6 +58,7 @@ LAGRANGIAN_PARTS = (
     "hamilton_equations",
     "equilibrium",
     "normal_modes",
+    "mode_shapes",
     "expression",
 )
 

@@ -41,13 +41,27 @@ def key_answer(variant: SceneVariant, part: str, quantity: str | None = None) ->
         return plain(phase_space(system).hamiltonian)
     if part == "hamilton_equations":
         return [plain(e) for e in phase_space(system).hamilton_equations]
-    if part in ("equilibrium", "normal_modes"):
+    if part in ("equilibrium", "normal_modes", "mode_shapes"):
         return _oscillation_key(variant, part)
     if part == "expression":
         if quantity is None or quantity not in variant.quantities:
             raise KeyError(f"scene {variant.scene.id!r} has no quantity {quantity!r}")
         return plain(variant.quantities[quantity])
     raise KeyError(f"no key for part {part!r}")
+
+
+def mode_shape_lines(osc) -> list[str]:
+    """`omega = ω: (a_1, …)` for each oscillating mode about the stable equilibrium: closed
+    forms where sympy gives them, else scipy's `eigh` at the handout's values (each vector
+    scaled so that its largest entry is 1)."""
+    if osc.mode_shapes is not None:
+        return [
+            f"omega = {plain(w)}: ({', '.join(plain(x) for x in a)})" for w, a in osc.mode_shapes
+        ]
+    return [
+        f"omega = {w:.12g}: ({', '.join(f'{x:.12g}' for x in a)})"
+        for w, a in osc.numeric_mode_shapes()
+    ]
 
 
 def _oscillation_key(variant: SceneVariant, part: str) -> str:
@@ -58,6 +72,8 @@ def _oscillation_key(variant: SceneVariant, part: str) -> str:
         raise KeyError(f"no key for part {part!r}: {osc.why_not}")
     if part == "equilibrium":
         return ", ".join(f"{q.name} = {plain(v)}" for q, v in osc.stable.at.items())
+    if part == "mode_shapes":
+        return mode_shape_lines(osc) or ["none"]
     closed = osc.frequencies
     if closed is not None:
         shown = [plain(w) for w in closed if w != 0]

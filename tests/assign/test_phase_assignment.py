@@ -1,8 +1,8 @@
-"""The next lecture's parts (`hamiltonian`, `hamilton_equations`, `equilibrium`,
-`normal_modes`) through the whole chain: `generate` (every key verified by the grader, the key
-shows H, Hamilton's equations, the equilibrium and the frequencies), `grade` (the key's own
-answers get full marks, a wrong H is named), and `export prairielearn` (server.py graded the
-way PrairieLearn calls it). They reach every entry point through the one door, `run_checker`."""
+"""The next lecture's parts (`hamiltonian`, `hamilton_equations`, `equilibrium`, `normal_modes`,
+`mode_shapes`) through the whole chain: `generate` (every key verified by the grader, the key shows
+H, Hamilton's equations, the equilibrium and the frequencies), `grade` (the key's own answers get
+full marks, a wrong H is named), and `export prairielearn` (server.py graded the way PrairieLearn
+calls it). They reach every entry point through the one door, `run_checker`."""
 
 from __future__ import annotations
 
@@ -30,7 +30,7 @@ parts = ["momenta", "hamiltonian", "hamilton_equations"]
 
 [[problems]]
 scene = "double_pendulum"
-parts = ["hamiltonian", "equilibrium", "normal_modes"]
+parts = ["hamiltonian", "equilibrium", "normal_modes", "mode_shapes"]
 """
 ROSTER = "id,name\ns001,Ada Lovelace\ns002,Emmy Noether\n"
 
@@ -58,9 +58,13 @@ def test_the_key_shows_the_new_parts_in_every_format(generated):
         assert heading in md
     assert r"\dot{p}_{\theta}" in md or r"\dot{p}_{\phi}" in md or r"\dot{p}_{\psi}" in md
     assert "Normal-mode angular frequencies" in (keys / "s001.html").read_text()
+    assert md.count("### Mode shapes") == 1  # asked of the double pendulum alone
+    assert "Mode shapes" in (keys / "s001.html").read_text()
+    assert r"\par\textbf{Mode shapes}" in (keys / "s001.tex").read_text()
     assert r"\textbf{Hamiltonian.}" in (keys / "s001.tex").read_text()
     sheet = (generated / "ps" / "answer_sheets" / "s001.toml").read_text()
     assert "hamilton_equations = '''" in sheet and "p_x_dot" in sheet
+    assert "mode_shapes = '''" in sheet and "omega = frequency: (amplitudes" in sheet
     handout = (generated / "ps" / "handouts" / "s001.md").read_text()
     assert "Write the Hamiltonian H" in handout
 
@@ -82,7 +86,7 @@ def test_grading_the_keys_gives_full_marks(generated):
         for p in prob["parts"]
     }
     assert set(verdicts.values()) == {"correct"}, verdicts
-    assert len(verdicts) == 11
+    assert len(verdicts) == 12
 
 
 def test_a_hamiltonian_in_the_velocities_is_named(generated):

@@ -16,6 +16,7 @@ from __future__ import annotations
 import csv
 import json
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -45,7 +46,14 @@ variants = 3
 scene = "atwood"
 parts = ["lagrangian", { quantity = "acceleration", points = 2 }]
 variants = 2
+
+[[problems]]
+scene = "coupled_oscillators"
+parts = ["hamiltonian", "hamilton_equations", "equilibrium", "normal_modes", "mode_shapes"]
+variants = 2
 """
+#: The next lecture's parts, asked in the third problem.
+PHASE_PARTS = ("hamiltonian", "hamilton_equations", "equilibrium", "normal_modes", "mode_shapes")
 ROSTER = [
     ("s01", "Ada Lovelace", "ada@uni.edu"),
     ("s02", "Ben Okri", "Ben@Uni.edu"),
@@ -230,6 +238,19 @@ def test_each_sheet_earns_on_gradescope_what_lagrade_grade_gives(course, autogra
         assert payload["tests"] == ours["tests"], sid
         assert payload["output"].startswith(f"Graded as {name} ({sid}): the student whose email")
         assert payload["output_format"] == "text"
+
+
+def test_the_key_with_the_next_lecture_s_parts_earns_full_marks_on_gradescope(course, autograder):
+    """The answer key's own sheet (the TOML the key prints), uploaded by the student's account:
+    every test at its full points, the next lecture's parts among them."""
+    key = (course / "ps" / "keys" / "s03.md").read_text()
+    sheet = 'student_id = "s03"\n' + "\n".join(re.findall(r"```toml\n(.*?)```", key, flags=re.S))
+    payload = submit(autograder, {"key.toml": sheet}, email="chen@uni.edu")
+    assert payload["tests"] and all(t["score"] == t["max_score"] for t in payload["tests"])
+    names = " ".join(t["name"] for t in payload["tests"])
+    assert all(part in names for part in PHASE_PARTS), names
+    total = sum(t["max_score"] for t in payload["tests"])
+    assert payload["score"] == pytest.approx(total)
 
 
 def test_an_account_without_a_roster_email_is_found_by_gradescope_s_student_id(course, autograder):

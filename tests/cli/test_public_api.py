@@ -62,6 +62,7 @@ EXPORTS = {
         "deciding_values",
         "frequencies_from",
         "generalized_eigenvalues",
+        "generalized_modes",
         "identically_zero",
         "jet",
         "lagrange",

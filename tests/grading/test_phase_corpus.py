@@ -1,7 +1,7 @@
-"""The textbook corpus of the next lecture's parts (`phase_corpus.py`: Taylor chs. 7, 11, 13;
-Goldstein §§6.4, 8.1, 8.2; Morin ch. 4), each label recomputed in plain sympy, then every case
-through `lagrade check --batch` in one run: the verdict is the label, and a named mistake is
-named."""
+"""The textbook corpus of the next lecture's parts (`phase_corpus.py`: after Taylor chs. 7, 11, 13;
+Goldstein §§6.4, 8.2; Kibble & Berkshire chs. 11, 12), each label recomputed in plain sympy, then
+every case through `lagrade check --batch` in one run: the verdict is the label, and a named
+mistake is named."""
 
 from __future__ import annotations
 

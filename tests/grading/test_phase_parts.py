@@ -12,7 +12,7 @@ from lagrade.judge.key import key_answer
 from lagrade.judge.parts import run_checker
 from lagrade.judge.problem import build_problem
 
-NEW_PARTS = ("hamiltonian", "hamilton_equations", "equilibrium", "normal_modes")
+NEW_PARTS = ("hamiltonian", "hamilton_equations", "equilibrium", "normal_modes", "mode_shapes")
 
 
 def _problem(scene: str, seed: int = 1):

@@ -45,6 +45,7 @@ from lagrade.judge.parts.eom import check_eom
 from lagrade.judge.parts.expression import check_expression
 from lagrade.judge.parts.hamilton_equations import check_hamilton_equations
 from lagrade.judge.parts.hamiltonian import check_hamiltonian
+from lagrade.judge.parts.mode_shapes import check_mode_shapes
 from lagrade.judge.parts.momenta import check_momenta
 from lagrade.judge.parts.oscillation import check_equilibrium, check_normal_modes
 from lagrade.judge.parts.own_coordinates import (
@@ -75,6 +76,7 @@ PARTS: dict[str, Checker] = {
     "hamilton_equations": check_hamilton_equations,
     "equilibrium": check_equilibrium,
     "normal_modes": check_normal_modes,
+    "mode_shapes": check_mode_shapes,
 }
 
 #: Parts that need a Lagrangian (a bank scene or an ad-hoc L), not only an expression.
