@@ -175,7 +175,7 @@ def identically_zero(expr: sp.Expr, ranges: Ranges | None = None, seed: int = 0)
     >>> identically_zero(sp.sin(2 * theta) - sp.sin(theta) * sp.cos(theta))
     False
     """
-    expr = sp.sympify(expr) if isinstance(expr, int) else expr
+    expr = sp.Integer(expr) if isinstance(expr, int) else expr
     if expr == 0:
         return True
     if not expr.free_symbols:
