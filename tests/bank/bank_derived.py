@@ -11,6 +11,12 @@ presentation changes applied to its code by hand, the figure's axis names in GRE
 MathML formula's aria-label, so only figure bytes and statement HTML differ), and must never be
 regenerated from the new code to make a test pass. Only APIs both versions have are used.
 
+One change since, to the SVG hashes alone (round 3, issue 37's label placement): a body's disc or
+shape and its mass label carry SVG ids (`body-NAME`, `label-NAME`) in place of matplotlib's
+numbered ones. Checked before the 123 hashes were rewritten: with every `<g>` id removed, each
+presentation's SVG is byte for byte the one 7ffd123 draws, and every PDF hash is unchanged; no
+derivation, statement or PDF entry was touched.
+
 Expressions are kept twice: `str` (readable in a failing diff) and the SHA-256 of `srepr`
 (exact: tree shape, argument order and symbol assumptions), so that the record stays small.
 """

@@ -267,11 +267,12 @@ def test_an_unreachable_scheduler_is_one_line_and_exit_2(tmp_path, monkeypatch, 
 def test_a_worker_running_another_lagrade_stops_the_run(tmp_path, cluster, monkeypatch, capsys):
     """The workers must run the version the parent runs (a result records its grader's version,
     and a rerun reuses it on that word): a worker that does not says so, and nothing is written."""
-    import lagrade.assign.manifest as manifest
+    import lagrade.assign
 
     address, client = cluster
     _all_workers_back(client)
-    monkeypatch.setattr(manifest, "project_version", lambda: "0.0.0+other")
+    # the parent reads the version at the assign layer's door, as every other layer does
+    monkeypatch.setattr(lagrade.assign, "project_version", lambda: "0.0.0+other")
     requests = tmp_path / "requests.jsonl"
     requests.write_bytes(b"\n".join(_requests()[:3]) + b"\n")
     argv = ["check", "--batch", str(requests), "--out", str(tmp_path / "out.jsonl")]
