@@ -53,7 +53,7 @@ from lagrade.judge.parts.own_coordinates import (
     judged_in_chosen_coordinates,
     transformation_remark,
 )
-from lagrade.judge.parts.reading import hear, reading_notes
+from lagrade.judge.parts.reading import reading_notes
 from lagrade.judge.parts.transformation import check_transformation
 from lagrade.judge.problem import Problem
 from lagrade.judge.verdict import Verdict, invalid
@@ -123,7 +123,6 @@ def run_checker(problem: Problem, part: str, answer: Any, given: Mapping | None 
             with ambiguous_lines():
                 better = best_reading(judged, answer, part, ambiguous, verdict)
             verdict, notes = better or (verdict, notes)
-        hear(notes)
         return with_notes(verdict, notes)
     except ParseError as error:
         return invalid(part, str(error), getattr(error, "source", ""))

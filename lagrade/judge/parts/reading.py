@@ -338,29 +338,6 @@ def reading_notes() -> Iterator[list[str]]:
         _notes.reset(token)
 
 
-_heard: ContextVar[list[str] | None] = ContextVar("heard_notes", default=None)
-
-
-@contextmanager
-def heard_notes() -> Iterator[list[str]]:
-    """Collect, while the block runs, the reading notes of each part judged in it, whatever
-    its verdict: a preview shows how an answer is read before anyone says whether it is right,
-    so a note there tells nothing about the verdict (the verdict's feedback keeps them only on
-    a wrong answer: `with_notes`)."""
-    token = _heard.set([])
-    try:
-        yield _heard.get()  # type: ignore[misc]
-    finally:
-        _heard.reset(token)
-
-
-def hear(notes: list[str]) -> None:
-    """Pass a judged part's reading notes to an enclosing `heard_notes`, if any."""
-    heard = _heard.get()
-    if heard is not None:
-        heard += [n for n in notes if n not in heard]
-
-
 def read_parsed(problem: Problem, parsed) -> Read:
     notes = _notes.get()
     if notes is not None:
