@@ -102,7 +102,7 @@ def _phase_solution(scene: Scene, names: tuple, options: tuple, values: tuple) -
     else:
         out["normal_modes"] = [rm.render(sp.Float(w, 6), coords) for w in osc.numeric_frequencies()]
     out["mode_shapes"] = [
-        {"frequency": rm.render(w, coords), "vector": rm.render(sp.Tuple(*a), coords)}
+        {"frequency": rm.render(w, coords), "vector": rm.render(_vector(a), coords)}
         for w, a in _mode_shapes(osc)
     ]
     out["key_answers"] |= {
@@ -189,3 +189,10 @@ __all__ = [
     "phase_lines",
     "phase_solution",
 ]
+
+
+def _vector(amplitudes) -> sp.Expr:
+    """A mode's amplitudes as shown: (1, −1); one amplitude alone is (1), not a tuple's (1,)."""
+    if len(amplitudes) == 1:
+        return sp.Tuple(*amplitudes)[0]
+    return sp.Tuple(*amplitudes)

@@ -48,7 +48,12 @@ def part_symbols(variant: SceneVariant, part: str) -> list[dict[str, Any]]:
             {"what": "left-hand sides", "names": coordinates},
             {"what": "may use", "names": parameters},
         ]
-    if part in ("normal_modes", "mode_shapes"):
+    if part == "mode_shapes":  # `omega = …: (1, -1)`, one mode a line
+        return [
+            {"what": "left-hand sides", "names": ["omega"]},
+            {"what": "may use", "names": parameters},
+        ]
+    if part == "normal_modes":
         return [{"what": "may use", "names": parameters}]
     groups = []
     if part == "transformation":
