@@ -144,7 +144,7 @@ def grade_part(
         )
     else:
         spec = part_spec(entry, part)
-        verdict = judge(spec, name, answer, _given(entry, part, given, rubric), limit=limit)
+        verdict = judge(spec, name, answer, _given(part, given, rubric), limit=limit)
     return _scored(part, verdict, rubric)
 
 
@@ -168,9 +168,7 @@ def _scored(part: Mapping[str, Any], verdict: Verdict, rubric: Rubric) -> dict[s
     }
 
 
-def _given(
-    entry, part: Mapping[str, Any], given: dict[str, Any], rubric: Rubric
-) -> dict[str, Any] | None:
+def _given(part: Mapping[str, Any], given: dict[str, Any], rubric: Rubric) -> dict[str, Any] | None:
     """What the student brings besides the answer: the rubric's tolerance for a numeric
     follow-up (the handout's values are the question's own: `question`); their own L for
     follow-through; and for `conserved` whether the part asks for all of them (its `all`
