@@ -4,7 +4,9 @@
 from __future__ import annotations
 
 import argparse
+import signal
 import socket
+import threading
 from pathlib import Path
 
 from lagrade.cli.arguments import count
@@ -47,19 +49,26 @@ def run(args: argparse.Namespace) -> int:
         timeout_graceful_shutdown=5,
     )
     server = uvicorn.Server(config)
+
+    def stop_before_start(_signum: int, _frame: object) -> None:
+        # a stop that arrives between the announcement and uvicorn's own handlers (which
+        # replace this one while it serves, and hand a caught signal back to it at the end)
+        server.should_exit = True
+
+    stops = (signal.SIGINT, signal.SIGTERM)
+    in_main_thread = threading.current_thread() is threading.main_thread()  # signals' only one
+    previous = {stop: signal.signal(stop, stop_before_start) for stop in stops if in_main_thread}
     try:
         _announce(args, room.assignment.title, len(manifest["students"]), listener, base_url)
         print(f"  due date: {_due_line(room.due)}")
         print(f"  secret: {secret_file} (same secret, same links)")
         print("Stop with Ctrl-C (or SIGTERM).", flush=True)
-        server.run(sockets=[listener])
-    except KeyboardInterrupt:
-        # Ctrl-C or SIGTERM once the server is announced (uvicorn shuts down gracefully, then
-        # re-raises the signal): a server's normal end, exit 0 as supervisors expect
-        pass
+        server.run(sockets=[listener])  # Ctrl-C or SIGTERM: a graceful stop, exit 0
     finally:
         room.close()
         listener.close()
+        for stop, handler in previous.items():
+            signal.signal(stop, handler)
     print("Stopped: every save was written before the server stopped.", flush=True)
     return 0
 

@@ -238,3 +238,27 @@ def test_links_are_stable_for_the_same_secret(served, tmp_path):
         assert row["url"].endswith("/s/" + student_token(secret, row["id"]))
     other = load_or_create_secret(tmp_path / "other-secret")
     assert student_token(other, "s001") != student_token(secret, "s001")
+
+
+def test_a_signal_before_uvicorn_listens_still_stops_the_server_cleanly(tmp_path):
+    """The race CI met: SIGTERM right after "listening on" but before uvicorn had put in its
+    own handlers, which left a half-built event loop and a traceback. Here the signal is
+    raised at exactly that moment, every time."""
+    uvicorn = pytest.importorskip("uvicorn")
+    if not hasattr(uvicorn.Config, "get_loop_factory"):  # uvicorn < 0.36 builds its loop elsewhere
+        pytest.skip("this uvicorn has no loop factory to raise the signal in")
+    manifest = generate_class(tmp_path)
+    starter = (
+        "import asyncio, signal, uvicorn\n"
+        "def loop():\n"  # the stop lands while asyncio.run builds its event loop
+        "    signal.raise_signal(signal.SIGTERM)\n"
+        "    return asyncio.new_event_loop()\n"
+        "uvicorn.Config.get_loop_factory = lambda self: loop\n"
+        "from lagrade.cli.main import entry; entry()\n"
+    )
+    command = [sys.executable, "-c", starter, "serve", str(manifest)]
+    command += ["--submissions", str(tmp_path / "sheets"), "--port", "0", "--jobs", "1"]
+    done = subprocess.run(command, capture_output=True, text=True, timeout=120)
+    output = done.stdout + done.stderr
+    assert done.returncode == 0, output
+    assert "Stopped" in output and "Traceback" not in output and "never awaited" not in output
