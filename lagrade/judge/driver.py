@@ -5,10 +5,13 @@ part through `judge`, so that one answer to one variant gets one verdict and one
 byte for byte, whoever asks.
 
 The question key is the whole problem field (`problem_key`): a bank or scene-file variant is
-keyed by its seed, so the sample points a verdict's feedback quotes and the handout values it
-puts in are the student's own. What depends only on a scene's structure (its derivation: T, V,
-L, the Euler–Lagrange expressions) is shared between variants below this layer
-(`lagrade.mechanics`), so a class of many variants derives each structure once.
+keyed by its seed, so the handout values a verdict's feedback puts in are the student's own.
+What depends only on a question's structure — the scene and its presentation, not the handout's
+values — is shared between its variants (`Problem.structure`, `Problem.shared`): the reference
+compiled, the sample points (drawn over the parameters' domains, seeded by the structure, so
+`check --seed` and `grade` quote the same points), the catalogue and the vocabulary. A class of
+many variants derives and compiles each structure once (below this layer, `lagrade.mechanics`
+derives T, V and L once per presentation too).
 
 Two clocks (`lagrade.judge.clocks`): the question's preparation (its reference, points and, for
 a wrong answer, the mistake catalogue) is charged to the question's budget and reported as
@@ -51,6 +54,9 @@ _VERDICT_CACHE_SIZE = 4_096
 # --- the question, cached per process -------------------------------------------------------------
 
 _problems: OrderedDict[str, Problem] = OrderedDict()
+#: What the questions of one structure share (`Problem.shared`), by `Problem.structure`: a
+#: class of many variants derives its reference, points and catalogue once.
+_structures: OrderedDict[str, dict] = OrderedDict()
 _prepared: set[tuple[str, str]] = set()
 #: Questions that could not be derived within the scene rule's limits, with why.
 _underived: OrderedDict[str, DerivationLimit] = OrderedDict()
@@ -68,6 +74,10 @@ def cached_problem(spec: Any) -> Problem:
     if found is None:
         start = time.perf_counter()
         found = build_problem(spec)
+        found.share(_structures.setdefault(found.structure, found.shared))
+        _structures.move_to_end(found.structure)
+        if len(_structures) > _CACHE_SIZE:
+            _structures.popitem(last=False)
         # Reading the question (parsing its L or closed form, its domains) is preparation too:
         # charged to its budget, so that `prepare_ms` hides none of it.
         found.budget.charge(time.perf_counter() - start)
@@ -118,6 +128,7 @@ def forget_problems() -> None:
     """Drop every question this process has derived and every verdict it remembers (a process
     that outlives one grading run, a Dask worker, starts the next from nothing)."""
     _problems.clear()
+    _structures.clear()
     _prepared.clear()
     _verdicts.clear()
     _underived.clear()

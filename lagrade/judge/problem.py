@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import json
 import re
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 from functools import cached_property
 from typing import Any
@@ -53,6 +53,26 @@ def parser():
     return parse
 
 
+class structural:  # noqa: N801 - used as a decorator, like cached_property
+    """A cached property whose value lives in the question's `shared` store: what depends on
+    the structure alone is derived once for all the variants that share it, by whichever asks
+    first (its value may hold that question, which differs from the others in the handout's
+    values and key only, neither of which it reads)."""
+
+    def __init__(self, derive: Callable[[Any], Any]):
+        self.derive = derive
+        self.name = derive.__name__
+        self.__doc__ = derive.__doc__
+
+    def __get__(self, problem: Problem | None, owner: type | None = None) -> Any:
+        if problem is None:
+            return self
+        store = problem.shared
+        if self.name not in store:
+            store[self.name] = self.derive(problem)
+        return store[self.name]
+
+
 @dataclass(eq=False)
 class Problem:
     """One question: its coordinates (jets), parameters with domains, the reference (L, or an
@@ -74,13 +94,28 @@ class Problem:
     imaginary_unit: str | None = None  # its spelling, where an expression question declares it
     #: What deriving this question may still take (its preparation budget), and has taken.
     budget: Budget = field(default_factory=lambda: Budget(PREPARE_LIMIT))
+    #: The identity of what this question's judging depends on besides the handout's values:
+    #: the scene and its presentation (names, options, quantity), not the seed. The variants of
+    #: a class that share it share `shared` (`share`); it seeds the sample points.
+    structure: str = ""
+    #: What is derived from the structure alone (reference, points, catalogue, vocabulary),
+    #: computed once for every question that shares this store.
+    shared: dict = field(default_factory=dict, repr=False)
+
+    def __post_init__(self) -> None:
+        self.structure = self.structure or self.key
+
+    def share(self, store: dict) -> None:
+        """Derive what depends on the structure alone into `store`, which the other variants of
+        this structure hold too (the driver keeps one per structure)."""
+        self.shared = store
 
     # --- names -------------------------------------------------------------------------------
     @property
     def coordinates(self) -> tuple[str, ...]:
         return tuple(j.name for j in self.jets)
 
-    @cached_property
+    @structural
     def by_name(self) -> dict[str, sp.Symbol]:
         """Every symbol a well-formed answer can contain, by name."""
         names = dict(self.parameters)
@@ -92,21 +127,21 @@ class Problem:
         """The parser's vocabulary for this question, with extra allowed names `labels` (one
         per set of labels: its lexicon is built once, not per answer)."""
         key = tuple(labels)
-        cache = self.__dict__.setdefault("_vocabularies", {})
+        cache = self.shared.setdefault("_vocabularies", {})
         if key not in cache:
             cache[key] = parser().Vocabulary(
                 self.coordinates, dict(self.parameters), key, imaginary_unit=self.imaginary_unit
             )
         return cache[key]
 
-    @cached_property
+    @structural
     def parser_symbols_are_mine(self) -> bool:
         """The parser reads every name as this problem's own symbol, so its output needs no
         `canonical` pass."""
         table = self.vocabulary()._lexicon.table
         return all(table[n].value is s for n, s in self.by_name.items() if n in table)
 
-    @cached_property
+    @structural
     def renaming(self) -> dict[sp.Symbol, sp.Symbol]:
         """The parser's symbols → this problem's, where they differ (`canonical` for a tree)."""
         table = self.vocabulary()._lexicon.table
@@ -127,7 +162,7 @@ class Problem:
         return expr.xreplace(swap) if swap else expr
 
     # --- references ---------------------------------------------------------------------------
-    @cached_property
+    @structural
     def system(self) -> LagrangianSystem:
         if self.lagrangian is None:
             raise RequestError("this problem gives an expression, not a Lagrangian")
@@ -146,19 +181,19 @@ class Problem:
     def space(self) -> Space:
         return Space(self.jets, self.domains, self.values, self.coordinate_domains or {})
 
-    @cached_property
+    @structural
     def L(self) -> Compiled:
         return Compiled.of(self.system.L)
 
-    @cached_property
+    @structural
     def euler_lagrange(self) -> tuple[Compiled, ...]:
         return tuple(Compiled.of(e) for e in self.system.euler_lagrange)
 
-    @cached_property
+    @structural
     def momenta(self) -> tuple[Compiled, ...]:
         return tuple(Compiled.of(p) for p in self.system.generalized_momenta)
 
-    @cached_property
+    @structural
     def reference_expression(self) -> Compiled:
         if self.expression is None:
             raise RequestError("this problem has no reference expression")
@@ -169,7 +204,7 @@ class Problem:
         """A scene with bodies (not an ad-hoc L, nor a scene given by its Lagrangian)."""
         return self.variant is not None and not self.variant.scene.given_by_lagrangian
 
-    @cached_property
+    @structural
     def kinetic_energy(self) -> sp.Expr:
         if not self.has_bodies:
             raise RequestError(
@@ -177,7 +212,7 @@ class Problem:
             )
         return self.variant.kinetic_energy
 
-    @cached_property
+    @structural
     def potential_energy(self) -> sp.Expr:
         if not self.has_bodies:
             raise RequestError(
@@ -185,21 +220,21 @@ class Problem:
             )
         return self.variant.potential_energy
 
-    @cached_property
+    @structural
     def kinetic(self) -> Compiled:
         """T, compiled once (the reference of the T part)."""
         return Compiled.of(self.kinetic_energy)
 
-    @cached_property
+    @structural
     def potential(self) -> Compiled:
         """V, compiled once (the reference of the V part)."""
         return Compiled.of(self.potential_energy)
 
-    @cached_property
+    @structural
     def dof(self) -> int:
         return self.variant.dof if self.has_bodies else len(self.jets)
 
-    @cached_property
+    @structural
     def catalogue(self):
         """The mistakes this question invites, derived from its reference."""
         return Catalogue(self)
@@ -209,7 +244,7 @@ class Problem:
         """Sample points for `part`, every parameter drawn over its domain: a symbolic answer is
         judged for every value of the parameters, so one it leaves out is never taken for its
         handout value (an L without m is wrong even when m = 1 kg)."""
-        cache = self.__dict__.setdefault("_points", {})
+        cache = self.shared.setdefault("_points", {})
         if part not in cache:
             cache[part] = self._draw(part)
         return cache[part]
@@ -221,7 +256,7 @@ class Problem:
         feedback are real; the default method compares the complex branches on its own), and
         where it has any value — complex on the whole domain (log(-x)), or with the imaginary
         unit declared — otherwise. Mechanics (L, its equations, momenta) is real."""
-        seed, free = seed_for(self.key, part), frozenset(self.domains)
+        seed, free = seed_for(self.structure, part), frozenset(self.domains)
         if not (self.kind == "expression" or part == "expression"):
             return self.space.draw(seed, free, self._kept(self._validity(part)))
         if self.imaginary_unit is None:
@@ -267,7 +302,7 @@ class Problem:
     # --- cached reference values at points ------------------------------------------------------
     def cached(self, name: str, points: Points, make):
         """A value derived from `points` (reference rows, accelerations), computed once."""
-        store = self.__dict__.setdefault("_derived", {})
+        store = self.shared.setdefault("_derived", {})
         key = (name, id(points))
         if key not in store:
             store[key] = make()
@@ -275,7 +310,7 @@ class Problem:
 
     def peek(self, name: str, points: Points):
         """What `cached(name, points, …)` holds already, or None (computes nothing)."""
-        return self.__dict__.get("_derived", {}).get((name, id(points)))
+        return self.shared.get("_derived", {}).get((name, id(points)))
 
     def reference_rows(self, points: Points) -> Rows:
         """The reference's Euler–Lagrange rows [A | c] at `points`, computed once (the eom and
@@ -391,7 +426,17 @@ def _scene_problem(spec: Mapping[str, Any], key: str) -> Problem:
         coordinate_domains={n: d.sample_range() for n, d in variant.coordinate_domains.items()},
         relations=variant.scene.relations,
         unit=unit,
+        structure=_structure_key(spec, variant),
     )
+
+
+def _structure_key(spec: Mapping[str, Any], variant: SceneVariant) -> str:
+    """A scene question's structure: the problem field without its seed, with the presentation
+    the seed chose (coordinate names, options) — every variant with the same one has the same
+    reference, points and catalogue; only the handout's values differ."""
+    spec = {k: v for k, v in spec.items() if k != "seed"}
+    presentation = {"names": variant.names, "options": variant.options}
+    return problem_key({**spec, "presentation": presentation})
 
 
 def _adhoc_problem(
