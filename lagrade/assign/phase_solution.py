@@ -123,7 +123,8 @@ def _mode_shapes(osc) -> list[tuple[sp.Expr, tuple[sp.Expr, ...]]]:
 
 def phase_data(variant: SceneVariant) -> dict[str, Any]:
     """H, Hamilton's equations, every equilibrium at rest found (with whether it is stable at
-    the deciding values) and the normal-mode frequencies about the stable one, as text for
+    the deciding values), the normal-mode frequencies about the stable one and each oscillating
+    mode's shape, as text for
     `lagrade bank show` and `lagrade scene check`; each missing piece says why."""
     text = rm.plain
     why = can_ask(variant, "hamiltonian")
@@ -151,6 +152,9 @@ def phase_data(variant: SceneVariant) -> dict[str, Any]:
         if closed is not None
         else [f"{w:.6g}" for w in osc.numeric_frequencies()]
     )
+    data["mode_shapes"] = [
+        {"frequency": text(w), "vector": text(_vector(a))} for w, a in _mode_shapes(osc)
+    ]
     zero = [w for w in osc.numeric_frequencies() if w == 0]
     if zero:
         data["zero_modes"] = (
@@ -177,6 +181,12 @@ def phase_lines(variant: SceneVariant) -> list[str]:
         lines.append("normal-mode angular frequencies: " + ", ".join(d["normal_modes"]))
         if "zero_modes" in d:
             lines.append(f"  {d['zero_modes']}")
+        if d["mode_shapes"]:
+            coordinates = ", ".join(j.name for j in variant.jets)
+            lines.append(f"mode shapes (amplitudes of {coordinates}):")
+            lines += [f"  omega = {m['frequency']}: {m['vector']}" for m in d["mode_shapes"]]
+        else:
+            lines.append("mode shapes: none (no mode oscillates)")
     return lines
 
 

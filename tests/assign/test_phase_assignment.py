@@ -152,3 +152,16 @@ def test_bank_show_prints_h_the_equilibria_and_the_frequencies_or_why_not(capsys
     assert main(["bank", "show", "charged_particle", "--format", "json"]) == 0
     data = json.loads(capsys.readouterr().out)
     assert "velocity-dependent force" in data["phase_space"]["why_not"]
+
+
+def test_bank_show_prints_each_modes_shape_or_says_none_oscillates(capsys):
+    assert main(["bank", "show", "coupled_oscillators", "--seed", "2"]) == 0
+    out = capsys.readouterr().out
+    assert "mode shapes (amplitudes of " in out
+    shapes = out.split("mode shapes (amplitudes of ")[1].splitlines()[1:3]
+    assert all(s.startswith("  omega = ") and ": (1, " in s for s in shapes), shapes
+    assert main(["bank", "show", "wheel"]) == 0
+    assert "mode shapes: none (no mode oscillates)" in capsys.readouterr().out
+    assert main(["bank", "show", "harmonic_oscillator", "--format", "json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert [m["vector"] for m in data["phase_space"]["mode_shapes"]] == ["1"]
