@@ -39,6 +39,7 @@ from lagrade.judge.check import check  # noqa: E402
 from lagrade.judge.mutations import swap_sin_cos  # noqa: E402
 from lagrade.judge.situation import symbol_text  # noqa: E402
 from lagrade.mechanics import LagrangianSystem  # noqa: E402
+from lagrade.mechanics import t as mech_t  # noqa: E402
 from lagrade.notation import plain  # noqa: E402
 
 #: The claim kinds that name each recorded cause (a true claim of another kind names "another
@@ -315,6 +316,12 @@ def claims_of(sentence: str, w: Wrong, ref: Reference) -> list[Claim]:
         fix = (lambda e: e * f) if m.group(2) == "without its" else (lambda e: e / f)
         kind = "missing_factor" if m.group(2) == "without its" else "extra_factor"
         return one(kind, tuple(fix(e) if i == k else e for i, e in enumerate(w.exprs)))
+    m = re.match(r"^p_(\w+) is (twice|half|minus) ∂L/∂\w+$", body)
+    if m:
+        k = ref.index.get(m.group(1))
+        number = {"twice": 2, "half": sp.Rational(1, 2), "minus": -1}[m.group(2)]
+        fixed = tuple(e / number if i == k else e for i, e in enumerate(w.exprs))
+        return one("momentum_twice" if number == 2 else "momentum_number", fixed)
     m = re.match(r"^(?:Your |your )?p_(\w+) is the momentum of (\w+) ", body)
     if m:
         k, i = ref.index.get(m.group(1)), ref.index.get(m.group(2))
@@ -440,15 +447,20 @@ def _accelerations(text: str, witness: dict, ref: Reference, shown: dict) -> lis
         for s, k in ((j.q, j.name), (j.dot, f"{j.name}_dot")):
             if k not in witness:
                 return [f"{m.group(0)} (witness lacks {k})"]
-            state[s] = witness[k]
+            state[s] = float(f"{witness[k]:.3g}")  # the state as quoted
     values = {ref.variant.parameter_symbols[n]: float(x) for n, x in ref.variant.values.items()}
     M = ref.system.mass_matrix.subs(values).subs(state)
     F = ref.system.forcing.subs(values).subs(state)
     acc = M.LUsolve(F)
     k = ref.index[name]
+    time = mech_t
+    if acc[k].has(time):
+        if "t" not in witness:
+            return [f"{m.group(0)} (witness lacks t)"]
+        acc = acc.subs(time, witness["t"])  # not quoted: as the witness holds it
     got = float(acc[k])
     quoted = float(m.group(2).replace("−", "-"))
-    if float(f"{got:.3g}") != quoted:
+    if abs(got - quoted) > 5e-3 * max(abs(got), abs(quoted)):  # three figures, as quoted
         return [f"{m.group(0)} (the system gives {got:.4g})"]
     return []
 
