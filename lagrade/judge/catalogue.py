@@ -20,7 +20,7 @@ same names.
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterator, Sequence
+from collections.abc import Callable, Iterator, Mapping, Sequence
 from dataclasses import dataclass
 from functools import cached_property
 from itertools import chain, islice
@@ -42,6 +42,7 @@ from lagrade.judge.matching import (
     first_plain,
     full,
     stacked,
+    vanish_rows,
 )
 from lagrade.judge.momentum_fingerprints import MomentumFingerprints
 from lagrade.judge.mutations import (
@@ -281,14 +282,48 @@ class Catalogue:
             cache[k] = table
         return cache[k]
 
-    def match_momentum(self, k: int, answer: Compiled, points: Points) -> Mutant | None:
+    def match_momentum(
+        self,
+        k: int,
+        answer: Compiled,
+        points: Points,
+        others: Mapping[int, Compiled] | None = None,
+    ) -> Mutant | None:
         """The first mistake of p_k with the answer's values at the points (`match_plain` on
-        the fingerprints)."""
+        the fingerprints) whose sentence is true of the whole answer. A mistake of L that
+        the sentence names as L's ("the ½ is missing in the kinetic energy") implies a
+        correction of every momentum: it is said only when each other momentum the student
+        gave (`others`, by coordinate; None for p_k asked about alone) is that L's too, so
+        that the correction makes them all right; else the next mistake that matches, one of
+        p_k alone, is named."""
         with np.errstate(all="ignore"):
             values = full(answer.values(points.env), points.n)
         if underflowed(answer, values):
             return None
-        return self.momentum_fingerprints(k).match(values, points)
+        table = self.momentum_fingerprints(k)
+        return table.match(values, points, lambda m: self._whole_claim_holds(k, m, others))
+
+    def _whole_claim_holds(self, k: int, m: int, others: Mapping[int, Compiled] | None) -> bool:
+        """Mistake m of p_k, if a mistake of L said of L, is the mistake of every momentum."""
+        table = self.momentum_fingerprints(k)
+        j = table.lagrangian_source(m)
+        if j is None or f"p_{self.problem.jets[k].name}" in table.mutant(m).message:
+            return True  # a sentence about p_k alone, true by p_k's values
+        if others is None:  # p_k asked about alone (no answer around it): its values decide
+            return True
+        n = len(self.problem.jets)
+        if set(others) != set(range(n)) - {k}:
+            return False  # a momentum missing or unread: the correction cannot be checked
+        points = table.points
+        for i, other in others.items():
+            expected = self.momentum_fingerprints(i).of_lagrangian(j)
+            if expected is None:
+                return False
+            with np.errstate(all="ignore"):
+                a, sa = full(other.values(points.env), points.n)
+                if not vanish_rows((a - expected[0])[None], (sa + expected[1])[None])[0]:
+                    return False
+        return True
 
     def momentum_mutants(self, k: int) -> list[Mutant]:
         return self.momentum(k).all()

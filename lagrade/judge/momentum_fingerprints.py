@@ -7,7 +7,7 @@ them; sympy builds the sentence of the mistake that matched."""
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from typing import Any
 
 import numpy as np
@@ -203,8 +203,14 @@ class MomentumFingerprints:
             self._built[m] = built
         return self._built[m]
 
-    def match(self, answer: tuple[np.ndarray, np.ndarray], points: Points) -> Mutant | None:
-        """The first kept mistake with the answer's values (`matching.first_plain`)."""
+    def match(
+        self,
+        answer: tuple[np.ndarray, np.ndarray],
+        points: Points,
+        admits: Callable[[int], bool] | None = None,
+    ) -> Mutant | None:
+        """The first kept mistake with the answer's values (`matching.first_plain`) that
+        `admits` (given the mistake's index) lets be said."""
         assert points is self.points, "momentum mistakes are matched at the momenta part's points"
         kept = self.kept
         if not len(kept):
@@ -212,5 +218,20 @@ class MomentumFingerprints:
         a, sa = answer
         with np.errstate(all="ignore"):
             ok = vanish_rows(a - self.values[kept], sa + self.sizes[kept])
-        hits = np.flatnonzero(ok)
-        return self.mutant(int(kept[hits[0]])) if hits.size else None
+        for hit in np.flatnonzero(ok):
+            m = int(kept[hit])
+            if admits is None or admits(m):
+                return self.mutant(m)
+        return None
+
+    def lagrangian_source(self, m: int) -> int | None:
+        """The Lagrangian mistake that mistake m is the p_k of, or None."""
+        source = self.specs[m][3]
+        return source[1] if source[0] == "lagrangian" else None
+
+    def of_lagrangian(self, j: int) -> tuple[np.ndarray, np.ndarray] | None:
+        """The values and sizes of p_k of Lagrangian mistake j, or None when not listed."""
+        for m, spec in enumerate(self.specs):
+            if spec[3] == ("lagrangian", j):
+                return self.values[m], self.sizes[m]
+        return None

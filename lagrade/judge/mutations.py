@@ -388,15 +388,7 @@ def conserved_mutants(
     out: list[Mutant] = []
     h = system.energy_function
     if sp.expand(T + V - h) != 0:
-        out.append(
-            Mutant(
-                "energy_not_conserved",
-                "T + V is not conserved here: the constraint moves, so energy flows in "
-                "and out; "
-                "the Jacobi integral h = Σ q̇ ∂L/∂q̇ − L is",
-                T + V,
-            )
-        )
+        out.append(Mutant("energy_not_conserved", _energy_sentence(system), T + V))
     cyclic = set(system.cyclic_coordinates)
     for j, pj in zip(jets, system.generalized_momenta, strict=True):
         if j.name not in cyclic:
@@ -409,6 +401,15 @@ def conserved_mutants(
             )
     out.append(Mutant("lagrangian_not_conserved", "L itself is not a conserved quantity", system.L))
     return out
+
+
+def _energy_sentence(system: LagrangianSystem) -> str:
+    """Why T + V is not conserved, naming h as conserved only where it is (the reference's
+    conserved quantities list it: L has no explicit t). A driven system conserves neither."""
+    said = "T + V is not conserved here: the constraint moves, so energy flows in and out"
+    if "h" in system.conserved_quantities:
+        return said + "; the Jacobi integral h = Σ q̇ ∂L/∂q̇ − L is"
+    return said + "; L depends on t explicitly, so the Jacobi integral h is not conserved either"
 
 
 def expression_mutants(ref: sp.Expr) -> list[Mutant]:

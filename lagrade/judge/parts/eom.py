@@ -98,21 +98,30 @@ def _judge(
         if not diagnose:
             return None
         wrong.append(k)
-        witness = witness or witness_point(points, out, compiled[k])
+        # The witness is one state, the first wrong equation's, whole (coordinates and
+        # velocities): a later sentence quotes its own state only when it is that one, so that
+        # every number quoted is in the witness.
+        point = witness_point(points, out)
+        witness = witness or point
         mutant = problem.catalogue.match_row(compiled[k], points)
         if mutant is not None:
             feedback.append(f"{label}: {mutant.message}.")
             mistakes.append(mutant.kind)
         else:
+            quoted = point == witness
             feedback.append(
                 f"{label} does not follow from the Euler–Lagrange equations of this "
                 "system"
-                + where_text(
-                    witness_point(points, out),
-                    problem,
-                    acceleration_text(
-                        problem, points, out, compiled[k], entry[k] if total == n else None
-                    ),
+                + (
+                    where_text(
+                        point,
+                        problem,
+                        acceleration_text(
+                            problem, points, out, compiled[k], entry[k] if total == n else None
+                        ),
+                    )
+                    if quoted
+                    else ""
                 )
                 + "."
             )

@@ -134,16 +134,24 @@ def check_momenta(problem: Problem, answer: Any, given: Mapping | None) -> Verdi
             any_wrong = True
             continue
         any_wrong, follows_all = True, False
-        witness = witness or witness_point(points, out, ans, reference)
-        mutant = problem.catalogue.match_momentum(k, ans, points)
+        # one state in the witness, the first wrong momentum's: a later sentence quotes its
+        # own only when it is that one (every number quoted is in the witness)
+        point = witness_point(points, out, ans, reference)
+        witness = witness or point
+        others = {i: got.compiled for i, got in by_coordinate.items() if isinstance(got, Read)}
+        others.pop(k, None)
+        mutant = problem.catalogue.match_momentum(k, ans, points, others)
         if mutant is not None:
             feedback.append(as_sentence(mutant.message))
             mistakes.append(mutant.kind)
         else:
-            where = where_text(witness_point(points, out, ans, reference), problem)
+            where = where_text(point, problem) if point == witness else ""
             factor = _factor_text(problem, k, ans, points)
             derivative = f"∂L/∂{j.name}_dot"
-            said = f"is {derivative} {factor}" if factor else f"is not {derivative}"
+            if factor in dict(_NUMBERS).values():
+                said = f"is {factor} {derivative}"
+            else:
+                said = f"is {derivative} {factor}" if factor else f"is not {derivative}"
             feedback.append(f"p_{j.name} {said}{where}.")
         dimensions = hint_for(problem, by_coordinate[k], f"momentum:{k}") if tells(mutant) else ""
         if dimensions:
@@ -204,6 +212,10 @@ def _factors(momentum: sp.Expr) -> list[sp.Expr]:
     return list(out)
 
 
+#: A momentum that is a number times ∂L/∂q̇, and how `_factor_text` says so.
+_NUMBERS = ((2.0, "twice"), (0.5, "half"), (-1.0, "minus"))
+
+
 def _factor_text(problem: Problem, k: int, ans: Compiled, points) -> str:
     """ "without its factor r^2" when the answer times one factor of the reference's terms is
     the reference at every sample point, "with an extra factor r" when the answer is the
@@ -214,6 +226,9 @@ def _factor_text(problem: Problem, k: int, ans: Compiled, points) -> str:
         with np.errstate(all="ignore"):
             a, sa = full(ans.values(env), n)
             r, sr = full(problem.momenta[k].values(env), n)
+            for number, said in _NUMBERS:  # the whole momentum scaled: every term as one
+                if vanish_rows((a - number * r)[None], (sa + number * sr)[None])[0]:
+                    return said
             for f in _factors(problem.system.generalized_momenta[k]):
                 fv, _ = full(Compiled.of(f).values(env), n)
                 if vanish_rows((a * fv - r)[None], (sa * np.abs(fv) + sr)[None])[0]:
