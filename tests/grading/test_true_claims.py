@@ -135,3 +135,13 @@ def test_two_wrong_equations_quote_one_state():
     )
     assert verdict.status == "incorrect"
     _quoted_in_witness(verdict, v.jets)
+
+
+def test_a_mistake_of_l_seen_in_every_momentum_is_said_once():
+    from lagrade.judge.driver import judge
+
+    verdict = judge(
+        {"scene": "kepler"}, "momenta", ["p_r = 2*m*r_dot", "p_theta = 2*m*r^2*theta_dot"]
+    )
+    assert verdict.feedback == ("The ½ is missing in the kinetic energy.",)
+    assert verdict.mistakes == ("dropped_half_all",)

@@ -142,8 +142,10 @@ def check_momenta(problem: Problem, answer: Any, given: Mapping | None) -> Verdi
         others.pop(k, None)
         mutant = problem.catalogue.match_momentum(k, ans, points, others)
         if mutant is not None:
-            feedback.append(as_sentence(mutant.message))
-            mistakes.append(mutant.kind)
+            said = as_sentence(mutant.message)
+            if said not in feedback:  # a mistake of L shows in every momentum: said once
+                feedback.append(said)
+                mistakes.append(mutant.kind)
         else:
             where = where_text(point, problem) if point == witness else ""
             factor = _factor_text(problem, k, ans, points)
