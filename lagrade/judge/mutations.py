@@ -383,12 +383,14 @@ def _linear_euler_lagrange(
 def conserved_mutants(
     system: LagrangianSystem, jets: Sequence[Jet], T: sp.Expr, V: sp.Expr
 ) -> list[Mutant]:
-    """Quantities wrongly called conserved: T + V when the constraint moves (h is), the momentum
+    """Quantities wrongly called conserved: T + V when it is not h or L depends on t, the momentum
     of a coordinate that is not cyclic, L itself."""
     out: list[Mutant] = []
     h = system.energy_function
-    if sp.expand(T + V - h) != 0:
-        out.append(Mutant("energy_not_conserved", _energy_sentence(system), T + V))
+    if sp.expand(T + V - h) != 0 or not system.is_time_independent:
+        # its sentence, why T + V is not conserved, is decided by values where it is said
+        # (`parts.conserved_claims.energy_sentence`)
+        out.append(Mutant("energy_not_conserved", "T + V is not conserved here", T + V))
     cyclic = set(system.cyclic_coordinates)
     for j, pj in zip(jets, system.generalized_momenta, strict=True):
         if j.name not in cyclic:
@@ -401,15 +403,6 @@ def conserved_mutants(
             )
     out.append(Mutant("lagrangian_not_conserved", "L itself is not a conserved quantity", system.L))
     return out
-
-
-def _energy_sentence(system: LagrangianSystem) -> str:
-    """Why T + V is not conserved, naming h as conserved only where it is (the reference's
-    conserved quantities list it: L has no explicit t). A driven system conserves neither."""
-    said = "T + V is not conserved here: the constraint moves, so energy flows in and out"
-    if "h" in system.conserved_quantities:
-        return said + "; the Jacobi integral h = Σ q̇ ∂L/∂q̇ − L is"
-    return said + "; L depends on t explicitly, so the Jacobi integral h is not conserved either"
 
 
 def expression_mutants(ref: sp.Expr) -> list[Mutant]:
