@@ -94,3 +94,76 @@ def test_equations_that_do_not_follow_from_the_own_L_say_nothing_of_it():
     verdict = judge(KEPLER, "eom", eom, given={"lagrangian": KEPLER_OWN_L})
     assert not verdict.follows_from_own_answer
     assert not any("your own Lagrangian" in s for s in verdict.feedback)
+
+
+# --- E = T + V where only h, or nothing, is conserved ---------------------------------------------
+
+JACOBI_IS = "the Jacobi integral h = Σ q̇ ∂L/∂q̇ − L is."
+
+
+def test_energy_on_a_rotating_hoop_names_the_moving_constraint_and_h():
+    answer = ["R^2*m*omega^2*sin(theta)^2/2 + R^2*m*theta_dot^2/2 - R*g*m*cos(theta)"]
+    verdict = judge({"scene": "hoop", "seed": 1}, "conserved", answer)
+    assert verdict.feedback == (
+        "T + V is not conserved here: the constraint moves, so energy flows in and out; "
+        + JACOBI_IS,
+    )
+
+
+def test_energy_with_a_vector_potential_names_no_moving_constraint():
+    """Nothing moves in the charged particle's scene: T + V is not h because V = −e v·A."""
+    answer = ["B*e*x_dot*y + m*x_dot^2/2 + m*y_dot^2/2 + m*z_dot^2/2"]
+    verdict = judge({"scene": "charged_particle", "seed": 1}, "conserved", answer)
+    (sentence,) = verdict.feedback
+    assert "constraint moves" not in sentence
+    assert "V depends on the velocities" in sentence and sentence.endswith(JACOBI_IS)
+
+
+def test_energy_of_a_driven_pendulum_says_h_is_not_conserved_either():
+    answer = [
+        "a^2*m*omega^2*sin(omega*t)^2/2 + a*g*m*cos(omega*t) - "
+        "a*l*m*omega*theta_dot*sin(theta)*sin(omega*t) - g*l*m*cos(theta) + l^2*m*theta_dot^2/2"
+    ]
+    verdict = judge({"scene": "driven_pendulum", "seed": 1}, "conserved", answer)
+    assert verdict.feedback == (
+        "T + V is not conserved here: the constraint moves, so energy flows in and out; "
+        "L depends on t explicitly, so the Jacobi integral h is not conserved either.",
+    )
+
+
+FORCED = {
+    "lagrangian": "m*x_dot^2/2 - k*x^2/2 + F*x*cos(w*t)",
+    "coordinates": ["x"],
+    "parameters": {"m": "positive", "k": "positive", "F": "positive", "w": "positive"},
+}
+
+
+def test_energy_of_a_forced_oscillator_is_named_though_it_equals_h():
+    """T + V = h here, and neither is conserved: L depends on t, and nothing moves."""
+    verdict = judge(FORCED, "conserved", ["m*x_dot^2/2 + k*x^2/2 - F*x*cos(w*t)"])
+    assert verdict.feedback == (
+        "T + V is not conserved here: L depends on t explicitly, so the Jacobi integral h is "
+        "not conserved either.",
+    ), verdict.feedback
+
+
+# --- a conserved quantity without its factor ------------------------------------------------------
+
+SPHERICAL = {"scene": "spherical_pendulum", "seed": 1}
+
+
+@pytest.mark.parametrize(
+    ("answer", "factor"),
+    [("l^2*m*psi_dot", "sin(vartheta)^2"), ("l^2*m*psi_dot*sin(vartheta)", "sin(vartheta)")],
+)
+def test_a_dropped_factor_is_named_and_the_answer_times_it_is_conserved(answer, factor):
+    verdict = judge(SPHERICAL, "conserved", [answer])
+    assert verdict.feedback == (
+        f"{answer} is missing a factor {factor}: {factor} times it is conserved.",
+    )
+    assert judge(SPHERICAL, "conserved", [f"({answer})*{factor}"]).status == "correct"
+
+
+def test_no_missing_factor_where_no_factor_makes_it_conserved():
+    verdict = judge(SPHERICAL, "conserved", ["l^2*m*psi_dot*cos(vartheta)"])
+    assert not any("missing a factor" in s for s in verdict.feedback), verdict.feedback
