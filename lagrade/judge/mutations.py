@@ -247,8 +247,32 @@ def iter_momentum_mutants(
     for m in lagrangian_mutants:
         if m.kind in KINETIC_KINDS:
             yield lagrangian_momentum_mutant(system, jets, k, m)
-    yield from iter_term_mutants(
-        system.generalized_momenta[k], f"your p_{jets[k].name}", parameters
+    what = f"your p_{jets[k].name}"
+    yield from iter_term_mutants(system.generalized_momenta[k], what, parameters)
+    terms = expanded_terms(system.generalized_momenta[k])
+    # a sin or cos dropped from one term of several (a momentum of one term without its factor
+    # is the momenta part's own sentence, "p_φ is ∂L/∂φ̇ without its factor sin²θ")
+    for term in terms if len(terms) > 1 else ():
+        for f in trig_factors(term):
+            yield trig_factor_mutant(sp.Add(*terms), term, f, what)
+
+
+def trig_factors(term: sp.Expr) -> list[sp.Expr]:
+    """The sin and cos factors of a term, with their powers (sin(θ)^2, cos(α)): a factor a
+    student drops (the parameter factors are `term_specs`' own)."""
+    out = []
+    for f in sp.Mul.make_args(term):
+        base = f.base if isinstance(f, sp.Pow) else f
+        if isinstance(base, sp.sin | sp.cos):
+            out.append(f)
+    return out
+
+
+def trig_factor_mutant(base: sp.Expr, term: sp.Expr, f: sp.Expr, what: str) -> Mutant:
+    """`base` (an expanded sum) with its term `term` written without the factor f."""
+    message = _TERM_MESSAGES["missing_factor"].format(t=plain(term), w=what, p=plain(f))
+    return Mutant(
+        "missing_factor", message, base, ((-sp.Integer(1), term), (sp.Integer(1), term / f)), 1
     )
 
 

@@ -167,3 +167,14 @@ def test_a_dropped_factor_is_named_and_the_answer_times_it_is_conserved(answer, 
 def test_no_missing_factor_where_no_factor_makes_it_conserved():
     verdict = judge(SPHERICAL, "conserved", ["l^2*m*psi_dot*cos(vartheta)"])
     assert not any("missing a factor" in s for s in verdict.feedback), verdict.feedback
+
+
+def test_a_sin_or_cos_dropped_from_one_term_of_a_momentum_is_named():
+    wedge = {"scene": "wedge", "seed": 1}
+    answer = ["p_x_M = M*x_M_dot + m*q_dot + m*x_M_dot", "p_q = m*q_dot + m*x_M_dot*cos(alpha)"]
+    verdict = judge(wedge, "momenta", answer)
+    assert verdict.feedback == (
+        "The term m*q_dot*cos(alpha) in your p_x_M lacks the factor cos(alpha).",
+    ), verdict.feedback
+    fixed = ["p_x_M = M*x_M_dot + m*q_dot*cos(alpha) + m*x_M_dot", answer[1]]
+    assert judge(wedge, "momenta", fixed).status == "correct"
