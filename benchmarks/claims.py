@@ -26,6 +26,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
+import numpy as np
 import sympy as sp
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -60,6 +61,7 @@ NAMES = {
     "negated_rhs": {"negated_rhs"},
     "el_sign": {"el_sign"},
     "eom_of_wrong_L": {"wrong_L", "behind"},
+    "eom_of_own_L": {"wrong_L"},
     "row_term_sign": {"term_sign"},
     "cyclic_extra": {"not_cyclic"},
     "cyclic_missed": {"is_cyclic"},
@@ -337,10 +339,15 @@ def claims_of(sentence: str, w: Wrong, ref: Reference) -> list[Claim]:
         k = ref.index.get(m.group(1))
         at = row if row is not None else k
         return one("el_sign", _row_fixed(w, at, ref.E[k], -2 * ref.F[k]))
+    if body == "the right-hand side has the wrong sign" and row is not None:
+        fixed = tuple((a, -b) if i == row else (a, b) for i, (a, b) in enumerate(w.exprs))
+        return one("negated_rhs", fixed)
     if body.startswith("Your equations are right but only"):
         return one("too_few", tuple(w.exprs) + tuple((e, 0) for e in ref.E), "correct")
-    if "follow correctly from your own Lagrangian" in body:
-        return []  # needs the student's own L: not in this corpus
+    m = re.match(r"^(These equations|Your wrong equations) follow correctly from your own "
+                 r"Lagrangian, which is not the right one(?:: (.+))?$", body)  # fmt: skip
+    if m:
+        return _own_lagrangian_claims(m.group(1), m.group(2), sentence, w, ref)
     m = re.match(r"^(\w+) is not cyclic: L depends on \1", body)
     if m:
         return one("not_cyclic", tuple(x for x in w.exprs if x != m.group(1)))
@@ -353,7 +360,26 @@ def claims_of(sentence: str, w: Wrong, ref: Reference) -> list[Claim]:
         out = one("energy_not_conserved", None, also=lambda: not _conserved_alone(w, energy))
         if "h = Σ q̇ ∂L/∂q̇ − L is" in body:
             out += one("h_conserved", None, also=lambda: _conserved_alone(w, h))
+        if "h is not conserved either" in body:
+            out += one("h_not_conserved", None, also=lambda: not _conserved_alone(w, h))
+        at_rest = {j.dot: 0 for j in ref.jets}
+        reasons = {  # each reason the sentence gives, checked on the reference's forms
+            "the constraint moves": lambda: sp.expand(ref.T.subs(at_rest)) != 0,
+            "V depends on the velocities": lambda: any(ref.V.has(j.dot) for j in ref.jets),
+            "L depends on t explicitly": lambda: sp.diff(ref.L, mech_t) != 0,
+        }
+        for said, holds in reasons.items():
+            if said in body:
+                out += one("energy_reason", None, also=holds)
         return out
+    m = re.match(r"^(.+) is missing a factor (.+): \2 times it is conserved$", body)
+    if m:
+        f = ref.symbol(m.group(2))
+        at = [i for i, q in enumerate(w.exprs) if plain(q) == m.group(1)]
+        if f is None or len(at) != 1:
+            return one("missing_factor", None)
+        fixed = tuple(q * f if i == at[0] else q for i, q in enumerate(w.exprs))
+        return one("missing_factor", fixed)
     m = re.match(r"^p_(\w+) is not conserved: (\w+) is not cyclic", body)
     if m:
         k = ref.index.get(m.group(1))
@@ -363,6 +389,56 @@ def claims_of(sentence: str, w: Wrong, ref: Reference) -> list[Claim]:
         L = ref.L
         return one("lagrangian_not_conserved", None, also=lambda: not _conserved_alone(w, L))
     return []  # a sentence that names no mistake
+
+
+def _own_lagrangian_claims(which: str, said: str | None, sentence: str, w: Wrong, ref) -> list:
+    """The follow-through sentence: the equations it speaks of (all, or the wrong ones) are in
+    the span of the own L's Euler–Lagrange rows, checked at two points; and the own L's mistake
+    it names, checked as the Lagrangian part's sentence is (its correction makes that L
+    right)."""
+    if w.own_L is None or w.given is None:
+        return [Claim("wrong_L", sentence, None)]  # an own L we cannot check: counted false
+    rows = [sp.expand(a - b) for a, b in w.exprs]
+    if which == "Your wrong equations":
+        rows = [r for r in rows if not _in_span(r, ref.E, ref)]
+    own_E = [sp.expand(e) for e in LagrangianSystem(w.own_L, ref.jets).euler_lagrange]
+    holds = all(_in_span(r, own_E, ref) for r in rows) and not all(
+        _in_span(e, ref.E, ref) for e in own_E
+    )
+    out = [Claim("wrong_L", sentence, None, also=lambda: holds)]
+    if said is None:
+        return out
+    as_L = Wrong(w.problem, "lagrangian", w.given["lagrangian"], w.cause, (w.own_L,))
+    before = check(w.problem, "lagrangian", as_L.answer)
+    for c in claims_of(said[0].upper() + said[1:] + ".", as_L, ref):
+        ok = is_true(c, as_L, before)
+        out.append(Claim(c.kind, sentence, None, also=lambda ok=ok: ok))
+    if len(out) == 1:
+        out.append(Claim("unchecked_L_sentence", sentence, None))  # counted false
+    return out
+
+
+def _in_span(row: sp.Expr, basis: list, ref: Reference) -> bool:
+    """row = Σ c_i(q, q̇, t) basis_i: the rows [A | c] (linear in the accelerations) at two
+    points with the handout's values have the rank of the basis alone."""
+    acc = [j.ddot for j in ref.jets]
+    values = {ref.variant.parameter_symbols[n]: float(x) for n, x in ref.variant.values.items()}
+
+    def coef(e):
+        return [sp.diff(e, a) for a in acc] + [e.subs({a: 0 for a in acc})]
+
+    symbols = sorted(set().union(*(e.free_symbols for e in [row, *basis])) - set(acc)
+                     - set(values), key=str)  # fmt: skip
+    for k in (0.37, 0.61):
+        at = {**values, **{s: k + 0.11 * i for i, s in enumerate(symbols)}}
+        S = sp.Matrix([coef(e) for e in [*basis, row]]).subs(at).evalf()
+        s_ = np.array(S, dtype=float)
+        scale = np.abs(s_).max(axis=0)  # per column: SI values differ by decades (G M m)
+        s_ = s_ / np.where(scale > 0, scale, 1.0)
+        b = s_[:-1]
+        if np.linalg.matrix_rank(s_, 1e-9) != np.linalg.matrix_rank(b, 1e-9):
+            return False
+    return True
 
 
 def _conserved_replaced(w: Wrong, ref: Reference, k: int, delta: sp.Expr):
@@ -399,7 +475,7 @@ def is_true(claim: Claim, w: Wrong, before) -> bool:
         return False
     if claim.corrected is None:
         return claim.also is not None
-    after = check(w.problem, w.part, answer_of(w, claim.corrected))
+    after = check(w.problem, w.part, answer_of(w, claim.corrected), given=w.given)
     if after.status == "correct":
         return True
     return claim.needs == "better" and after.score > before.score + 1e-9
@@ -473,7 +549,7 @@ def run(corpus: list[Wrong]) -> dict:
     false_claims, numbers = [], []
     refs: dict[tuple, Reference] = {}
     for w in corpus:
-        before = check(w.problem, w.part, w.answer)
+        before = check(w.problem, w.part, w.answer, given=w.given)
         if before.status != "incorrect":
             rows[w.part]["not wrong"] += 1
             continue

@@ -55,6 +55,8 @@ SOURCES = {
     "negated_rhs": "Morin ch. 6 (signs in Lagrange's equation), a solved form",
     "el_sign": "Morin ch. 6 (d/dt ∂L/∂q̇ − ∂L/∂q)",
     "eom_of_wrong_L": "Morin ch. 6 (a wrong L derived correctly)",
+    "eom_of_own_L": "Morin ch. 6 (a wrong L derived correctly), handed in with that L: the "
+    "follow-through of a grader's rubric (e.g. MIT 8.09 problem-set grading; from memory)",
     "row_term_sign": "Taylor ch. 7 problems (a sign slip in one term)",
     "cyclic_extra": "MIT 8.09 (a coordinate called cyclic where L depends on it)",
     "cyclic_missed": "Taylor §7.8 (ignorable coordinates)",
@@ -76,6 +78,10 @@ class Wrong:
     answer: str | list[str]
     cause: str
     exprs: tuple = field(compare=False)
+    #: What the request brings besides the answer: the student's own L (follow-through).
+    given: dict | None = field(default=None, compare=False)
+    #: The own L of `given`, as the sympy form it was printed from.
+    own_L: sp.Expr | None = field(default=None, compare=False)
 
 
 def _terms(e: sp.Expr) -> tuple[sp.Expr, ...]:
@@ -176,12 +182,14 @@ def wrong_answers(sid: str, seed: int, rng: random.Random) -> Iterator[Wrong]:
     if len(row_terms) > 1:
         x = rng.choice(row_terms)
         yield eom([(e - 2 * x if i == k else e, zero) for i, e in enumerate(E)], "row_term_sign")
-    if cross:
-        wrong = LagrangianSystem(L - cross[0] / 2, jets).euler_lagrange
-        yield eom([(sp.expand(e), zero) for e in wrong], "eom_of_wrong_L")
-    elif len(moving) > 1:
-        wrong = LagrangianSystem(L + moving[0], jets).euler_lagrange
-        yield eom([(sp.expand(e), zero) for e in wrong], "eom_of_wrong_L")
+    wrong_L = L - cross[0] / 2 if cross else L + moving[0] if len(moving) > 1 else None
+    if wrong_L is not None:
+        rows = [(sp.expand(e), zero) for e in LagrangianSystem(wrong_L, jets).euler_lagrange]
+        yield eom(rows, "eom_of_wrong_L")
+        # the same equations handed in with the L they came from (follow-through)
+        own = eom(rows, "eom_of_own_L")
+        given = {"lagrangian": plain(wrong_L)}
+        yield Wrong(spec, "eom", own.answer, own.cause, own.exprs, given, wrong_L)
 
     # --- cyclic coordinates ---
     cyclic = list(system.cyclic_coordinates)

@@ -26,6 +26,8 @@ from lagrade.judge.mutations import (
     lagrangian_momentum_mutant,
     one_term_mutants,
     term_specs,
+    trig_factor_mutant,
+    trig_factors,
     wrong_coordinate_mutant,
 )
 from lagrade.judge.sampling import Points
@@ -116,6 +118,12 @@ class MomentumFingerprints:
             ):
                 w = tuple(("v", piece(e), float(c)) for c, e in pieces)
                 specs.append((kind, 1.0, w, ("term", t, local)))
+        # a sin or cos dropped from one term of several (a momentum of one term without its
+        # factor is the momenta part's own sentence, "p_φ is ∂L/∂φ̇ without its factor sin²θ")
+        for t, term in enumerate(self._terms if len(self._terms) > 1 else ()):
+            for local, f in enumerate(trig_factors(term)):
+                w = (("v", piece(term), -1.0), ("v", piece(term / f), 1.0))
+                specs.append(("missing_factor", 1.0, w, ("trig", t, local)))
         self.specs = specs
         with np.errstate(all="ignore"):
             values = with_quotients(
@@ -189,6 +197,12 @@ class MomentumFingerprints:
             elif source[0] == "lagrangian":
                 lm = self.catalogue.lagrangian_fingerprints.mutant(source[1])
                 built = lagrangian_momentum_mutant(p.system, p.jets, k, lm)
+            elif source[0] == "trig":
+                term = self._terms[source[1]]
+                f = trig_factors(term)[source[2]]
+                built = trig_factor_mutant(
+                    sp.Add(*self._terms), term, f, f"your p_{p.jets[k].name}"
+                )
             else:
                 if source[1] not in self._term_mutants:
                     self._term_mutants[source[1]] = one_term_mutants(

@@ -247,8 +247,32 @@ def iter_momentum_mutants(
     for m in lagrangian_mutants:
         if m.kind in KINETIC_KINDS:
             yield lagrangian_momentum_mutant(system, jets, k, m)
-    yield from iter_term_mutants(
-        system.generalized_momenta[k], f"your p_{jets[k].name}", parameters
+    what = f"your p_{jets[k].name}"
+    yield from iter_term_mutants(system.generalized_momenta[k], what, parameters)
+    terms = expanded_terms(system.generalized_momenta[k])
+    # a sin or cos dropped from one term of several (a momentum of one term without its factor
+    # is the momenta part's own sentence, "p_φ is ∂L/∂φ̇ without its factor sin²θ")
+    for term in terms if len(terms) > 1 else ():
+        for f in trig_factors(term):
+            yield trig_factor_mutant(sp.Add(*terms), term, f, what)
+
+
+def trig_factors(term: sp.Expr) -> list[sp.Expr]:
+    """The sin and cos factors of a term, with their powers (sin(θ)^2, cos(α)): a factor a
+    student drops (the parameter factors are `term_specs`' own)."""
+    out = []
+    for f in sp.Mul.make_args(term):
+        base = f.base if isinstance(f, sp.Pow) else f
+        if isinstance(base, sp.sin | sp.cos):
+            out.append(f)
+    return out
+
+
+def trig_factor_mutant(base: sp.Expr, term: sp.Expr, f: sp.Expr, what: str) -> Mutant:
+    """`base` (an expanded sum) with its term `term` written without the factor f."""
+    message = _TERM_MESSAGES["missing_factor"].format(t=plain(term), w=what, p=plain(f))
+    return Mutant(
+        "missing_factor", message, base, ((-sp.Integer(1), term), (sp.Integer(1), term / f)), 1
     )
 
 
@@ -383,12 +407,14 @@ def _linear_euler_lagrange(
 def conserved_mutants(
     system: LagrangianSystem, jets: Sequence[Jet], T: sp.Expr, V: sp.Expr
 ) -> list[Mutant]:
-    """Quantities wrongly called conserved: T + V when the constraint moves (h is), the momentum
+    """Quantities wrongly called conserved: T + V when it is not h or L depends on t, the momentum
     of a coordinate that is not cyclic, L itself."""
     out: list[Mutant] = []
     h = system.energy_function
-    if sp.expand(T + V - h) != 0:
-        out.append(Mutant("energy_not_conserved", _energy_sentence(system), T + V))
+    if sp.expand(T + V - h) != 0 or not system.is_time_independent:
+        # its sentence, why T + V is not conserved, is decided by values where it is said
+        # (`parts.conserved_claims.energy_sentence`)
+        out.append(Mutant("energy_not_conserved", "T + V is not conserved here", T + V))
     cyclic = set(system.cyclic_coordinates)
     for j, pj in zip(jets, system.generalized_momenta, strict=True):
         if j.name not in cyclic:
@@ -401,15 +427,6 @@ def conserved_mutants(
             )
     out.append(Mutant("lagrangian_not_conserved", "L itself is not a conserved quantity", system.L))
     return out
-
-
-def _energy_sentence(system: LagrangianSystem) -> str:
-    """Why T + V is not conserved, naming h as conserved only where it is (the reference's
-    conserved quantities list it: L has no explicit t). A driven system conserves neither."""
-    said = "T + V is not conserved here: the constraint moves, so energy flows in and out"
-    if "h" in system.conserved_quantities:
-        return said + "; the Jacobi integral h = Σ q̇ ∂L/∂q̇ − L is"
-    return said + "; L depends on t explicitly, so the Jacobi integral h is not conserved either"
 
 
 def expression_mutants(ref: sp.Expr) -> list[Mutant]:

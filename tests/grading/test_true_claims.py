@@ -110,11 +110,12 @@ def _quoted_in_witness(verdict, jets) -> None:
                 assert float(f"{got:.3g}") == float(number.replace("−", "-")), sentence
 
 
-def test_a_negated_solved_equation_quotes_only_witness_numbers():
-    """q̈ = −f: the state quoted (θ and θ̇) is the witness's, whole."""
+def test_a_wrong_solved_equation_quotes_only_witness_numbers():
+    """q̈ = −f/2: the state quoted (θ and θ̇) is the witness's, whole. (q̈ = −f is named
+    without numbers: tests/grading/test_named_mistakes.py.)"""
     v = get_scene("hoop").variant(1)
     acc = sp.cancel(v.system.forcing[0] / v.system.mass_matrix[0, 0])
-    answer = [f"{plain(v.jets[0].ddot)} = {plain(-acc)}"]
+    answer = [f"{plain(v.jets[0].ddot)} = {plain(-acc / 2)}"]
     verdict = judge({"scene": "hoop", "seed": 1}, "eom", answer)
     assert verdict.status == "incorrect"
     assert "θ̇ = " in verdict.feedback[0] or "φ̇ = " in verdict.feedback[0]

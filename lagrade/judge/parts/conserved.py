@@ -21,6 +21,7 @@ from lagrade.judge.parts.common import (
     where_text,
     witness_point,
 )
+from lagrade.judge.parts.conserved_claims import energy_sentence, missing_factor
 from lagrade.judge.parts.items import list_items, without_none
 from lagrade.judge.parts.reading import (
     Lines,
@@ -97,6 +98,12 @@ def check_conserved(problem: Problem, answer: Any, given: Mapping | None) -> Ver
     )
     own = own_lagrangian(problem, given)
     feedback, mistakes, outcomes = lines.feedback(), [], []
+
+    def conserved(Q: Compiled) -> bool:
+        """The part's own test: D_t Q = 0 on the reference motion, Q not a constant."""
+        out, constant, _grad = _conservation(problem, Q, points)
+        return out.equal and not constant
+
     right_grads: list[np.ndarray] = []
     right_labels: list[str] = []
     complete = bool(given and given.get("all") is True)
@@ -137,9 +144,16 @@ def check_conserved(problem: Problem, answer: Any, given: Mapping | None) -> Ver
             any_wrong, follows_all = True, False
             witness = witness or witness_point(points, out, Q)
             mutant = problem.catalogue.match_offset(problem.catalogue.conserved_mutants, Q, points)
-            if mutant is not None:
+            factor = None if mutant is not None else missing_factor(problem, Q, conserved)
+            if mutant is not None and mutant.kind == "energy_not_conserved":
+                feedback.append(energy_sentence(problem, points, conserved))
+                mistakes.append(mutant.kind)
+            elif mutant is not None:
                 feedback.append(as_sentence(mutant.message))
                 mistakes.append(mutant.kind)
+            elif factor is not None:
+                feedback.append(f"{label} {factor}.")
+                mistakes.append("missing_factor")
             else:
                 feedback.append(
                     f"{label} is not conserved: its time derivative along the motion "

@@ -18,6 +18,7 @@ from lagrade.judge.parts.common import (
     where_text,
     witness_point,
 )
+from lagrade.judge.parts.eom_claims import negated_rhs, own_lagrangian_sentence
 from lagrade.judge.parts.items import list_items
 from lagrade.judge.parts.reading import Lines, Read, own_lagrangian, read, read_lines
 from lagrade.judge.problem import Problem
@@ -70,6 +71,11 @@ def _judge(
     with np.errstate(all="ignore"):
         rows = equation_rows(compiled, jets, points.env)
     right, outcomes, feedback, mistakes = [], [], lines.feedback(), []
+
+    def right_row(equation: Compiled) -> bool:
+        """The part's own test of one equation: in the span of the reference rows."""
+        return decide(lambda b: _span_residual(problem, [equation], ref_rows, 0, points, b)).equal
+
     wrong: list[int] = []
     witness = None
     for k in range(len(reads)):
@@ -104,9 +110,13 @@ def _judge(
         point = witness_point(points, out)
         witness = witness or point
         mutant = problem.catalogue.match_row(compiled[k], points)
+        negated = None if mutant is not None else negated_rhs(problem, reads[k], right_row)
         if mutant is not None:
             feedback.append(f"{label}: {mutant.message}.")
             mistakes.append(mutant.kind)
+        elif negated is not None:
+            feedback.append(f"{label}: {negated}.")
+            mistakes.append("negated_rhs")
         else:
             quoted = point == witness
             feedback.append(
@@ -125,7 +135,8 @@ def _judge(
                 )
                 + "."
             )
-        dimensions = hint_for(problem, reads[k], "equation") if tells(mutant) else ""
+        told = tells(mutant) and negated is None  # a negated side keeps every term's units
+        dimensions = hint_for(problem, reads[k], "equation") if told else ""
         if dimensions:
             feedback.append(f"{label}: {dimensions[0].lower()}{dimensions[1:]}")
     rank = row_rank(rows.coef.astype(float), right)
@@ -134,10 +145,9 @@ def _judge(
     if wrong and own is not None:
         follows = _follows_from_own(problem, own, compiled, wrong, points)
         if follows:
-            feedback.append(
-                "These equations follow correctly from your own Lagrangian, which is "
-                "not the right one."
-            )
+            mistake = problem.catalogue.match_lagrangian(own, problem.points("lagrangian"))
+            message = None if mistake is None else mistake.message
+            feedback.append(own_lagrangian_sentence(message, not right))
     if not wrong and not unreadable and rank == n:
         notes = ()
         if len(reads) > n:
