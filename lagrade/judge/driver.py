@@ -167,7 +167,8 @@ def _remember(key, verdict: Verdict, cache: OrderedDict | None = None) -> None:
         return
     cache = _verdicts if cache is None else cache
     shown = verdict.interpreted if isinstance(verdict.interpreted, list) else [verdict.interpreted]
-    if len(key[-1]) + sum(len(t) for t in (*verdict.feedback, *shown)) > _REMEMBERED_CHARS:
+    held = sum(len(k) for k in key[2:])  # the answer's text; or the given and the reading's key
+    if held + sum(len(t) for t in (*verdict.feedback, *shown)) > _REMEMBERED_CHARS:
         return
     cache[key] = verdict
     if len(cache) > _VERDICT_CACHE_SIZE:
@@ -193,8 +194,8 @@ def _reading_key(problem: Problem, part: str, answer: Any, given: Any, seen) -> 
     """The second level's key of an answer, or None: none for an answer the first level does
     not remember (too long: reading it for a key would cost what judging does) or judged in
     the student's own coordinates (read against another vocabulary than the statement's)."""
-    if seen is None or part not in SAME_READING_PARTS:
-        return None
+    if seen is None or part not in SAME_READING_PARTS or problem.lagrangian is None:
+        return None  # (a part without its Lagrangian is refused by `run_checker`)
     if isinstance(given, Mapping) and given.get("transformation") is not None:
         return None
     read = reading_key(problem, part, answer)

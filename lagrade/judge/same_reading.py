@@ -13,7 +13,8 @@ Left out (no key, judged as before): the other parts, whose checkers read the ra
 beside the reader (`expression`: a unit or a degree sign; `transformation`: its remark;
 `dof`, names, the oscillation parts), an answer with an unreadable line (the parser's message
 quotes the text and its caret), an item whose reading was built as a sympy form (a time
-derivative, an additive constant), and a tree over `MAX_KEY_NODES` nodes.
+derivative, an additive constant), a tree over `MAX_KEY_NODES` nodes and an answer over
+`MAX_KEYED_CHARS` characters.
 """
 
 from __future__ import annotations
@@ -34,6 +35,10 @@ SAME_READING_PARTS = frozenset(
 )
 #: The most tree nodes one key may hold: keying stays a fraction of the reading it follows.
 MAX_KEY_NODES = 4_096
+#: The most characters of answer text read for a key. On a miss the checker reads the answer
+#: again, so a key costs one more reading; beyond this (far beyond a student's answer, within
+#: the parser's limits) it is not worth that reading.
+MAX_KEYED_CHARS = 4_000
 
 
 class _NoKey(Exception):
@@ -44,7 +49,7 @@ def reading_key(problem: Problem, part: str, answer: Any) -> str | None:
     """The key of `answer`'s reading to `part` of `problem` (see the module's docstring), or
     None when the part or the reading has none. A student's text never raises here: what
     does not read has no key, and the checker says why."""
-    if part not in SAME_READING_PARTS:
+    if part not in SAME_READING_PARTS or _characters(answer) > MAX_KEYED_CHARS:
         return None
     with reading_notes() as notes:
         try:
@@ -52,30 +57,51 @@ def reading_key(problem: Problem, part: str, answer: Any) -> str | None:
         except LagradeError:
             return None
     out: list[str] = []
+    symbols: dict[Any, int] = {}
     try:
-        _item(got, out, [MAX_KEY_NODES])
+        _item(got, _Walk(out, symbols))
     except _NoKey:
         return None
-    for note in notes:
-        out.append(_text("w", note))
+    out += [_text("w", note) for note in notes]
+    out += [_symbol(symbol) for symbol in symbols]  # in the order first met: canonical
     return "".join(out)
 
 
-def _item(got: Any, out: list[str], budget: list[int]) -> None:
+class _Walk:
+    """Where a key is written: its tokens, the symbols met (each written once, at the end,
+    and named by its number in the tree) and the nodes left to the budget."""
+
+    __slots__ = ("out", "symbols", "left")
+
+    def __init__(self, out: list[str], symbols: dict[Any, int]):
+        self.out, self.symbols, self.left = out, symbols, MAX_KEY_NODES
+
+
+def _characters(answer: Any) -> int:
+    if isinstance(answer, str):
+        return len(answer)
+    if isinstance(answer, list | tuple):
+        return sum(len(a) if isinstance(a, str) else MAX_KEYED_CHARS + 1 for a in answer)
+    return MAX_KEYED_CHARS + 1  # no text: a caller's object, not keyed
+
+
+def _item(got: Any, walk: _Walk) -> None:
+    out = walk.out
     if isinstance(got, Lines):
         out.append(f"L{len(got.entries)}[")
         for entry in got.entries:
             if not isinstance(entry, Read):  # an unreadable line: its message quotes the text
                 raise _NoKey
-            _read(entry, out, budget)
+            _read(entry, walk)
         out.append("]")
     elif isinstance(got, Read):
-        _read(got, out, budget)
+        _read(got, walk)
     else:
         raise _NoKey
 
 
-def _read(got: Read, out: list[str], budget: list[int]) -> None:
+def _read(got: Read, walk: _Walk) -> None:
+    out = walk.out
     out.append("R")
     for side in (got._lhs, got._rhs):  # the sides as read (Read keeps them private)
         if side is None:
@@ -84,23 +110,24 @@ def _read(got: Read, out: list[str], budget: list[int]) -> None:
             out.append("Z")
         elif isinstance(side, Side):
             out.append("T")
-            _tree(side.node, out, budget)
+            _tree(side.node, walk)
         else:  # a sympy form (built at once): not keyed
             raise _NoKey
     out.append(_text("E", str(got.echo)))
 
 
-def _tree(root: Any, out: list[str], budget: list[int]) -> None:
+def _tree(root: Any, walk: _Walk) -> None:
     """The tree in a prefix code without its positions, one token per node: iterative, so that
     no tree is too deep for it."""
+    out, symbols = walk.out, walk.symbols
     stack: list[Any] = [root]
     while stack:
         node = stack.pop()
         if isinstance(node, str):
             out.append(node)
             continue
-        budget[0] -= 1
-        if budget[0] < 0:
+        walk.left -= 1
+        if walk.left < 0:
             raise _NoKey
         kind = node.kind
         if kind == "num":
@@ -109,7 +136,9 @@ def _tree(root: Any, out: list[str], budget: list[int]) -> None:
                 raise _NoKey
             out.append(f"n{p}/{q}{'i' if node.extra else 'r'};")
         elif kind == "sym":
-            out.append(_symbol(node.value))
+            if not isinstance(node.value, sp.Basic):  # a symbol, or the declared imaginary unit
+                raise _NoKey
+            out.append(f"s{symbols.setdefault(node.value, len(symbols))};")
         elif kind == "pi":
             out.append("p")
         elif kind in ("add", "mul"):
@@ -136,15 +165,9 @@ def _tree(root: Any, out: list[str], budget: list[int]) -> None:
             raise _NoKey
 
 
-def _symbol(value: Any) -> str:
-    """A symbol (or the declared imaginary unit) exactly: its name and assumptions."""
-    if not isinstance(value, sp.Basic):
-        raise _NoKey
-    return _srepr(value)
-
-
 @lru_cache(maxsize=1_024)  # a question has a few dozen symbols; srepr costs microseconds
-def _srepr(value: sp.Basic) -> str:
+def _symbol(value: sp.Basic) -> str:
+    """A symbol (or the declared imaginary unit) exactly: its name and assumptions."""
     return _text("s", sp.srepr(value))
 
 

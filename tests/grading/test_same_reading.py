@@ -7,6 +7,7 @@ process gives — while an answer read otherwise, or with other notes from the p
 from __future__ import annotations
 
 import functools
+import json
 import re
 
 import pytest
@@ -14,7 +15,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from lagrade.judge.driver import cached_problem, forget_problems, judge, verdict_cache_hits
-from lagrade.judge.same_reading import SAME_READING_PARTS, reading_key
+from lagrade.judge.same_reading import MAX_KEYED_CHARS, SAME_READING_PARTS, reading_key
 
 from .corpus import corpus
 
@@ -134,6 +135,39 @@ def test_own_coordinates_are_not_keyed():
     before = verdict_cache_hits()
     judge(PENDULUM, "lagrangian", RIGHT[1], given)
     assert _hits(before) == 0
+
+
+@pytest.mark.parametrize(
+    "hostile",
+    [
+        "__import__('os').system('true')",
+        "eval(phi)",
+        "m*g*l*cos(phi)" + ")" * 60,
+        "(" * 45 + "phi" + ")" * 45,
+        "phi^" * 40 + "2",
+        "1" * 1_990,
+        ["m*g*l*sin(phi) = 0"] * 200,
+        {"not": "text"},
+        12,
+    ],
+)
+def test_hostile_text_gets_no_key_or_a_bounded_one(hostile):
+    """Keying is the part's own reader and a walk over its tree: what the parser refuses has no
+    key, and what it reads is keyed in a bounded walk, or not at all past the bound."""
+    forget_problems()
+    problem = cached_problem(PENDULUM)
+    for part in ("lagrangian", "eom"):
+        key = reading_key(problem, part, hostile)
+        assert key is None or len(key) < 5 * len(json.dumps(hostile)) + 1_000
+
+
+def test_a_long_answer_is_not_read_for_a_key():
+    """On a miss the checker reads the answer again: past MAX_KEYED_CHARS, no key."""
+    line = "m*l^2*phi_ddot + " + " + ".join(["m*g*l*sin(phi)/80"] * 80) + " = 0"
+    assert 3 * len(line) > MAX_KEYED_CHARS
+    problem = cached_problem(PENDULUM)
+    assert reading_key(problem, "eom", [line] * 3) is None
+    assert reading_key(problem, "eom", [line]) is not None
 
 
 # --- a property over respellings ------------------------------------------------------------
