@@ -13,6 +13,10 @@ compiled, the sample points (drawn over the parameters' domains, seeded by the s
 many variants derives and compiles each structure once (below this layer, `lagrade.mechanics`
 derives T, V and L once per presentation too).
 
+Verdicts are remembered at two levels: by the answer's text, and by the content of its reading
+(`same_reading`: the parser's tree without positions, the echo and the parser's notes), so that
+an answer spelled otherwise than one judged before, and read the same, is not judged again.
+
 Two clocks (`lagrade.judge.clocks`): the question's preparation (its reference, points and, for
 a wrong answer, the mistake catalogue) is charged to the question's budget and reported as
 `prepare_ms`; the student's part gets the time limit and is reported as `ms`.
