@@ -46,6 +46,7 @@ from lagrade.judge.deriving import derivation_limits, deriving
 from lagrade.judge.parts import PARTS, run_checker
 from lagrade.judge.parts.oscillation import prepare_oscillations
 from lagrade.judge.parts.phase import POINTS, phase_points
+from lagrade.judge.parts.reading import parsed_once
 from lagrade.judge.problem import Problem, build_problem, problem_key
 from lagrade.judge.same_reading import SAME_READING_PARTS, reading_key
 from lagrade.judge.verdict import Verdict, timeout_verdict
@@ -270,7 +271,7 @@ def judge(
         before = budget.spent
         read = None
         try:
-            with time_limit(limit):
+            with time_limit(limit), parsed_once():  # read for the key, then judged: one parse
                 read = _reading_key(problem, part, answer, given, seen)
                 verdict = _by_reading.get(read) if read is not None else None
                 if verdict is None:
