@@ -13,6 +13,10 @@ compiled, the sample points (drawn over the parameters' domains, seeded by the s
 many variants derives and compiles each structure once (below this layer, `lagrade.mechanics`
 derives T, V and L once per presentation too).
 
+Verdicts are remembered at two levels: by the answer's text, and by the content of its reading
+(`same_reading`: the parser's tree without positions, the echo and the parser's notes), so that
+an answer spelled otherwise than one judged before, and read the same, is not judged again.
+
 Two clocks (`lagrade.judge.clocks`): the question's preparation (its reference, points and, for
 a wrong answer, the mistake catalogue) is charged to the question's budget and reported as
 `prepare_ms`; the student's part gets the time limit and is reported as `ms`.
@@ -42,7 +46,9 @@ from lagrade.judge.deriving import derivation_limits, deriving
 from lagrade.judge.parts import PARTS, run_checker
 from lagrade.judge.parts.oscillation import prepare_oscillations
 from lagrade.judge.parts.phase import POINTS, phase_points
+from lagrade.judge.parts.reading import parsed_once
 from lagrade.judge.problem import Problem, build_problem, problem_key
+from lagrade.judge.same_reading import SAME_READING_PARTS, reading_key
 from lagrade.judge.verdict import Verdict, timeout_verdict
 from lagrade.judge.worker import Limits
 
@@ -131,6 +137,8 @@ def forget_problems() -> None:
     _structures.clear()
     _prepared.clear()
     _verdicts.clear()
+    _by_reading.clear()
+    _hits.update(dict.fromkeys(_hits, 0))
     _underived.clear()
 
 
@@ -159,15 +167,46 @@ def _answer_key(question: str | None, part: str, answer: Any, given: Mapping | N
     return (question, part, text) if len(text) <= _REMEMBERED_CHARS else None
 
 
-def _remember(key, verdict: Verdict) -> None:
+def _remember(key, verdict: Verdict, cache: OrderedDict | None = None) -> None:
     if key is None or verdict.status not in _SETTLED:
         return
+    cache = _verdicts if cache is None else cache
     shown = verdict.interpreted if isinstance(verdict.interpreted, list) else [verdict.interpreted]
-    if len(key[2]) + sum(len(t) for t in (*verdict.feedback, *shown)) > _REMEMBERED_CHARS:
+    held = sum(len(k) for k in key[2:])  # the answer's text; or the given and the reading's key
+    if held + sum(len(t) for t in (*verdict.feedback, *shown)) > _REMEMBERED_CHARS:
         return
-    _verdicts[key] = verdict
-    if len(_verdicts) > _VERDICT_CACHE_SIZE:
-        _verdicts.popitem(last=False)
+    cache[key] = verdict
+    if len(cache) > _VERDICT_CACHE_SIZE:
+        cache.popitem(last=False)
+
+
+#: What was decided for an answer, by (question, part, given, the key of its reading): the
+#: second level, for an answer spelled otherwise than one judged before but read the same
+#: (`same_reading`: a function of the key alone). Only a right or wrong verdict: an `invalid`
+#: one may quote the text it could not read.
+_by_reading: OrderedDict[tuple[str, str, str, str], Verdict] = OrderedDict()
+#: Verdicts given again, by the level that found them (`verdict_cache_hits`).
+_hits = {"answer": 0, "reading": 0}
+
+
+def verdict_cache_hits() -> dict[str, int]:
+    """How many verdicts this process gave again since it started (or `forget_problems`):
+    by the answer's text ("answer") and by its reading ("reading")."""
+    return dict(_hits)
+
+
+def _reading_key(problem: Problem, part: str, answer: Any, given: Any, seen) -> tuple | None:
+    """The second level's key of an answer, or None: none for an answer the first level does
+    not remember (too long: reading it for a key would cost what judging does) or judged in
+    the student's own coordinates (read against another vocabulary than the statement's)."""
+    if seen is None or part not in SAME_READING_PARTS or problem.lagrangian is None:
+        return None  # (a part without its Lagrangian is refused by `run_checker`)
+    if isinstance(given, Mapping) and given.get("transformation") is not None:
+        return None
+    read = reading_key(problem, part, answer)
+    if read is None:
+        return None
+    return (seen[0], part, json.dumps(given, sort_keys=True, separators=(",", ":")), read)
 
 
 # --- one part ------------------------------------------------------------------------------------
@@ -191,7 +230,8 @@ def judge(
     has many answers to come. A question whose budget has run out gets the same timeout at once
     for every later answer, so it holds a batch up once, not per answer. An answer this process
     has decided before (same question, part, answer and given) gets that verdict again without
-    being judged: `ms` is then the lookup, `prepare_ms` 0."""
+    being judged: `ms` is then the lookup, `prepare_ms` 0; so does an answer read the same as
+    one decided before (`same_reading`), and `ms` is then its reading."""
     received = time.perf_counter()
     try:
         key = problem_key(spec) if isinstance(spec, Mapping) else None
@@ -199,6 +239,7 @@ def judge(
         seen = _answer_key(question, part, answer, given)
         if seen in _verdicts:  # judged before: the same verdict, for the time of a lookup
             _verdicts.move_to_end(seen)
+            _hits["answer"] += 1
             ms = (time.perf_counter() - received) * 1e3
             return Verdict(**{**_verdicts[seen].__dict__, "ms": ms, "prepare_ms": 0.0})
         new = key is not None and key not in _problems
@@ -228,9 +269,16 @@ def judge(
             deadline(limit + GRACE)
         start = time.perf_counter()
         before = budget.spent
+        read = None
         try:
-            with time_limit(limit):
-                verdict = run_checker(problem, part, answer, given)
+            with time_limit(limit), parsed_once():  # read for the key, then judged: one parse
+                read = _reading_key(problem, part, answer, given, seen)
+                verdict = _by_reading.get(read) if read is not None else None
+                if verdict is None:
+                    verdict = run_checker(problem, part, answer, given)
+                else:  # read the same as an answer judged before: its verdict, unjudged
+                    _by_reading.move_to_end(read)
+                    _hits["reading"] += 1
         except PreparationTimeout:
             return _preparation_timeout(part, budget, spent)
         except PartTimeout:
@@ -243,6 +291,8 @@ def judge(
     prepare_ms = (budget.spent - spent) * 1e3
     verdict = Verdict(**{**verdict.__dict__, "ms": ms, "prepare_ms": prepare_ms})
     _remember(seen, verdict)
+    if verdict.status in ("correct", "incorrect"):
+        _remember(read, verdict, _by_reading)
     return verdict
 
 

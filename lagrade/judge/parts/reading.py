@@ -301,7 +301,37 @@ def read(problem: Problem, item: Any, labels: Sequence[str] = (), mode: str = "a
         "equation": p.parse_equation,
         "expression": p.parse_expression,
     }
-    return read_parsed(problem, parse[mode](item, vocab, latex=getattr(item, "latex", None)))
+    latex = getattr(item, "latex", None)
+    memo = _parses.get()
+    if memo is None:
+        return read_parsed(problem, parse[mode](item, vocab, latex=latex))
+    key = (id(vocab), mode, str(item), latex)
+    if key not in memo:
+        try:
+            memo[key] = parse[mode](item, vocab, latex=latex)
+        except ParseError as error:
+            memo[key] = error
+    found = memo[key]
+    if isinstance(found, ParseError):
+        raise found
+    return read_parsed(problem, found)
+
+
+#: The parser's results for one request, by (vocabulary, mode, text, LaTeX flag), while
+#: `parsed_once` runs: the driver reads an answer for its reading's key and the checker reads
+#: it again, and the second reading is the first one's parse (the notes are added again by
+#: `read_parsed`, which runs each time).
+_parses: ContextVar[dict | None] = ContextVar("parses", default=None)
+
+
+@contextmanager
+def parsed_once() -> Iterator[None]:
+    """Parse each text once while the block runs (one request's reading and judging)."""
+    token = _parses.set({})
+    try:
+        yield
+    finally:
+        _parses.reset(token)
 
 
 def read_names(problem: Problem, items: Sequence[Any], expected: str) -> list[NameRead]:
