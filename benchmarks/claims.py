@@ -12,7 +12,8 @@ Prints a table by part: wrong answers, % naming the recorded mistake, % naming a
 mistake (a true claim, not the cause's), % with a false claim, % saying nothing specific; then
 the false claims and the unreproduced numbers, one line each.
 
-Usage: python benchmarks/claims.py [--seeds 1,2] [--scenes a,b] [--show-false N] [--json PATH]
+Usage: python benchmarks/claims.py [--seeds 1,2] [--scenes a,b] [--parts T,V] [--show-false N]
+                                  [--json PATH]
 """
 
 from __future__ import annotations
@@ -24,6 +25,7 @@ import sys
 from collections import Counter, defaultdict
 from collections.abc import Callable
 from dataclasses import dataclass
+from functools import cached_property
 from pathlib import Path
 
 import numpy as np
@@ -39,7 +41,7 @@ from lagrade.bank.registry import get_scene  # noqa: E402
 from lagrade.judge.check import check  # noqa: E402
 from lagrade.judge.mutations import swap_sin_cos  # noqa: E402
 from lagrade.judge.situation import symbol_text  # noqa: E402
-from lagrade.mechanics import LagrangianSystem  # noqa: E402
+from lagrade.mechanics import LagrangianSystem, phase_space  # noqa: E402
 from lagrade.mechanics import t as mech_t  # noqa: E402
 from lagrade.notation import plain  # noqa: E402
 
@@ -68,6 +70,28 @@ NAMES = {
     "energy_offered": {"energy_not_conserved"},
     "conserved_trig_dropped": {"missing_factor", "term_factor"},
     "conserved_not_cyclic": {"momentum_not_conserved"},
+    "T_dropped_half": {"half_all"},
+    "T_dropped_term": {"term_missing", "missing_body", "missing_cross", "missing_driven"},
+    "T_factor_two": {"term_twice", "half_term", "half_body"},
+    # a body in pure rotation (a pulley): its ½ missing is its moment of inertia doubled
+    "T_wrong_inertia": {"wrong_inertia", "half_body"},
+    "T_sin_cos": {"swap_all", "term_swap"},
+    "V_sign": {"sign_of_V"},
+    "V_dropped_term": {"term_missing"},
+    "V_sin_cos": {"swap_all", "term_swap"},
+    "V_term_sign": {"term_sign"},
+    "H_velocities": {"H_velocities"},
+    "H_is_L": {"H_is_L"},
+    "H_sign_of_V": {"H_sign_of_V"},
+    "H_dropped_half": {"H_half"},
+    "H_vector_potential": {"H_offset"},
+    "Heq_p_dot_sign": {"sign_p_dot"},
+    "Heq_missing": {"too_few"},
+    "Heq_no_mass": {"mass_not_divided"},
+    "X_sign": {"x_sign"},
+    "X_sin_cos": {"x_swap"},
+    "X_upside_down": {"x_reciprocal"},
+    "X_dropped_factor": {"x_factor"},
 }
 
 
@@ -100,6 +124,26 @@ class Reference:
         self.E = [sp.expand(x) for x in self.system.euler_lagrange]
         self.F = list(self.system.generalized_forces)
         self.index = {j.name: k for k, j in enumerate(self.jets)}
+        self.quantity = (
+            self.variant.quantities[problem["quantity"]] if "quantity" in problem else None
+        )
+
+    @cached_property
+    def phase(self):
+        """H, its parts and Hamilton's equations (mechanics.hamilton)."""
+        return phase_space(self.system)
+
+    @cached_property
+    def in_momenta(self) -> dict:
+        """q̇ → q̇(q, p): velocity space carried to phase space."""
+        dots = [j.dot for j in self.jets]
+        return dict(zip(dots, self.phase.velocities, strict=True))
+
+    def body_rotation(self, name: str) -> sp.Expr | None:
+        for b in self.variant.bodies:
+            if b.name == name and hasattr(b, "rotational_energy"):
+                return sp.expand(b.rotational_energy(self.jets))
+        return None
 
     def term(self, shown: str, *sources: sp.Expr) -> sp.Expr | None:
         for source in sources:
@@ -198,7 +242,7 @@ def _row_fixed(w: Wrong, at: int, reference: sp.Expr, delta: sp.Expr) -> tuple:
 def _with_L_change(w: Wrong, ref: Reference, dL: sp.Expr, row: int | None = None):
     """The answer corrected by a change of its Lagrangian dL: L + dL; each momentum + ∂dL/∂q̇;
     equation `row` (or each) + E(dL)."""
-    if w.part == "lagrangian":
+    if w.part in ("lagrangian", "T"):  # a kinetic change of L is the same change of T
         return (w.exprs[0] + dL,)
     if w.part == "momenta":
         return tuple(e + sp.diff(dL, j.dot) for e, j in zip(w.exprs, ref.jets, strict=True))
@@ -280,11 +324,11 @@ def claims_of(sentence: str, w: Wrong, ref: Reference) -> list[Claim]:
         where, k = _where(what if what.startswith(("your", "the L")) else f"your {what}", ref)
         factor = ref.symbol(m.group(3)) if kind == "term_factor" else None
         if where in ("L", "T", "V", "behind"):
-            source = {"L": ref.L, "T": ref.T, "V": -ref.V, "behind": ref.L}[where]
-            t = ref.term(shown, source, ref.T, -ref.V)
-            if where == "V" and t is not None:
-                t = -t  # V's terms are quoted as V's
-                t = ref.term(shown, ref.V) or t
+            if where == "V":  # V's terms are quoted as V's
+                t = ref.term(shown, ref.V)
+            else:
+                source = {"L": ref.L, "T": ref.T, "behind": ref.L}[where]
+                t = ref.term(shown, source, ref.T, -ref.V)
             if t is None:
                 return one(kind, None)
             delta = _term_delta(kind if kind != "missing_driven" else "term_missing", t, factor)
@@ -343,6 +387,9 @@ def claims_of(sentence: str, w: Wrong, ref: Reference) -> list[Claim]:
         fixed = tuple((a, -b) if i == row else (a, b) for i, (a, b) in enumerate(w.exprs))
         return one("negated_rhs", fixed)
     if body.startswith("Your equations are right but only"):
+        if w.part == "hamilton_equations":
+            every = tuple((e.lhs, e.rhs) for e in ref.phase.hamilton_equations)
+            return one("too_few", tuple(w.exprs) + every, "correct")
         return one("too_few", tuple(w.exprs) + tuple((e, 0) for e in ref.E), "correct")
     m = re.match(r"^(These equations|Your wrong equations) follow correctly from your own "
                  r"Lagrangian, which is not the right one(?:: (.+))?$", body)  # fmt: skip
@@ -354,6 +401,12 @@ def claims_of(sentence: str, w: Wrong, ref: Reference) -> list[Claim]:
     m = re.match(r"^(\w+) is cyclic: ", body)
     if m:
         return one("is_cyclic", tuple(w.exprs) + (m.group(1),))
+    found = _energy_claims(body, w, ref, one) or _phase_claims(sentence, body, row, w, ref, one)
+    if found is not None:
+        return found
+    found = _expression_claims(body, w, ref, one)
+    if found is not None:
+        return found
     if body.startswith("T + V is not conserved here"):
         energy = sp.expand(ref.T + ref.V)
         h = ref.system.energy_function
@@ -389,6 +442,124 @@ def claims_of(sentence: str, w: Wrong, ref: Reference) -> list[Claim]:
         L = ref.L
         return one("lagrangian_not_conserved", None, also=lambda: not _conserved_alone(w, L))
     return []  # a sentence that names no mistake
+
+
+def _energy_claims(body: str, w: Wrong, ref: Reference, one) -> list | None:
+    """The T part's sentence of a wrong moment of inertia: the body's rotational term ½ I φ̇²
+    taken c times; its correction takes (c − 1) of it away."""
+    m = re.match(
+        r"^[Tt]he moment of inertia of the (\w+) in your T is (\S+) × the right one$", body
+    )
+    if m is None:
+        return None
+    rotation = ref.body_rotation(m.group(1))
+    if rotation is None:
+        return one("wrong_inertia", None)
+    c = sp.Rational(m.group(2))
+    return one("wrong_inertia", (w.exprs[0] - (c - 1) * rotation,), "correct")
+
+
+def _phase_claims(sentence: str, body: str, row: int | None, w: Wrong, ref: Reference, one):
+    """The sentences of the `hamiltonian` and `hamilton_equations` parts, each with the
+    correction it implies, in the momenta."""
+    if w.part == "hamiltonian":
+        return _hamiltonian_claims(body, w, ref, one)
+    if w.part != "hamilton_equations":
+        return None
+    rates = {j.dot for j in ref.jets}, set(ref.phase.rates)
+    m = re.match(r"^the sign of (ṗ|q̇) is wrong", body)
+    if m and row is not None and row < len(w.exprs):
+        flip = rates[1] if m.group(1) == "ṗ" else rates[0]
+        a, b = (x.xreplace({r: -r for r in flip}) for x in w.exprs[row])
+        fixed = tuple((a, b) if i == row else e for i, e in enumerate(w.exprs))
+        return one("sign_p_dot" if m.group(1) == "ṗ" else "sign_q_dot", fixed)
+    m = re.match(r"^(Equation (\d+) \(.*\)|Your equation) gives (\S+) as (.+?) times what it is",
+                 sentence)  # fmt: skip
+    if m:
+        at = int(m.group(2)) - 1 if m.group(2) else 0
+        k = next((k for k, j in enumerate(ref.jets) if symbol_text(j.name, 1) == m.group(3)), None)
+        if k is None or at >= len(w.exprs) or plain(ref.phase.velocity_matrix[k, k]) != m.group(4):
+            return one("mass_not_divided", None)
+        q_dot, mass = ref.jets[k].dot, ref.phase.velocity_matrix[k, k]
+        a, b = (x.xreplace({q_dot: mass * q_dot}) for x in w.exprs[at])
+        fixed = tuple((a, b) if i == at else e for i, e in enumerate(w.exprs))
+        return one("mass_not_divided", fixed)
+    return None
+
+
+def _hamiltonian_claims(body: str, w: Wrong, ref: Reference, one) -> list | None:
+    """H's sentences: each says what the answer is (L in the momenta, h with a slip, …); its
+    correction takes that away and puts H in its place."""
+    hs, answer = ref.phase, w.exprs[0]
+    H, U = hs.hamiltonian, hs.effective_potential
+    to_p = ref.in_momenta
+
+    def holds(kind: str, corrected: sp.Expr):
+        return one(kind, None, also=lambda: _is_H(corrected, ref))
+
+    if body.startswith("H must be written in the coordinates and the momenta"):
+        velocities = any(answer.has(j.dot) for j in ref.jets)
+        return one("H_velocities", None, also=lambda: velocities)
+    if body.startswith("As a function of the velocities it is the energy function h"):
+        return holds("h_right", answer.xreplace(to_p))
+    if body.startswith("Your H is the Lagrangian L = T − V written in the momenta"):
+        return holds("H_is_L", answer - ref.system.L.xreplace(to_p) + H)
+    if body.startswith("V has the wrong sign in your H"):
+        return holds("H_sign_of_V", answer + 2 * ref.V)
+    if body.startswith("The ½ is missing in the kinetic part of your H"):
+        return holds("H_half", answer - (H - U))
+    if body.startswith("Your H lacks the shift of the momenta"):
+        p = sp.Matrix(hs.momenta)
+        unshifted = (p.T * hs.inverse_matrix * p)[0, 0] / 2 + U
+        return holds("H_offset", answer - unshifted + H)
+    if body.startswith("Your H puts each momentum where its velocity was"):
+        h_of_p = ref.system.energy_function.xreplace(dict(zip(to_p, hs.momenta, strict=True)))
+        return holds("H_velocity_is_p", answer - h_of_p + H)
+    if body.startswith("Your H has the velocities as the mass matrix times the momenta"):
+        Ap = hs.velocity_matrix * sp.Matrix(hs.momenta)
+        h_of_Ap = ref.system.energy_function.xreplace(dict(zip(to_p, Ap, strict=True)))
+        return holds("H_multiplied", answer - h_of_Ap + H)
+    if body.startswith("Your H is the energy T + V"):
+        return holds("H_energy", answer - (ref.T + ref.V).xreplace(to_p) + H)
+    return None
+
+
+def _is_H(corrected: sp.Expr, ref: Reference) -> bool:
+    """The corrected answer is H up to a constant, by values at three points of phase space
+    with the handout's parameter values (its text, H of a coupled system with a slip taken
+    away, is often longer than an answer may be, so it is not judged again as an answer)."""
+    H = ref.phase.hamiltonian
+    handout = {s: float(ref.variant.values[n]) for n, s in ref.variant.parameter_symbols.items()}
+    free = sorted((corrected.free_symbols | H.free_symbols) - set(handout), key=str)
+    differences = []
+    for k in (0.31, 0.47, 0.83):
+        at = {**handout, **{s: k + 0.17 * i for i, s in enumerate(free)}}
+        a, b = complex(sp.N(corrected.xreplace(at))), complex(sp.N(H.xreplace(at)))
+        differences.append((a - b, abs(a) + abs(b)))
+    first = differences[0][0]
+    return all(abs(d - first) <= 1e-9 * (size + 1e-300) for d, size in differences)
+
+
+def _expression_claims(body: str, w: Wrong, ref: Reference, one) -> list | None:
+    """The closed-form slips of the `expression` part, each corrected on the answer."""
+    if w.part != "expression":
+        return None
+    answer = w.exprs[0]
+    if re.match(r"^[Ss]in and cos are swapped$", body):
+        return one("x_swap", (swap_sin_cos(answer),), "correct")
+    if body == "The sign is wrong":
+        return one("x_sign", (-answer,), "correct")
+    if body.startswith("Your answer is upside down"):
+        return one("x_reciprocal", (1 / answer,), "correct")
+    m = re.match(r"^Your answer lacks the (factor|division by) (.+)$", body)
+    if m:
+        factors = {plain(f): f for f in sp.Mul.make_args(ref.quantity)}
+        factors |= {plain(1 / f): 1 / f for f in sp.Mul.make_args(ref.quantity)}
+        f = factors.get(m.group(2))
+        if f is None:
+            return one("x_factor", None)
+        return one("x_factor", (answer * f if m.group(1) == "factor" else answer / f,), "correct")
+    return None
 
 
 def _own_lagrangian_claims(which: str, said: str | None, sentence: str, w: Wrong, ref) -> list:
@@ -458,12 +629,12 @@ def _conserved_alone(w: Wrong, q: sp.Expr) -> bool:
 
 def answer_of(w: Wrong, exprs: tuple) -> str | list[str]:
     """The answer text of corrected forms, as the corpus prints its answers."""
-    if w.part in ("lagrangian", "T", "V"):
+    if w.part in ("lagrangian", "T", "V", "hamiltonian", "expression"):
         return plain(exprs[0])
     if w.part == "momenta":
         ref_names = [line.split(" = ")[0] for line in w.answer]
         return [f"{n} = {plain(e)}" for n, e in zip(ref_names, exprs, strict=True)]
-    if w.part == "eom":
+    if w.part in ("eom", "hamilton_equations"):
         return [f"{plain(a)} = {plain(b)}" for a, b in exprs]
     if w.part == "cyclic":
         return ", ".join(exprs) if exprs else "none"
@@ -486,15 +657,20 @@ def is_true(claim: Claim, w: Wrong, before) -> bool:
 _QUOTED = re.compile(r"([^\s,()]+) = (−?[\d.]+(?:e[−+]?\d+)?)")
 
 
-def unreproduced(sentence: str, witness: dict | None, ref: Reference) -> list[str]:
-    """The numbers a sentence quotes for a coordinate or a velocity that its witness does not
-    hold (rounded as quoted); accelerations quoted against the system's own at that state."""
+def unreproduced(
+    sentence: str, witness: dict | None, ref: Reference, values: tuple = ()
+) -> list[str]:
+    """The numbers a sentence quotes for a coordinate, a velocity or a momentum that its witness
+    does not hold (rounded as quoted); accelerations quoted against the system's own at that
+    state; the values quoted of the answer and the reference (`values`: both forms) against
+    what they are there with the student's own parameter values."""
     if "(for example" not in sentence:
         return []
     shown = {}
     for j in ref.jets:
         for dots, suffix in ((0, ""), (1, "_dot"), (2, "_ddot")):
             shown[symbol_text(j.name, dots)] = j.name + suffix
+        shown[f"p_{symbol_text(j.name)}"] = f"p_{j.name}"  # a momentum on phase space
     out = []
     tail = sentence[sentence.index("(for example") :]
     state_part, _, values_part = tail.partition(", where ")
@@ -508,6 +684,45 @@ def unreproduced(sentence: str, witness: dict | None, ref: Reference) -> list[st
             out.append(f"{sym} = {number} (witness: {got})")
     if values_part and "the reference" in values_part:
         out += _accelerations(values_part, witness or {}, ref, shown)
+    if values and " and the reference's is " in tail:
+        out += _values(tail, witness or {}, ref, values)
+    return out
+
+
+_NUMBER = r"(−?[\d.]+(?:×10[⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+)?)"
+_SUPERSCRIPT = str.maketrans("⁻⁰¹²³⁴⁵⁶⁷⁸⁹", "-0123456789")
+
+
+def _number(text: str) -> float:
+    """A number as `situation.rounded` prints it: −0.0322, 2.5×10⁻⁷."""
+    mantissa, _, power = text.replace("−", "-").partition("×10")
+    return float(mantissa) * 10 ** int(power.translate(_SUPERSCRIPT) or 0)
+
+
+def _values(tail: str, witness: dict, ref: Reference, values: tuple) -> list[str]:
+    """ ", where your T is 0.0322 J and the reference's is 0.0161 J": both sides at the quoted
+    state (the witness, as quoted) with the handout's values of the parameters (the student's
+    own variant; a parameter the witness holds at the handout's value is that value)."""
+    m = re.search(rf"where your \w+ is {_NUMBER}(?: \S+)? and the reference's is {_NUMBER}", tail)
+    if not m:
+        return []
+    handout = {s: float(ref.variant.values[n]) for n, s in ref.variant.parameter_symbols.items()}
+    state = {}
+    for j in ref.jets:
+        for sym, key in ((j.q, j.name), (j.dot, f"{j.name}_dot")):
+            if key in witness:
+                state[sym] = float(f"{witness[key]:.3g}")
+    out = []
+    for expr, quoted in zip(values, (m.group(1), m.group(2)), strict=True):
+        at = {**handout, **state, mech_t: float(f"{witness.get('t', 0.0):.3g}")}  # as quoted
+        if expr.free_symbols - set(at):
+            out.append(
+                f"{quoted} (the witness lacks {sorted(map(str, expr.free_symbols - set(at)))})"
+            )
+            continue
+        got = complex(sp.N(expr.xreplace(at)))
+        if abs(got.real - _number(quoted)) > 5e-3 * max(abs(got.real), 1e-300):
+            out.append(f"{quoted} (the variant gives {got.real:.4g})")
     return out
 
 
@@ -533,7 +748,7 @@ def _accelerations(text: str, witness: dict, ref: Reference, shown: dict) -> lis
     if acc[k].has(time):
         if "t" not in witness:
             return [f"{m.group(0)} (witness lacks t)"]
-        acc = acc.subs(time, witness["t"])  # not quoted: as the witness holds it
+        acc = acc.subs(time, float(f"{witness['t']:.3g}"))  # as quoted (or would be)
     got = float(acc[k])
     quoted = float(m.group(2).replace("−", "-"))
     if abs(got - quoted) > 5e-3 * max(abs(got), abs(quoted)):  # three figures, as quoted
@@ -553,7 +768,7 @@ def run(corpus: list[Wrong]) -> dict:
         if before.status != "incorrect":
             rows[w.part]["not wrong"] += 1
             continue
-        key = (w.problem["scene"], w.problem["seed"])
+        key = (w.problem["scene"], w.problem["seed"], w.problem.get("quantity"))
         ref = refs.setdefault(key, Reference(w.problem))
         claims = [c for s in before.feedback for c in claims_of(s, w, ref)]
         truth = [(c, is_true(c, w, before)) for c in claims]
@@ -570,15 +785,22 @@ def run(corpus: list[Wrong]) -> dict:
             row["recorded"] += 1
         else:
             row["other"] += 1
+        values = _quoted_forms(w, ref)
         for s in before.feedback:
-            for bad in unreproduced(s, dict(before.witness or {}), ref):
+            for bad in unreproduced(s, dict(before.witness or {}), ref, values):
                 numbers.append((w.problem, w.part, w.cause, bad))
                 row["numbers"] += 1
     return {"rows": rows, "false": false_claims, "numbers": numbers}
 
 
+def _quoted_forms(w: Wrong, ref: Reference) -> tuple:
+    """(the answer, the reference) of a one-expression part whose sentence quotes both values."""
+    reference = {"T": ref.T, "expression": ref.quantity}.get(w.part)
+    return () if reference is None else (w.exprs[0], reference)
+
+
 def table(rows: dict[str, Counter]) -> str:
-    head = f"{'part':<12}{'wrong':>7}{'recorded':>10}{'other':>8}{'false':>8}{'nothing':>9}"
+    head = f"{'part':<20}{'wrong':>7}{'recorded':>10}{'other':>8}{'false':>8}{'nothing':>9}"
     lines = [head + f"{'bad numbers':>13}"]
     total: Counter = Counter()
     for part in sorted(rows):
@@ -595,19 +817,21 @@ def _line(name: str, r: Counter) -> str:
         return f"{100 * r[k] / n:.0f} %"
 
     cols = "".join(f"{pc(k):>{w}}" for k, w in (("recorded", 10), ("other", 8), ("false", 8)))
-    return f"{name:<12}{r['wrong']:>7}{cols}{pc('nothing'):>9}{r['numbers']:>13}"
+    return f"{name:<20}{r['wrong']:>7}{cols}{pc('nothing'):>9}{r['numbers']:>13}"
 
 
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--seeds", default="1,2")
     ap.add_argument("--scenes", default="")
+    ap.add_argument("--parts", default="", help="only these parts (comma-separated)")
     ap.add_argument("--show-false", type=int, default=30)
     ap.add_argument("--json", default="")
     args = ap.parse_args()
     seeds = tuple(int(s) for s in args.seeds.split(","))
     scenes = tuple(args.scenes.split(",")) if args.scenes else None
-    corpus = build(seeds, scenes)
+    parts = tuple(args.parts.split(",")) if args.parts else None
+    corpus = build(seeds, scenes, parts)
     result = run(corpus)
     print(table(result["rows"]))
     by_kind = Counter(k for _, _, _, k, _ in result["false"])

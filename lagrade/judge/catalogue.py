@@ -51,6 +51,7 @@ from lagrade.judge.mutations import (
     conserved_mutants,
     expanded_terms,
     expression_mutants,
+    inertia_mutants,
     iter_term_mutants,
     kinetic_mutants,
     swap_sin_cos,
@@ -220,6 +221,7 @@ class Catalogue:
                 yield Mutant("dropped_half_all", "the ½ is missing in your T", 2 * T)
                 yield from body_mutants(self.problem.variant, T, "your T")
                 yield from kinetic_mutants(T, self.problem.jets, "your T")
+                yield from inertia_mutants(self.problem.variant, T, "your T")
                 yield Mutant(
                     "sin_cos_swapped", "sin and cos are swapped in your T", swap_sin_cos(T)
                 )

@@ -215,6 +215,32 @@ def body_mutants(variant: SceneVariant | None, T: sp.Expr, what: str) -> list[Mu
     return out
 
 
+#: The ratios of the moments of inertia students swap (Taylor §10.1–10.4): a disc's M R² for
+#: ½ M R² (2) and back (½), a rod's end 1/3 M L² for its centre 1/12 M L² (4) and back (¼), a
+#: solid sphere's 2/5 M R² for a shell's 2/3 M R² (3/5) and back (5/3).
+INERTIA_FACTORS = (
+    sp.Integer(2), sp.Rational(1, 2), sp.Integer(4), sp.Rational(1, 4),
+    sp.Rational(5, 3), sp.Rational(3, 5),
+)  # fmt: skip
+
+
+def inertia_mutants(variant: SceneVariant | None, T: sp.Expr, what: str) -> list[Mutant]:
+    """Per plane rigid body: its moment of inertia a common wrong multiple (`INERTIA_FACTORS`)
+    of the right one, so its rotational term ½ I φ̇² is that multiple too."""
+    if variant is None:
+        return []
+    out = []
+    for body in variant.bodies:
+        of = getattr(body, "rotational_energy", None)  # a plane rigid body's ½ I φ̇²
+        rotation = sp.expand(of(variant.jets)) if of is not None else sp.Integer(0)
+        if rotation == 0:
+            continue
+        for c in INERTIA_FACTORS:
+            message = f"the moment of inertia of the {body.name} in {what} is {c} × the right one"
+            out.append(Mutant("wrong_inertia", message, T, ((c - 1, rotation),), 1))
+    return out
+
+
 def momentum_mutants(
     system: LagrangianSystem,
     jets: Sequence[Jet],
@@ -430,9 +456,9 @@ def conserved_mutants(
 
 
 def expression_mutants(ref: sp.Expr) -> list[Mutant]:
-    """The usual slips with a closed-form result: sin for cos, the sign, upside down. A slip
-    that leaves the reference as it is (no sin or cos to swap) is no slip and is left out: an
-    answer equal to it would be named for a mistake it does not have."""
+    """The usual slips with a closed-form result: sin for cos, the sign, upside down, a dropped
+    factor. A slip that leaves the reference as it is (no sin or cos to swap) is no slip and is
+    left out: an answer equal to it would be named for a mistake it does not have."""
     mutants = [
         Mutant("sin_cos_swapped", "sin and cos are swapped", swap_sin_cos(ref)),
         Mutant("wrong_sign", "the sign is wrong", -ref),
@@ -442,4 +468,23 @@ def expression_mutants(ref: sp.Expr) -> list[Mutant]:
             1 / ref,
         ),
     ]
+    mutants += dropped_factor_mutants(ref)
     return [m for m in mutants if m.expr != ref]
+
+
+def dropped_factor_mutants(ref: sp.Expr) -> list[Mutant]:
+    """The closed form with one of its factors left out (the (M + m) of the wedge's
+    acceleration, a sin α, the g of √(g/l)): a factor of a product of two or more, each said as
+    the student's answer lacks it ("lacks the factor M + m", "lacks the division by l")."""
+    factors = [f for f in sp.Mul.make_args(ref) if not f.is_number]
+    if len(factors) < 2:
+        return []
+    out = []
+    for f in factors:
+        base, exponent = f.as_base_exp()
+        if exponent.is_number and exponent < 0:
+            message = f"your answer lacks the division by {plain(1 / f)}"
+        else:
+            message = f"your answer lacks the factor {plain(f)}"
+        out.append(Mutant("missing_factor", message, ref / f))
+    return out

@@ -1,8 +1,9 @@
 """A point where a wrong answer shows, told as a physical situation a student can picture:
 "at θ = 0.3 rad with the system at rest", "at θ = −2.22 rad, moving with θ̇ = 1.56 rad/s" —
-coordinates and velocities rounded to three significant figures, in rad where a coordinate is
-an angle. Parameter values are sampled over their whole domain, not the handout's numbers, so
-they are quoted only when the point has nothing else (a formula in the parameters alone)."""
+coordinates, velocities (and on phase space the momenta) rounded to three significant figures,
+in rad where a coordinate is an angle. Parameter values are sampled over their whole domain,
+not the handout's numbers, so they are quoted only when the point has nothing else (a formula
+in the parameters alone)."""
 
 from __future__ import annotations
 
@@ -14,6 +15,7 @@ import sympy as sp
 from lagrade.judge.dimensions import NONE, dimensions_of
 from lagrade.judge.dimensions import unit_text as unit_text_of
 from lagrade.judge.problem import Problem
+from lagrade.mechanics.hamilton import momentum_name
 from lagrade.notation import GREEK
 
 _LETTER = {name: letter for letter, name in GREEK.items() if name != "sigma" or letter == "σ"}
@@ -66,6 +68,11 @@ def situation(witness: Mapping[str, float], problem: Problem | None = None) -> s
         if f"{name}_ddot" in witness:
             shown = symbol_text(name, 2)
             speeding.append(_quantity(shown, witness[f"{name}_ddot"], acceleration))
+    for j in problem.jets:  # a point of phase space (H, Hamilton's equations) has momenta
+        momentum = momentum_name(j.name)
+        if momentum in witness:
+            shown = momentum_name(symbol_text(j.name))  # p_θ
+            where.append(_quantity(shown, witness[momentum], ""))
     if "t" in witness and _explicit_time(problem):
         where.append(_quantity("t", witness["t"], "s"))
     if not (where or moving or speeding):  # a formula in the parameters alone: quote them

@@ -68,9 +68,13 @@ class RigidBody:
 
     def kinetic_energy(self, jets: Sequence[mech.Jet]) -> sp.Expr:
         """T = ½ m |ṙ_cm|² + ½ I φ̇² (König's theorem for plane motion)."""
-        omega = mech.total_derivative(self.angle, jets)
         translation = sp.Rational(1, 2) * self.mass * mech.speed_squared(self.position, jets)
-        return translation + sp.Rational(1, 2) * self.inertia * omega**2
+        return translation + self.rotational_energy(jets)
+
+    def rotational_energy(self, jets: Sequence[mech.Jet]) -> sp.Expr:
+        """½ I φ̇²: the term a wrong moment of inertia changes."""
+        omega = mech.total_derivative(self.angle, jets)
+        return sp.Rational(1, 2) * self.inertia * omega**2
 
 
 @dataclass(frozen=True)

@@ -26,6 +26,7 @@ from lagrade.judge.sampling import Points
 from lagrade.judge.situation import coordinate_units, rounded, situation, symbol_text
 from lagrade.judge.tolerances import AS_TYPED, SAME_VALUE
 from lagrade.judge.verdict import Verdict
+from lagrade.mechanics import t as time
 
 #: A number as typed: 9.81, 8, 6.674e-11 (not the digits of a name such as m_1).
 _NUMBER = re.compile(r"(?<![\w.])\d+(?:\.\d+)?(?:[eE][-+]?\d+)?(?![\w.])")
@@ -151,8 +152,10 @@ def _handout_point(problem: Problem, points: Points, i: int, symbols: set) -> di
     if not symbols & motion:
         return env if handout is None else {**env, **handout}
     # the state as the sentence quotes it (three significant figures: `situation.rounded`), so
-    # that what is computed there is what a student computes from the quoted numbers
-    env.update({s: np.array([float(f"{env[s][0]:.3g}")]) for s in motion if s in env})
+    # that what is computed there is what a student computes from the quoted numbers; t too (a
+    # drive of ω = 200 rad/s turns by 10⁻³ rad between t = 2.53848 s and the quoted 2.54 s)
+    quoted = motion | {time}
+    env.update({s: np.array([float(f"{env[s][0]:.3g}")]) for s in quoted if s in env})
     return None if handout is None else {**env, **handout}
 
 

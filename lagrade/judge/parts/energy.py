@@ -229,7 +229,7 @@ def check_kinetic(problem: Problem, answer: Any, given: Mapping | None) -> Verdi
         got,
         mutant,
         "Your T is not the kinetic energy of this system",
-        witness_point(points, out, answer_c),
+        witness_point(points, out, answer_c, problem.kinetic),  # both sides' values are quoted
         method_name(out),
         problem,
         values_text(problem, points, out, answer_c, problem.kinetic, "T", "J"),
@@ -256,7 +256,7 @@ def check_potential(problem: Problem, answer: Any, given: Mapping | None) -> Ver
         got,
         mutant,
         "Your V is not the potential energy of this system (up to a constant)",
-        witness_point(points, out, answer_c),
+        witness_point(points, out, answer_c, reference),  # where the two differ
         method_name(out),
         problem,
         reference=reference,

@@ -7,8 +7,9 @@ reference system is the identity on the rates with right sides q̇ (as drawn) an
 (Lagrange's equation), so a line lies in the span of the reference rows exactly when it holds
 with the reference rates put in. The set is complete when its rows have rank 2n.
 
-Named mistakes: a sign slip in ṗ = −∂H/∂q (or in q̇ = ∂H/∂p), a second-order equation (an
-Euler–Lagrange equation, with accelerations), a line that says nothing."""
+Named mistakes: a sign slip in ṗ = −∂H/∂q (or in q̇ = ∂H/∂p), q̇ = p where q̇ = p/m (the mass
+not divided out), a second-order equation (an Euler–Lagrange equation, with accelerations), a
+line that says nothing."""
 
 from __future__ import annotations
 
@@ -28,6 +29,7 @@ from lagrade.judge.parts.phase import (
     momentum_symbols,
     phase_env,
     phase_points,
+    phase_system,
     rate_symbols,
     read_phase,
     values_at,
@@ -36,9 +38,11 @@ from lagrade.judge.parts.reading import Lines, Read, read_lines
 from lagrade.judge.problem import Problem
 from lagrade.judge.rows import equation_rows, row_rank
 from lagrade.judge.sampling import Points
+from lagrade.judge.situation import symbol_text
 from lagrade.judge.tolerances import ROUNDING, SAME_VALUE
 from lagrade.judge.verdict import Verdict, invalid
-from lagrade.mechanics import Jet
+from lagrade.mechanics import Jet, NotQuadratic
+from lagrade.notation import plain
 
 PART = "hamilton_equations"
 
@@ -135,9 +139,13 @@ def check_hamilton_equations(problem: Problem, answer: Any, given: Mapping | Non
         ans = got.sympy_compiled
         witness = witness or witness_point(phase_points(problem, points), out, ans)
         kind = _sign_slip(problem, ans, points)
+        mass = "" if kind else _mass_kept(problem, ans, points)
         if kind:
             feedback.append(f"{label}: {_SIGN[kind]}")
             mistakes.append(kind)
+        elif mass:
+            feedback.append(f"{label} {mass}")
+            mistakes.append("mass_not_divided")
         else:
             feedback.append(
                 f"{label} does not follow from H"
@@ -214,6 +222,35 @@ def _sign_slip(problem: Problem, answer: Compiled, points: Points) -> str:
                 ) and not np.allclose(changed, value):
                     return kind
     except (UnsupportedExpression, ValueError):
+        pass
+    return ""
+
+
+def _mass_kept(problem: Problem, answer: Compiled, points: Points) -> str:
+    """The sentence of q̇ = p for q̇ = p/m: the line holds, in the reference motion, with q̇_k
+    A_kk times what it is (A the mass matrix: the mass, m l², … of q_k) and not as it is; or
+    "" when no coordinate's line is that."""
+    try:
+        hs = phase_system(problem)
+        with np.errstate(all="ignore"):
+            env = _reference_rates(problem, points)
+            held = values_at(answer, env, points.n)[0]
+            for k, j in enumerate(problem.jets):
+                A_kk = hs.velocity_matrix[k, k]
+                if A_kk == 1:
+                    continue
+                mass = compiled_reference(problem, f"A{k}{k}", lambda e=A_kk: e)
+                scaled = env | {j.dot: values_at(mass, env, points.n)[0] * env[j.dot]}
+                value, size = values_at(answer, scaled, points.n)
+                if np.all(
+                    np.abs(value) <= SAME_VALUE * np.maximum(size, 1e-300)
+                ) and not np.allclose(held, value):
+                    q_dot, shown = symbol_text(j.name, 1), plain(A_kk)
+                    return (
+                        f"gives {q_dot} as {shown} times what it is: the mass ({shown}) is not "
+                        "divided out (q̇ = p/m, not p)."
+                    )
+    except (UnsupportedExpression, ValueError, NotQuadratic):
         pass
     return ""
 

@@ -9,8 +9,10 @@ The named mistakes, each a fingerprint of values at the same points:
     lagrangian        H = L = T − V written in the momenta
     velocity_is_p     each q̇ replaced by its momentum (θ̇ → p_θ instead of p_θ/(m l²))
     multiplied        each q̇ replaced by A p (the mass multiplied instead of divided)
-    missing_offset    ½ pᵀA⁻¹p + U: the shift p − c of a velocity-dependent potential (p − e A)
-                      left out
+    missing_offset    ½ pᵀA⁻¹p + U: the shift p − c of the momenta at rest (p − e A of a charge,
+                      a moving support's share) left out
+    sign_of_V         K + U − 2 V: V (free of velocities) subtracted instead of added
+    dropped_half      2 K + U: the ½ of the kinetic part left out
     energy            T + V where the scene's H is not the energy (a moving constraint)
 """
 
@@ -234,6 +236,16 @@ def _fingerprints(problem: Problem, points: Points) -> list[tuple[str, str, Call
         kinetic = 0.5 * np.einsum("ni,ni->n", p, np.linalg.solve(A, p[..., None])[..., 0])
         return kinetic + at("U", lambda: hs.effective_potential)
 
+    def dropped_half():  # 2 K + U: K = h − U at the image points
+        U = at("U", lambda: hs.effective_potential)
+        return 2 * energy_function_at(None) - U
+
+    def sign_of_V():  # K + U − 2 V: the potential (free of velocities) with the wrong sign
+        V = problem.catalogue.split.V
+        if V == 0 or any(V.has(j.dot) for j in jets):
+            return None
+        return energy_function_at(None) - 2 * at("V", lambda: V)
+
     def energy():
         if not problem.has_bodies:
             return None
@@ -249,6 +261,17 @@ def _fingerprints(problem: Problem, points: Points) -> list[tuple[str, str, Call
             lambda: at("L", lambda: problem.system.L),
         ),
         (
+            "sign_of_V",
+            "V has the wrong sign in your H: H = Σ p q̇ − L adds V.",
+            sign_of_V,
+        ),
+        (
+            "dropped_half",
+            "The ½ is missing in the kinetic part of your H (p²/(2 m) for one body; "
+            "½ (p − c)ᵀ A⁻¹ (p − c) in general).",
+            dropped_half,
+        ),
+        (
             "velocity_is_p",
             "Your H puts each momentum where its velocity was (q̇ = p); solve p = ∂L/∂q̇ for the "
             "velocities instead.",
@@ -262,8 +285,9 @@ def _fingerprints(problem: Problem, points: Points) -> list[tuple[str, str, Call
         ),
         (
             "missing_offset",
-            f"Your H lacks the shift of the momenta by the velocity-dependent potential: it is "
-            f"written in ({p_names}) where H needs p − c (p − e A for a charge).",
+            f"Your H lacks the shift of the momenta by the part they have at rest (c = ∂L/∂q̇ "
+            f"at q̇ = 0: e A for a charge, the share of a moving support or frame): it is "
+            f"written in ({p_names}) where H needs p − c.",
             missing_offset,
         ),
         (
