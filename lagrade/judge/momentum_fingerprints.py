@@ -224,7 +224,11 @@ class MomentumFingerprints:
         admits: Callable[[int], bool] | None = None,
     ) -> Mutant | None:
         """The first kept mistake with the answer's values (`matching.first_plain`) that
-        `admits` (given the mistake's index) lets be said."""
+        `admits` (given the mistake's index) lets be said. When it admits none of them, a
+        mistake of p_k's own terms that `kept` left out as a duplicate of one it refused is
+        still true: a doubled m ẏ in the charged particle's p_y = m ẏ + e B x is the p_y of
+        "the ½ is missing in T", refused when the other momenta are right, and is "the term
+        m ẏ in your p_y is twice too large"."""
         assert points is self.points, "momentum mistakes are matched at the momenta part's points"
         kept = self.kept
         if not len(kept):
@@ -232,11 +236,23 @@ class MomentumFingerprints:
         a, sa = answer
         with np.errstate(all="ignore"):
             ok = vanish_rows(a - self.values[kept], sa + self.sizes[kept])
-        for hit in np.flatnonzero(ok):
-            m = int(kept[hit])
+        hits = [int(kept[hit]) for hit in np.flatnonzero(ok)]
+        for m in hits:
             if admits is None or admits(m):
                 return self.mutant(m)
-        return None
+        if not hits or len(self._terms) < 2:  # one term scaled: the part says "p is twice …"
+            return None
+        # the mistakes of p_k's own terms (a sentence about L says more than p_k shows)
+        duplicates = [
+            m
+            for m in range(len(self.specs))
+            if m not in set(kept.tolist()) and self.specs[m][3][0] != "lagrangian"
+        ]
+        if not duplicates:
+            return None
+        with np.errstate(all="ignore"):
+            same = vanish_rows(a - self.values[duplicates], sa + self.sizes[duplicates])
+        return next((self.mutant(m) for m, hit in zip(duplicates, same, strict=True) if hit), None)
 
     def lagrangian_source(self, m: int) -> int | None:
         """The Lagrangian mistake that mistake m is the p_k of, or None."""

@@ -146,3 +146,14 @@ def test_a_mistake_of_l_seen_in_every_momentum_is_said_once():
     )
     assert verdict.feedback == ("The ½ is missing in the kinetic energy.",)
     assert verdict.mistakes == ("dropped_half_all",)
+
+
+def test_one_term_of_a_momentum_doubled_is_named_where_the_half_of_t_is_refused():
+    """p_y = m ẏ + e B x with m ẏ doubled: the p_y of "the ½ is missing in T" (the other
+    momenta right, so that is not said), and the term's own mistake is named instead."""
+    from lagrade.judge.driver import judge as judged
+
+    answer = ["p_x = m*x_dot", "p_y = B*e*x + 2*m*y_dot", "p_z = m*z_dot"]
+    verdict = judged({"scene": "charged_particle"}, "momenta", answer)
+    assert verdict.feedback == ("The term m*y_dot in your p_y is twice too large.",)
+    assert verdict.mistakes == ("factor_two",)

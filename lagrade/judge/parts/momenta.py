@@ -155,6 +155,8 @@ def check_momenta(problem: Problem, answer: Any, given: Mapping | None) -> Verdi
             else:
                 said = f"is {derivative} {factor}" if factor else f"is not {derivative}"
             feedback.append(f"p_{j.name} {said}{where}.")
+            if factor:  # a named mistake, as the catalogue's kinds name it
+                mistakes.append(_FACTOR_KINDS[factor.split()[0]])
         dimensions = hint_for(problem, by_coordinate[k], f"momentum:{k}") if tells(mutant) else ""
         if dimensions:
             feedback.append(f"p_{j.name}: {dimensions[0].lower()}{dimensions[1:]}")
@@ -216,6 +218,14 @@ def _factors(momentum: sp.Expr) -> list[sp.Expr]:
 
 #: A momentum that is a number times ∂L/∂q̇, and how `_factor_text` says so.
 _NUMBERS = ((2.0, "twice"), (0.5, "half"), (-1.0, "minus"))
+#: The mistake kind each sentence of `_factor_text` names, by its first word.
+_FACTOR_KINDS = {
+    "twice": "factor_two",
+    "half": "factor_half",
+    "minus": "wrong_sign",
+    "without": "missing_factor",
+    "with": "extra_factor",
+}
 
 
 def _factor_text(problem: Problem, k: int, ans: Compiled, points) -> str:
