@@ -447,15 +447,14 @@ def claims_of(sentence: str, w: Wrong, ref: Reference) -> list[Claim]:
 def _energy_claims(body: str, w: Wrong, ref: Reference, one) -> list | None:
     """The T part's sentence of a wrong moment of inertia: the body's rotational term ½ I φ̇²
     taken c times; its correction takes (c − 1) of it away."""
-    m = re.match(
-        r"^[Tt]he moment of inertia of the (\w+) in your T is (\S+) × the right one$", body
-    )
+    m = re.match(r"^[Tt]he moment of inertia of the (\w+) in your T is (.+?) the right one$", body)
     if m is None:
         return None
     rotation = ref.body_rotation(m.group(1))
     if rotation is None:
         return one("wrong_inertia", None)
-    c = sp.Rational(m.group(2))
+    words = {"twice": "2", "half": "1/2", "four times": "4"}
+    c = sp.Rational(words.get(m.group(2), m.group(2).removesuffix(" times")))
     return one("wrong_inertia", (w.exprs[0] - (c - 1) * rotation,), "correct")
 
 

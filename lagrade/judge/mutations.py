@@ -224,6 +224,10 @@ INERTIA_FACTORS = (
 )  # fmt: skip
 
 
+#: How a sentence says a ratio: "twice the right one", "5/3 times the right one".
+_RATIO_WORDS = {sp.Integer(2): "twice", sp.Rational(1, 2): "half", sp.Integer(4): "four times"}
+
+
 def inertia_mutants(variant: SceneVariant | None, T: sp.Expr, what: str) -> list[Mutant]:
     """Per plane rigid body: its moment of inertia a common wrong multiple (`INERTIA_FACTORS`)
     of the right one, so its rotational term ½ I φ̇² is that multiple too."""
@@ -236,7 +240,8 @@ def inertia_mutants(variant: SceneVariant | None, T: sp.Expr, what: str) -> list
         if rotation == 0:
             continue
         for c in INERTIA_FACTORS:
-            message = f"the moment of inertia of the {body.name} in {what} is {c} × the right one"
+            ratio = _RATIO_WORDS.get(c, f"{c} times")
+            message = f"the moment of inertia of the {body.name} in {what} is {ratio} the right one"
             out.append(Mutant("wrong_inertia", message, T, ((c - 1, rotation),), 1))
     return out
 

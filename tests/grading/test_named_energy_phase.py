@@ -30,7 +30,7 @@ def test_a_disc_with_m_r_squared_names_its_moment_of_inertia_and_the_fix_is_righ
     verdict = judge(CYLINDER, "T", "m*q_dot^2")  # I = m R² for ½ m R²: 3/4 → 1
     assert verdict.mistakes == ("wrong_inertia",)
     assert verdict.feedback[0].startswith(
-        "The moment of inertia of the cylinder in your T is 2 × the right one"
+        "The moment of inertia of the cylinder in your T is twice the right one"
     )
     assert judge(CYLINDER, "T", "3*m*q_dot^2/4").status == "correct"
 
@@ -39,7 +39,7 @@ def test_a_rod_about_its_end_names_the_factor_four():
     # a ladder's I = 1/12 m l² taken as 1/3 m l²: T = m l² θ̇²/8 + m l² θ̇²/6
     verdict = judge(LADDER, "T", "7*l^2*m*theta_dot^2/24")
     assert verdict.mistakes == ("wrong_inertia",)
-    assert "is 4 × the right one" in verdict.feedback[0]
+    assert "is four times the right one" in verdict.feedback[0]
 
 
 def test_a_t_wrong_otherwise_names_no_moment_of_inertia():
