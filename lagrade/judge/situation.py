@@ -15,7 +15,7 @@ import sympy as sp
 from lagrade.judge.dimensions import NONE, dimensions_of
 from lagrade.judge.dimensions import unit_text as unit_text_of
 from lagrade.judge.problem import Problem
-from lagrade.mechanics.hamilton import momentum_name
+from lagrade.mechanics import momentum_name
 from lagrade.notation import GREEK
 
 _LETTER = {name: letter for letter, name in GREEK.items() if name != "sigma" or letter == "σ"}
