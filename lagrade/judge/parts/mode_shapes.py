@@ -33,6 +33,7 @@ from lagrade.judge.parts.oscillation import (
     _slip,
     _stable,
     _value_echo,
+    first_point,
     oscillation_points,
     reference_frequencies,
 )
@@ -43,6 +44,8 @@ from lagrade.judge.tolerances import ROUNDING, SAME_MODE
 from lagrade.judge.verdict import Verdict, invalid, unreadable_line
 from lagrade.mechanics import ZERO_MODE
 
+#: Where the frequencies a sentence quotes are computed (the verdict's witness holds it).
+FIRST_POINT = "at the first point drawn"
 #: How a line is written, for the messages.
 FORMAT = "omega = frequency: (a_1, a_2, …)"
 _BRACKETS = (("\\left(", "\\right)"), ("\\left[", "\\right]"), ("(", ")"), ("[", "]"))
@@ -280,7 +283,7 @@ def check_mode_shapes(problem: Problem, answer: Any, given: Mapping | None) -> V
         if other is not None:
             feedback.append(
                 f"{mode.echo}: this is the shape of the mode at ω = "
-                f"{rounded(float(ref[0, other]))} rad/s (at the first point drawn), not of "
+                f"{rounded(float(ref[0, other]))} rad/s ({FIRST_POINT}), not of "
                 f"ω = {rounded(float(ref[0, k[0]]))}."
             )
             mistakes.append("swapped")
@@ -299,6 +302,7 @@ def check_mode_shapes(problem: Problem, answer: Any, given: Mapping | None) -> V
         feedback.append(f"{missing} normal {noun} missing ({len(modes)} in all).")
         mistakes.append("missing_mode")
     correct = right == len(modes) and not wrong and not feedback
+    quoted = any(FIRST_POINT in f for f in feedback)
     return Verdict(
         "mode_shapes",
         "correct" if correct else "incorrect",
@@ -306,6 +310,7 @@ def check_mode_shapes(problem: Problem, answer: Any, given: Mapping | None) -> V
         tuple(feedback),
         lines.echoes,
         "numeric",
+        witness=first_point(problem, points) if quoted else None,
         mistakes=tuple(mistakes),
     )
 
@@ -313,8 +318,7 @@ def check_mode_shapes(problem: Problem, answer: Any, given: Mapping | None) -> V
 def _no_frequency(ref: np.ndarray, modes: list[int]) -> str:
     shown = ", ".join(rounded(float(w)) for w in ref[0, modes])
     return (
-        "this is not a normal-mode frequency (at the first point drawn, the frequencies are "
-        f"{shown} rad/s)."
+        f"this is not a normal-mode frequency ({FIRST_POINT}, the frequencies are {shown} rad/s)."
     )
 
 
