@@ -141,8 +141,13 @@ def oscillation_claims(body: str, w, ref, one) -> list | None:
     if w.part not in ("normal_modes", "mode_shapes"):
         return None
     osc = variant_oscillations(ref.variant)
-    values = {ref.variant.parameter_symbols[n]: x for n, x in ref.variant.values.items()}
-    modes = [float(x) for x in osc.numeric_frequencies() if x > 0]
+    # a generic point near the handout's values (where two frequencies may coincide: k = k_z
+    # makes k_z/m equal to √(k_z/m) at m = 1)
+    values = {
+        ref.variant.parameter_symbols[n]: x * (1 + 0.03 * (i + 1))
+        for i, (n, x) in enumerate(sorted(ref.variant.values.items()))
+    }
+    modes = [float(x) for x in osc.numeric_frequencies(values) if x > 0]
     freq = [x if w.part == "normal_modes" else x[0] for x in w.exprs]
     given = [float(sp.N(f.xreplace(values))) for f in freq]
 
@@ -166,7 +171,7 @@ def oscillation_claims(body: str, w, ref, one) -> list | None:
             return one(kind, None, also=lambda f=f: one_is(f))
     m = re.search(r"this is √\(K/M\) of (\S+) alone", body)
     if m:
-        K, M = osc.numeric(osc.stable)
+        K, M = osc.numeric(osc.stable, values)
         alone = [float(np.sqrt(K[k, k] / M[k, k])) for k in range(len(K)) if K[k, k] > 0]
         return one(
             "uncoupled",
@@ -192,8 +197,8 @@ def oscillation_claims(body: str, w, ref, one) -> list | None:
 def _some_vector(w, ref, osc, values, kind: str) -> bool:
     """Some line's vector is another mode's shape (`swapped`) or an eigenvector of K alone and
     no mode's shape (`K`), at the handout's values."""
-    K, M = osc.numeric(osc.stable)
-    lam = [m**2 for m in osc.numeric_frequencies() if m > 0]
+    K, M = osc.numeric(osc.stable, values)
+    lam = [m**2 for m in osc.numeric_frequencies(values) if m > 0]
     for omega, vector in w.exprs:
         a = np.array([float(sp.N(sp.S(x).xreplace(values))) for x in vector])
         own = float(sp.N(omega.xreplace(values))) ** 2
