@@ -34,7 +34,9 @@ import sympy as sp
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 sys.path.insert(0, str(ROOT / "benchmarks" / "corpus"))
+sys.path.insert(0, str(ROOT / "benchmarks"))
 
+from claims_more import oscillation_claims, quoted_frequencies, setup_claims  # noqa: E402
 from mistakes import Wrong, build  # noqa: E402
 
 from lagrade.bank.registry import get_scene  # noqa: E402
@@ -92,6 +94,28 @@ NAMES = {
     "X_sin_cos": {"x_swap"},
     "X_upside_down": {"x_reciprocal"},
     "X_dropped_factor": {"x_factor"},
+    # the set-up parts
+    "DOF_no_constraints": {"no_constraints"},
+    "DOF_planarity": {"forgot_planarity"},
+    "COORD_velocity": {"velocity_named"},
+    "COORD_missing": {"coordinate_missing"},
+    "TR_term_sign": {"term_sign", "line_sign"},
+    "TR_sin_cos": {"line_swap", "term_swap"},
+    "TR_dropped_term": {"missing_term"},
+    # a length doubled is its term twice; a length for another is named as such
+    "TR_wrong_length": {"wrong_length", "term_factor"},
+    # small oscillations
+    "EQ_unstable": {"unstable"},
+    "EQ_wrong_angle": {"not_equilibrium"},
+    "EQ_term_sign": {"not_equilibrium"},
+    "NM_squared": {"squared"},
+    "NM_missing": {"missing_mode"},
+    "NM_uncoupled": {"uncoupled"},
+    "NM_cycles": {"cycles"},
+    "NM_factor_two": {"factor_two", "factor_half"},
+    "MS_swapped": {"swapped"},
+    "MS_K_alone": {"mass_ignored"},
+    "MS_missing": {"missing_mode"},
 }
 
 
@@ -275,6 +299,11 @@ def claims_of(sentence: str, w: Wrong, ref: Reference) -> list[Claim]:
         Claim(kind, sentence, corrected, needs, also)
     ]
 
+    found = setup_claims(body, w, ref, one)
+    if found is None:
+        found = oscillation_claims(body, w, ref, one)
+    if found is not None:
+        return found
     if re.match(r"^Your L adds V instead of subtracting it", body):
         return one("sign_of_V", (w.exprs[0] - 2 * ref.V,), "correct")
     if body.startswith("Your V has the wrong sign"):
@@ -637,6 +666,10 @@ def answer_of(w: Wrong, exprs: tuple) -> str | list[str]:
         return [f"{plain(a)} = {plain(b)}" for a, b in exprs]
     if w.part == "cyclic":
         return ", ".join(exprs) if exprs else "none"
+    if w.part == "coordinates":
+        return ", ".join(exprs)
+    if w.part == "transformation":
+        return [f"{name} = {plain(e)}" for name, e in exprs]
     return [plain(q) for q in exprs]
 
 
@@ -663,6 +696,8 @@ def unreproduced(
     does not hold (rounded as quoted); accelerations quoted against the system's own at that
     state; the values quoted of the answer and the reference (`values`: both forms) against
     what they are there with the student's own parameter values."""
+    if "at the first point drawn" in sentence:
+        return quoted_frequencies(sentence, witness, ref)
     if "(for example" not in sentence:
         return []
     shown = {}

@@ -31,6 +31,10 @@ says which cause it motivates; cited from memory of the texts, not checked again
   equations, a cyclic coordinate claimed where L depends on it): the course pages at
   ocw.mit.edu, cited from memory.
 
+The set-up parts (`dof`, `coordinates`, `transformation`) and the small-oscillation parts
+(`equilibrium`, `normal_modes`, `mode_shapes`) are made in `mistakes_setup.py` and
+`mistakes_oscillation.py`, which cite their own sources.
+
 Nothing here parses student text: the answers are sympy expressions made from the reference and
 printed with lagrade's own printer, and a correction (in claims.py) is applied to them the same
 way.
@@ -378,6 +382,16 @@ MAKERS = {
     "hamiltonian,hamilton_equations": phase_answers,
     "expression": expression_answers,
 }
+
+# the set-up and small-oscillation parts, in modules of their own (each imports `Wrong` above)
+from mistakes_oscillation import SOURCES as _OSCILLATION_SOURCES  # noqa: E402
+from mistakes_oscillation import oscillation_answers  # noqa: E402
+from mistakes_setup import SOURCES as _SETUP_SOURCES  # noqa: E402
+from mistakes_setup import setup_answers  # noqa: E402
+
+MAKERS["dof,coordinates,transformation"] = setup_answers
+MAKERS["equilibrium,normal_modes,mode_shapes"] = oscillation_answers
+SOURCES |= _SETUP_SOURCES | _OSCILLATION_SOURCES
 
 
 def build(

@@ -36,4 +36,8 @@ def check_coordinates(problem: Problem, answer: Any, given: Mapping | None) -> V
     if velocities:
         shown = ", ".join(velocities)
         feedback.append(f"A coordinate's velocity or acceleration is not a coordinate ({shown}).")
+    missing = [name for name in wanted if name not in right]
+    if missing and len(right) == len(named):
+        # said only where adding them makes the list right: every name given is a coordinate
+        feedback.append(f"Your list lacks {', '.join(missing)}.")
     return Verdict("coordinates", "incorrect", 0.0, tuple(feedback), ", ".join(named), "exact")

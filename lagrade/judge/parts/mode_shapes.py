@@ -33,16 +33,19 @@ from lagrade.judge.parts.oscillation import (
     _slip,
     _stable,
     _value_echo,
+    first_point,
     oscillation_points,
     reference_frequencies,
 )
 from lagrade.judge.parts.reading import Read, Unreadable, read, read_labelled
 from lagrade.judge.problem import Problem
 from lagrade.judge.situation import rounded
-from lagrade.judge.tolerances import ROUNDING, SAME_MODE
+from lagrade.judge.tolerances import ROUNDING, SAME_FREQUENCY, SAME_MODE
 from lagrade.judge.verdict import Verdict, invalid, unreadable_line
 from lagrade.mechanics import ZERO_MODE
 
+#: Where the frequencies a sentence quotes are computed (the verdict's witness holds it).
+FIRST_POINT = "at the first point drawn"
 #: How a line is written, for the messages.
 FORMAT = "omega = frequency: (a_1, a_2, …)"
 _BRACKETS = (("\\left(", "\\right)"), ("\\left[", "\\right]"), ("(", ")"), ("[", "]"))
@@ -204,11 +207,28 @@ def check_mode_shapes(problem: Problem, answer: Any, given: Mapping | None) -> V
     right = wrong = 0
     accepted: list[tuple[np.ndarray, np.ndarray]] = []  # (a, λ) of each mode credited
 
-    def fits(a: np.ndarray, lam: np.ndarray) -> bool:
-        """(K − λ M) a = 0 at every point, relative to the terms' size."""
+    def fits_at(a: np.ndarray, lam: np.ndarray) -> np.ndarray:
+        """(K − λ M) a = 0 at each point, relative to the terms' size."""
         r = np.einsum("pij,pj->pi", K - lam[:, None, None] * M, a)
         scale = (size[0] + np.abs(lam) * size[1]) * np.linalg.norm(a, axis=1)
-        return bool(np.all(np.linalg.norm(r, axis=1) <= SAME_MODE * scale))
+        return np.linalg.norm(r, axis=1) <= SAME_MODE * scale
+
+    def fits(a: np.ndarray, lam: np.ndarray) -> bool:
+        return bool(np.all(fits_at(a, lam)))
+
+    def other_mode(a: np.ndarray, lam: np.ndarray) -> int | None:
+        """The mode (at the first point) whose shape `a` is at every point, of a frequency
+        other than λ's: matched point by point, as the frequencies' order changes between
+        draws; None when at some point it is no other mode's shape."""
+        found = np.zeros(points.n, dtype=bool)
+        first = None
+        for j in modes:
+            other = np.abs(ref[:, j] ** 2 - lam) > SAME_FREQUENCY * np.abs(lam)
+            here = other & fits_at(a, ref[:, j] ** 2)
+            if first is None and here[0]:
+                first = j
+            found |= here
+        return first if np.all(found) else None
 
     for mode in lines.modes:
         if len(mode.vector) != len(names):
@@ -276,15 +296,16 @@ def check_mode_shapes(problem: Problem, answer: Any, given: Mapping | None) -> V
             right += 1
             continue
         wrong += 1
-        other = next((j for j in modes if fits(a, ref[:, j] ** 2)), None)
+        other = other_mode(a, lam)
         if other is not None:
             feedback.append(
                 f"{mode.echo}: this is the shape of the mode at ω = "
-                f"{rounded(float(ref[0, other]))} rad/s (at the first point drawn), not of "
+                f"{rounded(float(ref[0, other]))} rad/s ({FIRST_POINT}), not of "
                 f"ω = {rounded(float(ref[0, k[0]]))}."
             )
             mistakes.append("swapped")
-        elif _eigenvector_of_K(K, a):
+        elif _eigenvector_of_K(K, a) and not any(fits_at(a, ref[:, j] ** 2)[0] for j in modes):
+            # K's eigenvector that is no mode's shape: so the masses were left out
             feedback.append(
                 f"{mode.echo}: this is an eigenvector of K alone; the modes solve "
                 "K a = ω² M a, with the mass matrix M."
@@ -299,6 +320,7 @@ def check_mode_shapes(problem: Problem, answer: Any, given: Mapping | None) -> V
         feedback.append(f"{missing} normal {noun} missing ({len(modes)} in all).")
         mistakes.append("missing_mode")
     correct = right == len(modes) and not wrong and not feedback
+    quoted = any(FIRST_POINT in f for f in feedback)
     return Verdict(
         "mode_shapes",
         "correct" if correct else "incorrect",
@@ -306,6 +328,7 @@ def check_mode_shapes(problem: Problem, answer: Any, given: Mapping | None) -> V
         tuple(feedback),
         lines.echoes,
         "numeric",
+        witness=first_point(problem, points) if quoted else None,
         mistakes=tuple(mistakes),
     )
 
@@ -313,8 +336,7 @@ def check_mode_shapes(problem: Problem, answer: Any, given: Mapping | None) -> V
 def _no_frequency(ref: np.ndarray, modes: list[int]) -> str:
     shown = ", ".join(rounded(float(w)) for w in ref[0, modes])
     return (
-        "this is not a normal-mode frequency (at the first point drawn, the frequencies are "
-        f"{shown} rad/s)."
+        f"this is not a normal-mode frequency ({FIRST_POINT}, the frequencies are {shown} rad/s)."
     )
 
 

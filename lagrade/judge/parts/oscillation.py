@@ -14,7 +14,10 @@ Both are judged by physics at sample points of the parameters, never by the key'
 The parameters are drawn where the key's equilibrium exists and is stable (a hoop's off-axis
 one needs ω² R > g); when the frequencies have no closed form the handout's values alone are
 used. Named mistakes: an unstable equilibrium, a point that is no equilibrium, ω² for ω, the
-frequency in cycles (ω/2π) or the period (2π/ω) for ω, a frequency of no mode."""
+frequency in cycles (ω/2π) or the period (2π/ω) for ω, √2 ω or ω/√2 (a ½ of T or V lost),
+one coordinate's frequency alone √(K_kk/M_kk) (the coupling ignored), a frequency of no mode.
+Frequencies a sentence quotes are at the first point drawn, which the verdict's witness
+holds."""
 
 from __future__ import annotations
 
@@ -34,7 +37,7 @@ from lagrade.judge.parts.items import list_items, without_none
 from lagrade.judge.parts.reading import Lines, Read, read, read_labelled, read_lines
 from lagrade.judge.problem import Problem
 from lagrade.judge.sampling import Points, seed_for
-from lagrade.judge.situation import rounded
+from lagrade.judge.situation import rounded, symbol_text
 from lagrade.judge.tolerances import ROUNDING, SAME_FREQUENCY
 from lagrade.judge.verdict import Verdict, invalid
 from lagrade.mechanics import (
@@ -249,7 +252,7 @@ def check_equilibrium(problem: Problem, answer: Any, given: Mapping | None) -> V
             + where_text(witness, problem)
             + "."
         )
-        return _wrong(feedback, lines.echoes, "not_equilibrium", out.method)
+        return _wrong(feedback, lines.echoes, "not_equilibrium", out.method, witness)
     with np.errstate(all="ignore"):
         env = env_at(FLOAT)
         K = _matrix_at(compiled["hessian"], env, points.n)
@@ -272,10 +275,17 @@ def _value_echo(got: Read) -> str:
     return echo.split("=", 1)[1].strip() if "=" in echo else echo
 
 
-def _wrong(feedback, echoes, kind: str, method: str = "numeric") -> Verdict:
+def _wrong(feedback, echoes, kind: str, method: str = "numeric", witness=None) -> Verdict:
     mistakes = (kind,) if kind else ()
     return Verdict(
-        "equilibrium", "incorrect", 0.0, tuple(feedback), echoes, method, mistakes=mistakes
+        "equilibrium",
+        "incorrect",
+        0.0,
+        tuple(feedback),
+        echoes,
+        method,
+        witness=witness,
+        mistakes=mistakes,
     )
 
 
@@ -299,6 +309,7 @@ def check_normal_modes(problem: Problem, answer: Any, given: Mapping | None) -> 
     feedback, mistakes = lines.feedback(), []
     used = np.zeros(ref.shape, dtype=bool)
     right = wrong = 0
+    quoted = False  # a sentence quotes the frequencies at the first point drawn
     for got in lines.reads:
         _parameters_only(problem, got, "A frequency")
         try:
@@ -319,18 +330,23 @@ def check_normal_modes(problem: Problem, answer: Any, given: Mapping | None) -> 
             continue
         wrong += 1
         kind = _slip(value, ref, modes)
+        alone = "" if kind else uncoupled(problem, value, points)
         if kind:
             feedback.append(f"{got.echo}: {_SLIPS[kind]}")
             mistakes.append(kind)
         elif _mode(value, ref, modes, np.zeros(ref.shape, dtype=bool)):
             feedback.append(f"{got.echo} is a normal-mode frequency given twice.")
             mistakes.append("repeated")
+        elif alone:
+            feedback.append(f"{got.echo}: {uncoupled_text(alone)}")
+            mistakes.append("uncoupled")
         else:
             shown = ", ".join(rounded(float(w)) for w in ref[0, modes])
             feedback.append(
                 f"{got.echo} is not a normal-mode frequency (at the first point drawn, "
                 f"the frequencies are {shown} rad/s)."
             )
+            quoted = True
     missing = len(modes) - right
     if missing and not wrong:
         noun = "frequency is" if missing == 1 else "frequencies are"
@@ -347,7 +363,37 @@ def check_normal_modes(problem: Problem, answer: Any, given: Mapping | None) -> 
         tuple(feedback),
         lines.echoes,
         "numeric",
+        witness=first_point(problem, points) if quoted else None,
         mistakes=tuple(mistakes),
+    )
+
+
+def first_point(problem: Problem, points: Points) -> dict[str, float]:
+    """The parameter values of the first point drawn, where a sentence quotes frequencies (the
+    verdict's witness, so that every number quoted can be reproduced)."""
+    return points.point(0, set(problem.domains))
+
+
+def uncoupled(problem: Problem, value: np.ndarray, points: Points) -> str:
+    """The coordinate q_k whose frequency alone, √(K_kk/M_kk) (the others held fixed), `value`
+    equals at every point; "" when none. Said only of a value that is no mode's frequency."""
+    compiled = _matrices(problem)
+    with np.errstate(all="ignore"):
+        K = _matrix_at(compiled["K"], points.env, points.n)
+        M = _matrix_at(compiled["M"], points.env, points.n)
+        if len(problem.jets) < 2:
+            return ""
+        for k, jet in enumerate(problem.jets):
+            alone = np.sqrt(K[:, k, k] / M[:, k, k])
+            if np.all(alone > 0) and np.all(np.abs(value - alone) <= SAME_FREQUENCY * alone):
+                return jet.name
+    return ""
+
+
+def uncoupled_text(name: str) -> str:
+    return (
+        f"this is √(K/M) of {symbol_text(name)} alone, the frequency if the other coordinates "
+        "were held fixed; they are coupled, so the modes solve K a = ω² M a."
     )
 
 
@@ -377,19 +423,28 @@ _SLIPS = {
     "squared": "this is ω², not the angular frequency ω.",
     "cycles": "this is the frequency ω/2π in cycles per second; the question asks for ω.",
     "period": "this is the period 2π/ω, not the angular frequency ω.",
+    "factor_two": "this is √2 times a normal-mode frequency: its ω² is twice what it should be.",
+    "factor_half": "this is a normal-mode frequency divided by √2: its ω² is half what it "
+    "should be.",
 }
 
 
 def _slip(value: np.ndarray, ref: np.ndarray, modes: list[int]) -> str:
+    """The slip whose f(ω) of some mode `value` is at every point, matched point by point as
+    `_mode` matches (the frequencies' order changes between draws: k < k_z in one, k > k_z in
+    the next)."""
     for kind, f in (
         ("squared", lambda w: w**2),
         ("cycles", lambda w: w / (2 * np.pi)),
         ("period", lambda w: 2 * np.pi / w),
+        ("factor_two", lambda w: np.sqrt(2) * w),
+        ("factor_half", lambda w: w / np.sqrt(2)),
     ):
-        for k in modes:
-            target = f(ref[:, k])
-            if np.all(np.abs(value - target) <= SAME_FREQUENCY * np.abs(target)):
-                return kind
+        with np.errstate(all="ignore"):
+            target = f(ref[:, modes])  # (points, modes)
+            near = np.abs(value[:, None] - target) <= SAME_FREQUENCY * np.abs(target)
+        if np.all(np.any(near, axis=1)):
+            return kind
     return ""
 
 

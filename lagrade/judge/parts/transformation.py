@@ -4,6 +4,8 @@ right when they satisfy the constraints identically and have full rank."""
 from __future__ import annotations
 
 from collections.abc import Mapping
+from dataclasses import dataclass
+from functools import partial
 from typing import Any
 
 import numpy as np
@@ -11,7 +13,7 @@ import sympy as sp
 
 from lagrade.errors import ParseError, RequestError
 from lagrade.judge.compiled import Compiled
-from lagrade.judge.decision import decide
+from lagrade.judge.decision import Decision, decide
 from lagrade.judge.derivatives import gradient
 from lagrade.judge.evaluate import FLOAT
 from lagrade.judge.parts.common import (
@@ -21,9 +23,11 @@ from lagrade.judge.parts.common import (
 )
 from lagrade.judge.parts.items import list_items
 from lagrade.judge.parts.reading import Lines, Read, read, read_lines
+from lagrade.judge.parts.transformation_slips import transformation_slips
 from lagrade.judge.problem import NEEDS_BODIES, Problem
 from lagrade.judge.rows import row_rank
 from lagrade.judge.sampling import Points
+from lagrade.judge.tolerances import DIFFERENT_ABOVE
 from lagrade.judge.verdict import Verdict, invalid
 from lagrade.notation import plain
 
@@ -105,12 +109,76 @@ def _judged(problem: Problem, answer: Any, given_pos: dict[str, sp.Expr]) -> Ver
                 echoes,
                 "exact",
             )
+    points = problem.points("transformation")
+    failures, outcomes = _violations(problem, given_pos, points)
+    rank = _transformation_rank(problem, list(given_pos.values()), points)
+    n = len(problem.jets)
+    feedback, mistakes = unread, []
+    # one point for every sentence, so that the verdict's witness reproduces each: the first
+    # violation's, quoted again for a later constraint only where that one fails there too
+    first = failures[0].where if failures else None
+    witness = witness_point(points, failures[0].decision, *given_pos.values()) if failures else None
+    for f in failures:
+        here = where_text(witness, problem) if f.fails_at(first) else ""
+        feedback.append(f"Your positions violate the constraint {f.shown}{here}.")
+        mistakes.append("violates_constraint")
+    if rank < n:
+        feedback.append(
+            f"Your positions depend on only {rank} independent combination(s) of the "
+            f"{n} coordinates; the map must have full rank."
+        )
+        mistakes.append("rank_deficient")
+    if failures or rank < n:
+        for slip in transformation_slips(
+            problem, given_pos, points, partial(valid_positions, problem)
+        ):
+            feedback.append(f"{slip.sentence}.")
+            mistakes.append(slip.kind)
+    if not feedback:
+        return Verdict("transformation", "correct", 1.0, (), echoes, method_name(*outcomes))
+    total = max(1, len(outcomes))
+    score = 0.0 if rank < n else 0.5 * (total - len(failures)) / total
+    return Verdict(
+        "transformation",
+        "incorrect",
+        score,
+        tuple(feedback),
+        echoes,
+        method_name(*outcomes),
+        witness=witness,
+        mistakes=tuple(mistakes),
+    )
+
+
+@dataclass(frozen=True)
+class Violation:
+    """A constraint the positions do not satisfy: how it is shown, the decision (its `where`
+    is the point quoted) and the residual ratio at every point."""
+
+    shown: str
+    decision: Decision
+    ratio: np.ndarray
+
+    @property
+    def where(self) -> int | None:
+        return self.decision.where
+
+    def fails_at(self, i: int | None) -> bool:
+        """Whether the constraint clearly fails at point i (quoted there)."""
+        return i is not None and (i == self.where or bool(self.ratio[i] > DIFFERENT_ABOVE))
+
+
+def _violations(
+    problem: Problem, positions: Mapping[str, sp.Expr], points: Points
+) -> tuple[list[Violation], list[Decision]]:
+    """The scene's constraints that `positions` (`x_bob` → expression) violate, and every
+    constraint's decision."""
+    v = problem.variant
     cart = {}
     for b in v.bodies:
         for axis, sym in vars(getattr(v.cartesian, b.name)).items():
-            cart[sym] = given_pos.get(f"{axis}_{b.name}", sp.S.Zero)
+            cart[sym] = positions.get(f"{axis}_{b.name}", sp.S.Zero)
     compiled_pos = {s: Compiled.of(e) for s, e in cart.items()}
-    points = problem.points("transformation")
     failures, outcomes = [], []
     for label, f in v.constraints:
         if f == 0:
@@ -137,33 +205,20 @@ def _judged(problem: Problem, answer: Any, given_pos: dict[str, sp.Expr]) -> Ver
         outcomes.append(out)
         if not out.equal:
             shown = "z = 0 (motion in the x-y plane)" if label != "declared" else f"{plain(f)} = 0"
-            failures.append((shown, witness_point(points, out, *given_pos.values())))
-    rank = _transformation_rank(problem, list(given_pos.values()), points)
-    n = len(problem.jets)
-    feedback, mistakes = unread, []
-    for shown, w in failures:
-        feedback.append(f"Your positions violate the constraint {shown}{where_text(w, problem)}.")
-        mistakes.append("violates_constraint")
-    if rank < n:
-        feedback.append(
-            f"Your positions depend on only {rank} independent combination(s) of the "
-            f"{n} coordinates; the map must have full rank."
-        )
-        mistakes.append("rank_deficient")
-    if not feedback:
-        return Verdict("transformation", "correct", 1.0, (), echoes, method_name(*outcomes))
-    total = max(1, len(outcomes))
-    score = 0.0 if rank < n else 0.5 * (total - len(failures)) / total
-    return Verdict(
-        "transformation",
-        "incorrect",
-        score,
-        tuple(feedback),
-        echoes,
-        method_name(*outcomes),
-        witness=failures[0][1] if failures else None,
-        mistakes=tuple(mistakes),
-    )
+            with np.errstate(all="ignore"):
+                r, size = residual(FLOAT)
+                ratio = np.abs(np.asarray(r, dtype=complex)) / np.asarray(size, dtype=float)
+            failures.append(Violation(shown, out, np.nan_to_num(ratio, nan=np.inf)))
+    return failures, outcomes
+
+
+def valid_positions(problem: Problem, positions: Mapping[str, sp.Expr]) -> bool:
+    """Whether `positions` satisfy every constraint identically and have full rank: what the
+    checker accepts (for a correction of an answer, `transformation_slips`)."""
+    points = problem.points("transformation")
+    failures, _ = _violations(problem, positions, points)
+    rank = _transformation_rank(problem, list(positions.values()), points)
+    return not failures and rank == len(problem.jets)
 
 
 def _transformation_rank(problem: Problem, exprs: list[sp.Expr], points: Points) -> int:
