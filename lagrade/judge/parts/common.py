@@ -336,6 +336,27 @@ def reference_el(problem: Problem, points: Points):
     return values
 
 
+def counted(n: int, noun: str) -> str:
+    """n and the noun, in the singular for one: "1 coordinate", "2 coordinates"."""
+    return f"{n} {noun}" if n == 1 else f"{n} {noun}s"
+
+
+def equations_needed(coordinates: int, equations: int, each: str = "") -> str:
+    """ "2 coordinates need 2 equations" (`each`: what each coordinate needs, in brackets)."""
+    need = "needs" if coordinates == 1 else "need"
+    return f"{counted(coordinates, 'coordinate')} {need} {counted(equations, 'equation')}{each}"
+
+
+def too_few_independent(rank: int, needed: int, coordinates: int, each: str = "") -> str:
+    """Right equations that are too few: "only 1 of them is independent; 2 coordinates need 2
+    equations"."""
+    are = "is" if rank == 1 else "are"
+    return (
+        f"Your equations are right but only {rank} of them {are} independent; "
+        f"{equations_needed(coordinates, needed, each)}."
+    )
+
+
 def as_sentence(text: str) -> str:
     if text.split(" ", 1)[0] in ("your", "the", "sin"):
         text = text[0].upper() + text[1:]

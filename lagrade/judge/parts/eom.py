@@ -14,7 +14,9 @@ from lagrade.judge.dimensions import hint_for, tells
 from lagrade.judge.evaluate import FLOAT, UnsupportedExpression
 from lagrade.judge.parts.common import (
     acceleration_text,
+    equations_needed,
     method_name,
+    too_few_independent,
     where_text,
     witness_point,
 )
@@ -154,16 +156,13 @@ def _judge(
             notes = (f"You gave {len(reads)} equations; {n} of them are independent.",)
         return Verdict("eom", "correct", 1.0, notes, echoes, method_name(*outcomes))
     if not wrong and not unreadable and rank < n:
-        feedback.append(
-            f"Your equations are right but only {rank} of them are independent; "
-            f"{n} coordinates need {n} equations."
-        )
+        feedback.append(too_few_independent(rank, n, n))
         mistakes.append("too_few_equations")
         score = rank / n
     else:
         score = len(right) / max(total, n)  # an unreadable line counts as a wrong one
         if total < n and not wrong:
-            feedback.append(f"{n} coordinates need {n} equations.")
+            feedback.append(f"{equations_needed(n, n)}.")
     return Verdict(
         "eom",
         "incorrect",

@@ -21,7 +21,13 @@ import numpy as np
 from lagrade.judge.compiled import Compiled
 from lagrade.judge.decision import decide
 from lagrade.judge.evaluate import FLOAT, UnsupportedExpression
-from lagrade.judge.parts.common import method_name, where_text, witness_point
+from lagrade.judge.parts.common import (
+    equations_needed,
+    method_name,
+    too_few_independent,
+    where_text,
+    witness_point,
+)
 from lagrade.judge.parts.items import list_items
 from lagrade.judge.parts.phase import (
     POINTS,
@@ -161,16 +167,15 @@ def check_hamilton_equations(problem: Problem, answer: Any, given: Mapping | Non
         )
         return Verdict(PART, "correct", 1.0, notes, lines.echoes, method_name(*outcomes))
     if not wrong and not lines.unreadable:
-        feedback.append(
-            f"Your equations are right but only {rank} of them are independent; "
-            f"{_coordinates(problem)} need {n2} equations (q̇ and ṗ for each)."
-        )
+        n = len(problem.jets)
+        feedback.append(too_few_independent(rank, n2, n, " (q̇ and ṗ for each)"))
         mistakes.append("too_few_equations")
         score = rank / n2
     else:
         score = len(right) / max(total, n2)
         if total < n2 and not wrong:
-            feedback.append(f"{_coordinates(problem)} need {n2} equations (q̇ and ṗ for each).")
+            each = " (q̇ and ṗ for each)"
+            feedback.append(f"{equations_needed(len(problem.jets), n2, each)}.")
     return Verdict(
         PART,
         "incorrect",
@@ -181,11 +186,6 @@ def check_hamilton_equations(problem: Problem, answer: Any, given: Mapping | Non
         witness=witness,
         mistakes=tuple(mistakes),
     )
-
-
-def _coordinates(problem: Problem) -> str:
-    n = len(problem.jets)
-    return "1 coordinate" if n == 1 else f"{n} coordinates"
 
 
 def _linear(rows, k: int) -> bool:

@@ -27,7 +27,7 @@ from lagrade.judge.compiled import Compiled
 from lagrade.judge.decision import decide
 from lagrade.judge.equivalence import offset_removed
 from lagrade.judge.evaluate import UnsupportedExpression
-from lagrade.judge.parts.common import method_name, where_text, witness_point
+from lagrade.judge.parts.common import method_name, named_finding, where_text, witness_point
 from lagrade.judge.parts.phase import (
     POINTS,
     compiled_reference,
@@ -89,14 +89,12 @@ def check_hamiltonian(problem: Problem, answer: Any, given: Mapping | None) -> V
         return Verdict(PART, "correct", 1.0, note, got.echo, method_name(out, shifted))
     ans = got.sympy_compiled
     witness = witness_point(phase_points(problem, points), out, ans)
-    feedback, mistakes = [], []
     kind, message = _diagnose(problem, ans, points)
-    if kind:
-        feedback.append(message)
-        mistakes.append(kind)
-    feedback.append(
-        "Your H is not Σ p_j q̇_j − L written in the momenta" + where_text(witness, problem) + "."
-    )
+    where = where_text(witness, problem)
+    # one sentence: the named mistake where it shows, else what H is not
+    said = "Your H is not Σ p_j q̇_j − L written in the momenta"
+    feedback = [named_finding(message, where) if kind else f"{said}{where}."]
+    mistakes = [kind] if kind else []
     return Verdict(
         PART,
         "incorrect",
