@@ -415,7 +415,7 @@ def claims_of(sentence: str, w: Wrong, ref: Reference) -> list[Claim]:
     if body == "the right-hand side has the wrong sign" and row is not None:
         fixed = tuple((a, -b) if i == row else (a, b) for i, (a, b) in enumerate(w.exprs))
         return one("negated_rhs", fixed)
-    if body.startswith("Your equations are right but only"):
+    if body.startswith(("Your equations are right but only", "Your equation is right;")):
         if w.part == "hamilton_equations":
             every = tuple((e.lhs, e.rhs) for e in ref.phase.hamilton_equations)
             return one("too_few", tuple(w.exprs) + every, "correct")

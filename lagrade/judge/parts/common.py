@@ -347,9 +347,13 @@ def equations_needed(coordinates: int, equations: int, each: str = "") -> str:
     return f"{counted(coordinates, 'coordinate')} {need} {counted(equations, 'equation')}{each}"
 
 
-def too_few_independent(rank: int, needed: int, coordinates: int, each: str = "") -> str:
+def too_few_independent(
+    rank: int, needed: int, coordinates: int, given: int, each: str = ""
+) -> str:
     """Right equations that are too few: "only 1 of them is independent; 2 coordinates need 2
-    equations"."""
+    equations" (`given`: how many the student wrote; one is simply right, and too few)."""
+    if given == 1:
+        return f"Your equation is right; {equations_needed(coordinates, needed, each)}."
     are = "is" if rank == 1 else "are"
     return (
         f"Your equations are right but only {rank} of them {are} independent; "

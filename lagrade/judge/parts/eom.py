@@ -156,7 +156,7 @@ def _judge(
             notes = (f"You gave {len(reads)} equations; {n} of them are independent.",)
         return Verdict("eom", "correct", 1.0, notes, echoes, method_name(*outcomes))
     if not wrong and not unreadable and rank < n:
-        feedback.append(too_few_independent(rank, n, n))
+        feedback.append(too_few_independent(rank, n, n, len(reads)))
         mistakes.append("too_few_equations")
         score = rank / n
     else:

@@ -168,7 +168,7 @@ def check_hamilton_equations(problem: Problem, answer: Any, given: Mapping | Non
         return Verdict(PART, "correct", 1.0, notes, lines.echoes, method_name(*outcomes))
     if not wrong and not lines.unreadable:
         n = len(problem.jets)
-        feedback.append(too_few_independent(rank, n2, n, " (q̇ and ṗ for each)"))
+        feedback.append(too_few_independent(rank, n2, n, len(reads), " (q̇ and ṗ for each)"))
         mistakes.append("too_few_equations")
         score = rank / n2
     else:
