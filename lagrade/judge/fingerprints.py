@@ -135,6 +135,22 @@ def _piece_values(pieces: Sequence, jets: Sequence[Jet], env: dict):
     return with_quotients(pieces, lambda exprs: _sympy_piece_values(exprs, jets, env), env)
 
 
+class Pieces(list):
+    """The distinct expressions a table of mistakes is weighted over, in the order first met:
+    calling it with an expression gives that expression's index, adding it when new (each
+    piece is evaluated once however many mistakes weigh it)."""
+
+    def __init__(self) -> None:
+        super().__init__()
+        self._index: dict = {}
+
+    def __call__(self, e: sp.Expr) -> int:
+        if e not in self._index:
+            self._index[e] = len(self)
+            self.append(e)
+        return self._index[e]
+
+
 def piece_terms(pieces: Sequence[sp.Expr]) -> tuple[list, list[int]]:
     """The top-level terms of every piece, and the piece each belongs to: one program evaluates
     all pieces, each summed from its terms as `Compiled` sums them (so are their sizes)."""

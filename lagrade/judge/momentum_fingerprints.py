@@ -16,7 +16,7 @@ import sympy as sp
 from lagrade.judge.compiled import Compiled, to_length
 from lagrade.judge.derivatives import gradient
 from lagrade.judge.evaluate import FLOAT, UnsupportedExpression, compile_program, run
-from lagrade.judge.fingerprints import divided, piece_terms, with_quotients
+from lagrade.judge.fingerprints import Pieces, divided, piece_terms, with_quotients
 from lagrade.judge.matching import full, vanish_rows
 from lagrade.judge.mutations import (
     KINETIC_KINDS,
@@ -82,26 +82,19 @@ class MomentumFingerprints:
         env = self.points.env
         n_pts = len(self.points.group)
         lag = catalogue.lagrangian_fingerprints
-        plain: list = []
-        index: dict = {}
-
-        def piece(e) -> int:
-            if e not in index:
-                index[e] = len(plain)
-                plain.append(e)
-            return index[e]
+        plain = Pieces()  # the pieces the weights name, by index
 
         # a mistake: (kind, base weight of p_k, weights, how its symbolic mutant is built)
         specs: list[tuple[str, float, tuple, tuple]] = []
         for i in range(len(jets)):
             if i != k:
-                w = (("v", piece(system.generalized_momenta[i]), 1.0),)
+                w = (("v", plain(system.generalized_momenta[i]), 1.0),)
                 specs.append(("wrong_coordinate", 0.0, w, ("coordinate", i)))
         specs.append(
             (
                 "force_not_momentum",
                 0.0,
-                (("v", piece(system.generalized_forces[k]), 1.0),),
+                (("v", plain(system.generalized_forces[k]), 1.0),),
                 ("force",),
             )
         )
@@ -116,13 +109,13 @@ class MomentumFingerprints:
             for local, (kind, pieces, _) in enumerate(
                 term_specs(term, catalogue.parameters, divided)
             ):
-                w = tuple(("v", piece(e), float(c)) for c, e in pieces)
+                w = tuple(("v", plain(e), float(c)) for c, e in pieces)
                 specs.append((kind, 1.0, w, ("term", t, local)))
         # a sin or cos dropped from one term of several (a momentum of one term without its
         # factor is the momenta part's own sentence, "p_φ is ∂L/∂φ̇ without its factor sin²θ")
         for t, term in enumerate(self._terms if len(self._terms) > 1 else ()):
             for local, f in enumerate(trig_factors(term)):
-                w = (("v", piece(term), -1.0), ("v", piece(term / f), 1.0))
+                w = (("v", plain(term), -1.0), ("v", plain(term / f), 1.0))
                 specs.append(("missing_factor", 1.0, w, ("trig", t, local)))
         self.specs = specs
         with np.errstate(all="ignore"):

@@ -21,7 +21,7 @@ import sympy as sp
 from lagrade.judge.compiled import to_length
 from lagrade.judge.derivatives import euler_lagrange_terms
 from lagrade.judge.evaluate import FLOAT, UnsupportedExpression, compile_program, run
-from lagrade.judge.fingerprints import divided, piece_terms, with_quotients
+from lagrade.judge.fingerprints import Pieces, divided, piece_terms, with_quotients
 from lagrade.judge.matching import Stack, every_row, row_fix_is_right, span_arrays
 from lagrade.judge.mutations import (
     ROW_KINDS,
@@ -139,21 +139,14 @@ class RowFingerprints:
         self._lagrangian_rows: dict[int, dict[int, Mutant]] = {}
         self._per_monomial: dict = {}
         # the pieces read as equations: ∂L/∂q_i, then the rows' terms and their variants
-        plain: list = []
-        index: dict = {}
-
-        def piece(e) -> int:
-            if e not in index:
-                index[e] = len(plain)
-                plain.append(e)
-            return index[e]
+        plain = Pieces()  # the pieces the weights name, by index
 
         # a mistake: (row, kind, weights over the pieces' rows, how its symbolic mutant is built:
         # ("sign",), ("lagrangian", its Lagrangian mistake), ("term", term, its mistake there))
         specs: list[tuple[int, str, tuple, tuple]] = []
         for i in range(n):
             specs.append(
-                (i, "el_sign", (("p", piece(system.generalized_forces[i]), 2.0),), ("sign",))
+                (i, "el_sign", (("p", plain(system.generalized_forces[i]), 2.0),), ("sign",))
             )
         # Lagrangian mistakes carried into the equations: the kept ones of the early kinds
         early = [k for k in lag.kept if k < lag.early and lag.specs[k].kind in ROW_KINDS]
@@ -178,7 +171,7 @@ class RowFingerprints:
             for t, term in enumerate(self._terms[i]):
                 specs_here = term_specs(term, catalogue.parameters, divided)
                 for local, (kind, pieces, _) in enumerate(specs_here):
-                    weights = tuple(("p", piece(e), _float(c)) for c, e in pieces)
+                    weights = tuple(("p", plain(e), _float(c)) for c, e in pieces)
                     specs.append((i, kind, weights, ("term", t, local)))
         self.specs = specs
         p_coef, p_size = with_quotients(plain, lambda e: _plain_rows(e, jets, env), env)
