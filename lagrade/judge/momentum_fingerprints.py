@@ -236,10 +236,9 @@ class MomentumFingerprints:
         if not hits or len(self._terms) < 2:  # one term scaled: the part says "p is twice …"
             return None
         # the mistakes of p_k's own terms (a sentence about L says more than p_k shows)
+        listed = set(kept.tolist())
         duplicates = [
-            m
-            for m in range(len(self.specs))
-            if m not in set(kept.tolist()) and self.specs[m][3][0] != "lagrangian"
+            m for m, spec in enumerate(self.specs) if m not in listed and spec[3][0] != "lagrangian"
         ]
         if not duplicates:
             return None
