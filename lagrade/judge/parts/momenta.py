@@ -148,15 +148,14 @@ def check_momenta(problem: Problem, answer: Any, given: Mapping | None) -> Verdi
                 mistakes.append(mutant.kind)
         else:
             where = where_text(point, problem) if point == witness else ""
-            factor = _factor_text(problem, k, ans, points)
             derivative = f"∂L/∂{j.name}_dot"
-            if factor in dict(_NUMBERS).values():
-                said = f"is {factor} {derivative}"
+            factor = _factor_finding(problem, k, ans, points)
+            if factor is None:
+                said = f"is not {derivative}"
             else:
-                said = f"is {derivative} {factor}" if factor else f"is not {derivative}"
+                kind, said = factor[0], factor[1].format(derivative=derivative)
+                mistakes.append(kind)  # a named mistake, as the catalogue's kinds name it
             feedback.append(f"p_{j.name} {said}{where}.")
-            if factor:  # a named mistake, as the catalogue's kinds name it
-                mistakes.append(_FACTOR_KINDS[factor.split()[0]])
         dimensions = hint_for(problem, by_coordinate[k], f"momentum:{k}") if tells(mutant) else ""
         if dimensions:
             feedback.append(f"p_{j.name}: {dimensions[0].lower()}{dimensions[1:]}")
@@ -204,7 +203,7 @@ def _own_is_same_gauge(problem: Problem, own: Compiled) -> bool:
 
 def _factors(momentum: sp.Expr) -> list[sp.Expr]:
     """The factors of the momentum's terms that are not numbers, and the base of each power
-    among them (r from r²), in the order they are printed: the candidates of `_factor_text`."""
+    among them (r from r²), in the order they are printed: the candidates of `_factor_finding`."""
     out: dict[sp.Expr, None] = {}
     for term in expanded_terms(momentum):
         for f in sp.Mul.make_args(term):
@@ -216,37 +215,36 @@ def _factors(momentum: sp.Expr) -> list[sp.Expr]:
     return list(out)
 
 
-#: A momentum that is a number times ∂L/∂q̇, and how `_factor_text` says so.
-_NUMBERS = ((2.0, "twice"), (0.5, "half"), (-1.0, "minus"))
-#: The mistake kind each sentence of `_factor_text` names, by its first word.
-_FACTOR_KINDS = {
-    "twice": "factor_two",
-    "half": "factor_half",
-    "minus": "wrong_sign",
-    "without": "missing_factor",
-    "with": "extra_factor",
-}
+#: A momentum that is a number times ∂L/∂q̇: the number, the mistake's kind, how it is said.
+_NUMBERS = (
+    (2.0, "factor_two", "is twice {derivative}"),
+    (0.5, "factor_half", "is half {derivative}"),
+    (-1.0, "wrong_sign", "is minus {derivative}"),
+)
 
 
-def _factor_text(problem: Problem, k: int, ans: Compiled, points) -> str:
-    """ "without its factor r^2" when the answer times one factor of the reference's terms is
-    the reference at every sample point, "with an extra factor r" when the answer is the
-    reference times one; nothing otherwise. Checked by the correction it implies (the
-    answer corrected so equals ∂L/∂q̇ at the points), never by how the answer is printed."""
+def _factor_finding(problem: Problem, k: int, ans: Compiled, points) -> tuple[str, str] | None:
+    """(mistake kind, sentence with a `{derivative}` slot): "is twice ∂L/∂q̇" when the answer
+    is a number times the reference, "is ∂L/∂q̇ without its factor r^2" when the answer times
+    one factor of the reference's terms is the reference at every sample point, "… with an
+    extra factor r" when the answer is the reference times one; None otherwise. Checked by the
+    correction it implies (the answer corrected so equals ∂L/∂q̇ at the points), never by how
+    the answer is printed."""
     env, n = points.env, len(points.group)
     try:
         with np.errstate(all="ignore"):
             a, sa = full(ans.values(env), n)
             r, sr = full(problem.momenta[k].values(env), n)
-            for number, said in _NUMBERS:  # the whole momentum scaled: every term as one
+            for number, kind, said in _NUMBERS:  # the whole momentum scaled: every term as one
                 if vanish_rows((a - number * r)[None], (sa + number * sr)[None])[0]:
-                    return said
+                    return kind, said
             for f in _factors(problem.system.generalized_momenta[k]):
                 fv, _ = full(Compiled.of(f).values(env), n)
+                shown = plain(f).replace("{", "{{").replace("}", "}}")
                 if vanish_rows((a * fv - r)[None], (sa * np.abs(fv) + sr)[None])[0]:
-                    return f"without its factor {plain(f)}"
+                    return "missing_factor", f"is {{derivative}} without its factor {shown}"
                 if vanish_rows((a - r * fv)[None], (sa + sr * np.abs(fv))[None])[0]:
-                    return f"with an extra factor {plain(f)}"
+                    return "extra_factor", f"is {{derivative}} with an extra factor {shown}"
     except (UnsupportedExpression, ValueError, ZeroDivisionError, OverflowError):
-        return ""
-    return ""
+        return None
+    return None
