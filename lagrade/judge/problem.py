@@ -299,6 +299,14 @@ class Problem:
             return determined_mask(self.L, self.jets)
         return lagrangian_mask(self.L, self.jets)
 
+    def compiled_reference(self, name: str, make: Callable[[], sp.Expr]) -> Compiled:
+        """A derived reference expression (h, H, a force, T of the split), compiled once per
+        structure: every variant and every part that names it reads the same program."""
+        cache = self.shared.setdefault("_compiled_references", {})
+        if name not in cache:
+            cache[name] = Compiled.of(make())
+        return cache[name]
+
     # --- cached reference values at points ------------------------------------------------------
     def cached(self, name: str, points: Points, make):
         """A value derived from `points` (reference rows, accelerations), computed once."""

@@ -31,12 +31,14 @@ def energy_sentence(problem: Problem, points: Points, conserved: Conserved) -> s
     (so h is not conserved either); and h is named conserved only when it passes the test."""
     split = problem.catalogue.split
     env = points.env
-    T, V, L = Compiled.of(split.T), Compiled.of(split.V), problem.L
+    T = problem.compiled_reference("split T", lambda: split.T)
+    V = problem.compiled_reference("split V", lambda: split.V)
+    L = problem.L
     at_rest = {**env, **{j.dot: np.zeros(points.n) for j in problem.jets}}
     reasons = []
     if _differs(T, {**at_rest}, None, points):  # T(q, 0, t) ≠ 0: the positions move by themselves
         reasons.append("the constraint moves, so energy flows in and out")
-    h_conserved = conserved(Compiled.of(problem.system.energy_function))
+    h_conserved = conserved(problem.compiled_reference("h", lambda: problem.system.energy_function))
     if h_conserved:
         if not reasons and _differs(V, env, at_rest, points):
             reasons.append("V depends on the velocities, so T + V is not the energy function")

@@ -31,7 +31,6 @@ from lagrade.judge.parts.common import (
 from lagrade.judge.parts.items import list_items
 from lagrade.judge.parts.phase import (
     POINTS,
-    compiled_reference,
     momentum_symbols,
     phase_env,
     phase_points,
@@ -77,8 +76,8 @@ def _reference_rates(problem: Problem, points: Points, backend=FLOAT) -> dict:
     """The rates of the motion at each point: q̇ (the point's own) and ṗ_j = ∂L/∂q_j."""
     env = dict(phase_env(problem, points, backend))
     for k, (j, r) in enumerate(zip(problem.jets, rate_symbols(problem), strict=True)):
-        force = compiled_reference(
-            problem, f"F{k}", lambda k=k: problem.system.generalized_forces[k]
+        force = problem.compiled_reference(
+            f"F{k}", lambda k=k: problem.system.generalized_forces[k]
         )
         env[r] = values_at(force, points.arrays(backend), points.n, backend)[0]
         env[j.dot] = points.arrays(backend)[j.dot]
@@ -239,7 +238,7 @@ def _mass_kept(problem: Problem, answer: Compiled, points: Points) -> str:
                 A_kk = hs.velocity_matrix[k, k]
                 if A_kk == 1:
                     continue
-                mass = compiled_reference(problem, f"A{k}{k}", lambda e=A_kk: e)
+                mass = problem.compiled_reference(f"A{k}{k}", lambda e=A_kk: e)
                 scaled = env | {j.dot: values_at(mass, env, points.n)[0] * env[j.dot]}
                 value, size = values_at(answer, scaled, points.n)
                 if np.all(

@@ -30,7 +30,6 @@ from lagrade.judge.evaluate import UnsupportedExpression
 from lagrade.judge.parts.common import method_name, named_finding, where_text, witness_point
 from lagrade.judge.parts.phase import (
     POINTS,
-    compiled_reference,
     momentum_symbols,
     phase_env,
     phase_points,
@@ -74,7 +73,7 @@ def check_hamiltonian(problem: Problem, answer: Any, given: Mapping | None) -> V
             mistakes=("rates",),
         )
     points = problem.points(POINTS)
-    h = compiled_reference(problem, "h", lambda: problem.system.energy_function)
+    h = problem.compiled_reference("h", lambda: problem.system.energy_function)
     out = decide(_residual(problem, got.compiled, h, points, shifted=False))
     if not out.equal and got.compiled is not got.sympy_compiled:
         out = decide(_residual(problem, got.sympy_compiled, h, points, shifted=False))
@@ -136,7 +135,7 @@ def _with_velocities(problem: Problem, got: Read, names: list[str]) -> Verdict:
     )
     feedback = [sentence]
     points = problem.points(POINTS)
-    h = compiled_reference(problem, "h", lambda: problem.system.energy_function)
+    h = problem.compiled_reference("h", lambda: problem.system.energy_function)
     if not any(j.ddot in got.symbols for j in problem.jets):
         try:
             same = decide(lambda b: _velocity_residual(got.compiled, h, points, b)).equal
@@ -199,7 +198,7 @@ def _fingerprints(problem: Problem, points: Points) -> list[tuple[str, str, Call
     p_values = [phase_env(problem, points)[s] for s in momentum_symbols(problem)]
 
     def at(name: str, make, velocities=None):
-        expr = compiled_reference(problem, name, make)
+        expr = problem.compiled_reference(name, make)
         where = (
             env
             if velocities is None

@@ -10,7 +10,7 @@ again from the 50-digit points, so that both sides meet the same phase-space poi
 
 from __future__ import annotations
 
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Mapping, Sequence
 from functools import partial
 from typing import Any
 
@@ -105,14 +105,6 @@ def phase_points(problem: Problem, points: Points) -> Points:
     return problem.cached(
         "phase-points", points, lambda: Points(phase_env(problem, points), points.group)
     )
-
-
-def compiled_reference(problem: Problem, name: str, make: Callable[[], sp.Expr]) -> Compiled:
-    """A reference expression of the phase-space parts, compiled once per question."""
-    cache: dict = problem.__dict__.setdefault("_phase_references", {})
-    if name not in cache:
-        cache[name] = Compiled.of(make())
-    return cache[name]
 
 
 def velocity_symbols(problem: Problem, symbols) -> list[str]:
