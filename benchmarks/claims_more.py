@@ -216,10 +216,14 @@ def _some_vector(w, ref, osc, values, kind: str) -> bool:
 
 
 def quoted_frequencies(sentence: str, witness: dict | None, ref) -> list[str]:
-    """ "(at the first point drawn, the frequencies are 0.576, 1.21 rad/s)" and "the mode at
-    ω = 1.15 rad/s (at the first point drawn)": the frequencies at the witness's parameters."""
-    if "at the first point drawn" not in sentence:
+    """ "(with your handout's values, the frequencies are 0.576, 1.21 rad/s)" and "the mode at
+    ω = 1.15 rad/s, not of ω = 2.3 (at the first point drawn)": the frequencies at the
+    witness's parameters, which must be the student's own handout values where it says so."""
+    handout = "with your handout's values" in sentence
+    if not handout and "at the first point drawn" not in sentence:
         return []
+    if handout and witness != {n: float(v) for n, v in ref.variant.values.items()}:
+        return [f"{sentence[:60]}… (the witness is not the handout's values)"]
     if not witness:
         return [f"{sentence[:60]}… (no witness)"]
     symbols = ref.variant.parameter_symbols

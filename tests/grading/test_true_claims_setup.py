@@ -109,13 +109,43 @@ def test_one_coordinate_alone_is_named_on_the_cart():
 
 
 def test_frequencies_quoted_at_the_first_point_are_the_witness_values():
-    problem = {"scene": "coupled_oscillators", "seed": 1}
+    problem = {"scene": "coupled_oscillators"}  # no handout: the first point drawn, said so
     verdict = judge(problem, "normal_modes", ["sqrt(k/m)", "sqrt(5 k/m)"])
     sentence = next(f for f in verdict.feedback if "first point drawn" in f)
     w = verdict.witness
     want = sorted([np.sqrt(w["k"] / w["m"]), np.sqrt((w["k"] + 2 * w["k_c"]) / w["m"])])
     quoted = re.search(r"the frequencies are ([\d., ]+) rad/s", sentence).group(1)
     assert [float(x) for x in quoted.split(", ")] == [float(f"{x:.3g}") for x in want]
+
+
+def test_frequencies_are_quoted_at_the_students_own_handout_values():
+    """A student with a handout can reproduce the frequencies quoted from their own sheet."""
+    variant = get_scene("coupled_oscillators").variant(1)
+    problem = {"scene": "coupled_oscillators", "seed": 1}
+    verdict = judge(problem, "normal_modes", ["sqrt(k/m)", "sqrt(5 k/m)"])
+    sentence = next(f for f in verdict.feedback if "with your handout's values" in f)
+    assert verdict.witness == {n: float(v) for n, v in variant.values.items()}
+    k, k_c, m = (float(variant.values[n]) for n in ("k", "k_c", "m"))
+    want = sorted([np.sqrt(k / m), np.sqrt((k + 2 * k_c) / m)])
+    quoted = re.search(r"the frequencies are ([\d., ]+) rad/s", sentence).group(1)
+    assert [float(x) for x in quoted.split(", ")] == [float(f"{x:.3g}") for x in want]
+
+
+def test_a_swapped_mode_shape_quotes_both_frequencies_at_the_handout_values():
+    variant = get_scene("coupled_oscillators").variant(1)
+    x_1, x_2 = variant.coordinates
+    problem = {"scene": "coupled_oscillators", "seed": 1}
+    answer = ["omega = sqrt(k/m): (1, -1)", "omega = sqrt((k + 2*k_c)/m): (1, 1)"]
+    verdict = judge(problem, "mode_shapes", answer)
+    assert verdict.mistakes == ("swapped", "swapped"), verdict.feedback
+    k, k_c, m = (float(variant.values[n]) for n in ("k", "k_c", "m"))
+    slow, fast = (float(f"{w:.3g}") for w in (np.sqrt(k / m), np.sqrt((k + 2 * k_c) / m)))
+    said = re.findall(
+        r"mode at ω = ([\d.]+) rad/s, not of ω = ([\d.]+)", " ".join(verdict.feedback)
+    )
+    assert [(float(a), float(b)) for a, b in said] == [(fast, slow), (slow, fast)]
+    assert "with your handout's values" in verdict.feedback[0]
+    assert verdict.witness == {n: float(v) for n, v in variant.values.items()}
 
 
 def test_a_missing_coordinate_is_named_only_when_adding_it_is_right():

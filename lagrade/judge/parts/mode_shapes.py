@@ -26,6 +26,7 @@ from lagrade.judge.compiled import to_length
 from lagrade.judge.parts.items import Piece, list_items, without_none
 from lagrade.judge.parts.oscillation import (
     _SLIPS,
+    Quoted,
     _matrices,
     _matrix_at,
     _mode,
@@ -33,8 +34,8 @@ from lagrade.judge.parts.oscillation import (
     _slip,
     _stable,
     _value_echo,
-    first_point,
     oscillation_points,
+    quoted_point,
     reference_frequencies,
 )
 from lagrade.judge.parts.reading import Read, Unreadable, read, read_labelled
@@ -44,8 +45,6 @@ from lagrade.judge.tolerances import ROUNDING, SAME_FREQUENCY, SAME_MODE
 from lagrade.judge.verdict import Verdict, invalid, unreadable_line
 from lagrade.mechanics import ZERO_MODE
 
-#: Where the frequencies a sentence quotes are computed (the verdict's witness holds it).
-FIRST_POINT = "at the first point drawn"
 #: How a line is written, for the messages.
 FORMAT = "omega = frequency: (a_1, a_2, …)"
 _BRACKETS = (("\\left(", "\\right)"), ("\\left[", "\\right]"), ("(", ")"), ("[", "]"))
@@ -205,6 +204,7 @@ def check_mode_shapes(problem: Problem, answer: Any, given: Mapping | None) -> V
     feedback, mistakes = lines.feedback(), []
     used = np.zeros(ref.shape, dtype=bool)
     right = wrong = 0
+    quoted: Quoted | None = None  # where a sentence quotes frequencies
     accepted: list[tuple[np.ndarray, np.ndarray]] = []  # (a, λ) of each mode credited
 
     def fits_at(a: np.ndarray, lam: np.ndarray) -> np.ndarray:
@@ -276,7 +276,9 @@ def check_mode_shapes(problem: Problem, answer: Any, given: Mapping | None) -> V
         if not _mode(w, ref, modes, used):
             wrong += 1
             kind = _slip(w, ref, modes)
-            why = _SLIPS[kind] if kind else _no_frequency(ref, modes)
+            if not kind:
+                quoted = quoted or quoted_point(problem, points)
+            why = _SLIPS[kind] if kind else _no_frequency(quoted)
             feedback.append(f"{mode.echo}: {why}")
             mistakes.append(kind or "not_a_frequency")
             continue
@@ -298,11 +300,8 @@ def check_mode_shapes(problem: Problem, answer: Any, given: Mapping | None) -> V
         wrong += 1
         other = other_mode(a, lam)
         if other is not None:
-            feedback.append(
-                f"{mode.echo}: this is the shape of the mode at ω = "
-                f"{rounded(float(ref[0, other]))} rad/s ({FIRST_POINT}), not of "
-                f"ω = {rounded(float(ref[0, k[0]]))}."
-            )
+            quoted = quoted or quoted_point(problem, points)
+            feedback.append(f"{mode.echo}: {_swapped(mode, quoted)}")
             mistakes.append("swapped")
         elif _eigenvector_of_K(K, a) and not any(fits_at(a, ref[:, j] ** 2)[0] for j in modes):
             # K's eigenvector that is no mode's shape: so the masses were left out
@@ -320,7 +319,6 @@ def check_mode_shapes(problem: Problem, answer: Any, given: Mapping | None) -> V
         feedback.append(f"{missing} normal {noun} missing ({len(modes)} in all).")
         mistakes.append("missing_mode")
     correct = right == len(modes) and not wrong and not feedback
-    quoted = any(FIRST_POINT in f for f in feedback)
     return Verdict(
         "mode_shapes",
         "correct" if correct else "incorrect",
@@ -328,16 +326,39 @@ def check_mode_shapes(problem: Problem, answer: Any, given: Mapping | None) -> V
         tuple(feedback),
         lines.echoes,
         "numeric",
-        witness=first_point(problem, points) if quoted else None,
+        witness=quoted.witness if quoted else None,
         mistakes=tuple(mistakes),
     )
 
 
-def _no_frequency(ref: np.ndarray, modes: list[int]) -> str:
-    shown = ", ".join(rounded(float(w)) for w in ref[0, modes])
+def _no_frequency(quoted: Quoted) -> str:
     return (
-        f"this is not a normal-mode frequency ({FIRST_POINT}, the frequencies are {shown} rad/s)."
+        f"this is not a normal-mode frequency ({quoted.where}, the frequencies are "
+        f"{quoted.shown()} rad/s)."
     )
+
+
+def _swapped(mode, quoted: Quoted) -> str:
+    """The vector is another mode's shape (at every point drawn): said with that mode's ω and
+    the ω the line gives, both where `quoted` says, found there by (K − ω² M) a = 0; without
+    numbers when the shape cannot be placed there."""
+
+    def at(c) -> float:
+        return float(np.real(to_length(c.compiled.values(quoted.env)[0], 1)[0]))
+
+    with np.errstate(all="ignore"):
+        a, given = np.array([at(c) for c in mode.vector]), at(mode.frequency)
+    scale = np.linalg.norm(quoted.K) + np.linalg.norm(quoted.M)
+    for w in quoted.frequencies():
+        residual = np.linalg.norm((quoted.K - w**2 * quoted.M) @ a)
+        if residual <= SAME_MODE * scale * max(w**2, 1.0) * np.linalg.norm(a) and np.isfinite(
+            given
+        ):
+            return (
+                f"this is the shape of the mode at ω = {rounded(float(w))} rad/s, not of "
+                f"ω = {rounded(given)} ({quoted.where})."
+            )
+    return "this is the shape of another mode, not of the one at the frequency you give."
 
 
 def _dependent(a: np.ndarray, others: list[np.ndarray]) -> bool:

@@ -16,12 +16,14 @@ one needs ω² R > g); when the frequencies have no closed form the handout's va
 used. Named mistakes: an unstable equilibrium, a point that is no equilibrium, ω² for ω, the
 frequency in cycles (ω/2π) or the period (2π/ω) for ω, √2 ω or ω/√2 (a ½ of T or V lost),
 one coordinate's frequency alone √(K_kk/M_kk) (the coupling ignored), a frequency of no mode.
-Frequencies a sentence quotes are at the first point drawn, which the verdict's witness
-holds."""
+Frequencies a sentence quotes are at the handout's values where the equilibrium is stable
+there, else at the first point drawn (`quoted_point`); the verdict's witness holds those
+values."""
 
 from __future__ import annotations
 
 from collections.abc import Mapping
+from dataclasses import dataclass
 from functools import partial
 from typing import Any
 
@@ -309,7 +311,7 @@ def check_normal_modes(problem: Problem, answer: Any, given: Mapping | None) -> 
     feedback, mistakes = lines.feedback(), []
     used = np.zeros(ref.shape, dtype=bool)
     right = wrong = 0
-    quoted = False  # a sentence quotes the frequencies at the first point drawn
+    quoted: Quoted | None = None  # where a sentence quotes the frequencies
     for got in lines.reads:
         _parameters_only(problem, got, "A frequency")
         try:
@@ -341,12 +343,11 @@ def check_normal_modes(problem: Problem, answer: Any, given: Mapping | None) -> 
             feedback.append(f"{got.echo}: {uncoupled_text(alone)}")
             mistakes.append("uncoupled")
         else:
-            shown = ", ".join(rounded(float(w)) for w in ref[0, modes])
+            quoted = quoted or quoted_point(problem, points)
             feedback.append(
-                f"{got.echo} is not a normal-mode frequency (at the first point drawn, "
-                f"the frequencies are {shown} rad/s)."
+                f"{got.echo} is not a normal-mode frequency ({quoted.where}, the frequencies "
+                f"are {quoted.shown()} rad/s)."
             )
-            quoted = True
     missing = len(modes) - right
     if missing and not wrong:
         noun = "frequency is" if missing == 1 else "frequencies are"
@@ -363,15 +364,49 @@ def check_normal_modes(problem: Problem, answer: Any, given: Mapping | None) -> 
         tuple(feedback),
         lines.echoes,
         "numeric",
-        witness=first_point(problem, points) if quoted else None,
+        witness=quoted.witness if quoted else None,
         mistakes=tuple(mistakes),
     )
 
 
-def first_point(problem: Problem, points: Points) -> dict[str, float]:
-    """The parameter values of the first point drawn, where a sentence quotes frequencies (the
-    verdict's witness, so that every number quoted can be reproduced)."""
-    return points.point(0, set(problem.domains))
+@dataclass(frozen=True)
+class Quoted:
+    """Where a sentence quotes the frequencies: the words that say where, the parameter values
+    (the verdict's witness), and K and M there."""
+
+    where: str
+    witness: dict[str, float]
+    env: dict  # that one point, for evaluating the student's expressions there
+    K: np.ndarray
+    M: np.ndarray
+
+    def frequencies(self) -> np.ndarray:
+        """The oscillating modes' ω there, ascending."""
+        w = frequencies_from(self.K, self.M)
+        return w[w > ZERO_MODE * max(float(w.max(initial=0.0)), 1e-300)]
+
+    def shown(self) -> str:
+        return ", ".join(rounded(float(w)) for w in self.frequencies())
+
+
+def quoted_point(problem: Problem, points: Points) -> Quoted:
+    """Where frequencies are quoted: at the handout's values, numbers the student can reproduce
+    from their own sheet, when the key's equilibrium is stable there; else at the first point
+    drawn, saying so (the witness holds its parameter values either way)."""
+    compiled = _matrices(problem)
+    first = {s: v[:1] for s, v in points.env.items()}
+    handout = {s: np.array([float(v)]) for s, v in problem.values.items()}
+    if handout and all(s in handout for s in problem.domains):
+        env = first | handout
+        with np.errstate(all="ignore"):
+            K, M = _matrix_at(compiled["K"], env, 1), _matrix_at(compiled["M"], env, 1)
+        if _stable_at(K, M, compiled["free"])[0]:
+            witness = {s.name: float(f"{float(v[0]):.6g}") for s, v in handout.items()}
+            return Quoted("with your handout's values", witness, env, K[0], M[0])
+    with np.errstate(all="ignore"):
+        K, M = _matrix_at(compiled["K"], first, 1), _matrix_at(compiled["M"], first, 1)
+    witness = points.point(0, set(problem.domains))
+    return Quoted("at the first point drawn", witness, first, K[0], M[0])
 
 
 def uncoupled(problem: Problem, value: np.ndarray, points: Points) -> str:
