@@ -183,3 +183,11 @@ def test_slips_and_swapped_shapes_are_matched_point_by_point():
         f"omega = sqrt(k_z/m): {x}", f"omega = sqrt(k/m): {z}", f"omega = sqrt(k/m): {y}",
     ])  # fmt: skip
     assert verdict.mistakes == ("swapped", "swapped"), verdict.feedback
+
+
+def test_a_point_that_is_no_equilibrium_is_shown_with_the_students_handout_values():
+    variant = get_scene("harmonic_oscillator").variant(1)
+    (q,) = variant.coordinates
+    verdict = judge({"scene": "harmonic_oscillator", "seed": 1}, "equilibrium", f"{q} = -g*m/k")
+    assert verdict.mistakes == ("not_equilibrium",)
+    assert verdict.witness == {n: float(v) for n, v in variant.values.items()}

@@ -40,7 +40,7 @@ from lagrade.judge.parts.reading import Lines, Read, read, read_labelled, read_l
 from lagrade.judge.problem import Problem
 from lagrade.judge.sampling import Points, seed_for
 from lagrade.judge.situation import rounded, symbol_text
-from lagrade.judge.tolerances import ROUNDING, SAME_FREQUENCY
+from lagrade.judge.tolerances import DIFFERENT_ABOVE, ROUNDING, SAME_FREQUENCY
 from lagrade.judge.verdict import Verdict, invalid
 from lagrade.mechanics import (
     ZERO_MODE,
@@ -248,7 +248,9 @@ def check_equilibrium(problem: Problem, answer: Any, given: Mapping | None) -> V
         return invalid("equilibrium", f"Cannot evaluate your answer: {error}.", lines.echoes)
     shown = ", ".join(f"{q.name} = {_value_echo(values[q])}" for q in values)
     if not out.equal:
-        witness = points.point(out.where, set(problem.domains)) if out.where is not None else None
+        witness = _handout_shows(problem, points, values, compiled)
+        if witness is None and out.where is not None:
+            witness = points.point(out.where, set(problem.domains))
         feedback.append(
             f"The system does not stay at rest at {shown}: ∂U/∂q ≠ 0 there (U = −L at rest)"
             + where_text(witness, problem)
@@ -367,6 +369,25 @@ def check_normal_modes(problem: Problem, answer: Any, given: Mapping | None) -> 
         witness=quoted.witness if quoted else None,
         mistakes=tuple(mistakes),
     )
+
+
+def _handout_shows(problem: Problem, points: Points, values: dict, compiled: dict):
+    """The handout's parameter values, by name, when ∂U/∂q at the student's point is clearly
+    not zero there: the example a student can check on their own sheet. None without a full
+    handout, or where the student's point happens to be at rest for those values."""
+    handout = {s: np.array([float(v)]) for s, v in problem.values.items()}
+    if not handout or any(s not in handout for s in problem.domains):
+        return None
+    env = {s: v[:1] for s, v in points.env.items()} | handout
+    with np.errstate(all="ignore"):
+        for q, r in values.items():
+            env[q] = to_length(r.compiled.values(env)[0], 1)
+        parts = [g.values(env) for g in compiled["gradient"]]
+        r = np.array([float(np.real(to_length(v, 1)[0])) for v, _ in parts])
+        size = np.array([float(np.real(to_length(s, 1)[0])) for _, s in parts])
+    if not (np.all(np.isfinite(r)) and np.any(np.abs(r) > DIFFERENT_ABOVE * size)):
+        return None
+    return {s.name: float(f"{float(v[0]):.6g}") for s, v in handout.items()}
 
 
 @dataclass(frozen=True)
