@@ -16,23 +16,7 @@ from lagrade.assign.figures import compose, draw
 from lagrade.assign.figures.layout import crosses, ink_segments, labels, settle
 from lagrade.bank.scenefile import scene_from_text
 from lagrade.mechanics import LABEL_PLACES
-
-PENDULUM = """\
-title = "Pendulum"
-statement = "A bob of mass m on a rod of length l. Use {theta}."
-coordinates = ["theta"]
-potential = "gravity"
-constraints = ["x_bob^2 + y_bob^2 - l^2"]
-
-[parameters]
-m = { domain = "positive", unit = "kg", values = [1.0] }
-l = { domain = "positive", unit = "m", values = [1.0] }
-g = { domain = "positive", unit = "m/s^2", values = [9.81] }
-
-[bodies.bob]
-mass = "m"
-position = ["l sin(theta)", "-l cos(theta)"]
-"""
+from tests.scene_texts import PENDULUM
 
 BLOCK = """\
 title = "Block"

@@ -11,23 +11,7 @@ import time
 import pytest
 
 from lagrade.cli.main import main
-
-PENDULUM = """\
-title = "Pendulum"
-statement = "A bob of mass m on a rod of length l. Use {theta}."
-coordinates = ["theta"]
-potential = "gravity"
-constraints = ["x_bob^2 + y_bob^2 - l^2"]
-
-[parameters]
-m = { domain = "positive", unit = "kg", values = [1.0] }
-l = { domain = "positive", unit = "m", values = [1.0] }
-g = { domain = "positive", unit = "m/s^2", values = [9.81] }
-
-[bodies.bob]
-mass = "m"
-position = ["l sin(theta)", "-l cos(theta)"]
-"""
+from tests.scene_texts import PENDULUM
 
 #: (what the case plants, the file's text, a fragment the one error must hold)
 CASES = [
