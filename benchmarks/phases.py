@@ -15,7 +15,7 @@ A sample goes to the phase of the outermost lagrade module on the stack that nam
   other       everything else in the loop (checkers' glue, caches, verdicts)
 
 Usage: python benchmarks/phases.py [TREE ...] [--repeat N] [--interval MS] [--limit N]
-       [--corpus batch|grading]
+       [--corpus batch|grading|variants]
 (no TREE: this tree). Each tree runs with its own interpreter when it has a .venv.
 """
 
@@ -71,9 +71,32 @@ PHASES = json.loads(sys.argv[2])
 interval = float(sys.argv[3]) / 1e3
 limit = int(sys.argv[4])
 corpus = sys.argv[5]
-if corpus == "grading":
+if corpus in ("grading", "variants"):
     from compare_feedback import grading_requests
     bodies = grading_requests()
+if corpus == "variants":
+    # a class: each scene request asked of one of 8 students' variants whose presentation is
+    # the declared one (the corpus's answers use the declared names), in turn
+    from lagrade.bank import get_scene
+    seeds = {}
+    def student_seeds(sid):
+        if sid not in seeds:
+            scene = get_scene(sid)
+            declared = (scene.default.names, scene.default.options)
+            shown = lambda v: (v.names, v.options)
+            found = [k for k in range(1, 400) if shown(scene.variant(k)) == declared]
+            seeds[sid] = found[:8]
+        return seeds[sid]
+    turned = []
+    for i, b in enumerate(bodies):
+        problem = b.get("problem")
+        plain_scene = isinstance(problem, dict) and "scene" in problem
+        if plain_scene and "seed" not in problem and "scene_text" not in problem:
+            choices = student_seeds(problem["scene"])
+            if choices:
+                b = {**b, "problem": {**problem, "seed": choices[i % len(choices)]}}
+        turned.append(b)
+    bodies = turned
 else:
     from batch_corpus import build_batch
     bodies = [r.body for r in build_batch(13)]
@@ -160,9 +183,10 @@ def main() -> None:
     parser.add_argument("--limit", type=int, default=0, help="only the first N requests")
     parser.add_argument(
         "--corpus",
-        choices=("batch", "grading"),
+        choices=("batch", "grading", "variants"),
         default="batch",
-        help="bench_batch's cold batch, or compare_feedback's grading corpus",
+        help="bench_batch's cold batch, compare_feedback's grading corpus, or that corpus "
+        "asked of 8 students' variants per scene (a class: one question per student)",
     )
     args = parser.parse_args()
     trees = [t.resolve() for t in args.trees] or [ROOT]
