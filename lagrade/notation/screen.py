@@ -20,6 +20,7 @@ import cmath
 import math
 import zlib
 from fractions import Fraction
+from functools import lru_cache
 
 from lagrade.notation.limits import MAX_EXPANDED_TERMS, MAX_NUMBER_BITS
 from lagrade.notation.nodes import Node
@@ -40,8 +41,7 @@ def needs_sympy(sides: tuple[Node | None, ...], imaginary: bool = False) -> bool
         for side in sides:
             if side is not None:
                 _structure(side)
-                for point in (0, 1):
-                    _value(side, point, imaginary)
+                _values(side, imaginary)
     except (_Sympy, ValueError, ZeroDivisionError, OverflowError, TypeError, RecursionError):
         return True
     return False
@@ -51,6 +51,12 @@ def _generic(name: str, point: int) -> float:
     """A positive value of the symbol `name` at generic point 0 or 1, the same every run."""
     h = zlib.crc32(f"{point}:{name}".encode())
     return 0.55 + (h % 100_003) / 100_003  # in (0.55, 1.55)
+
+
+@lru_cache(maxsize=4_096)  # a question has a few dozen names: each is hashed once
+def _generic_pair(name: str) -> tuple[float, float]:
+    """The symbol's values at both generic points."""
+    return _generic(name, 0), _generic(name, 1)
 
 
 # --- structure ------------------------------------------------------------------------------------
@@ -80,7 +86,11 @@ def _structure(node: Node) -> None:
 
 def _power(node: Node) -> None:
     """A power whose cost `build._power` would weigh: small exponents of screened bases only."""
-    exponent = fold(node.extra)
+    extra: Node = node.extra  # type: ignore[assignment]
+    if extra.kind == "num" and extra.value[1] == 1 and not constant(node.value):  # type: ignore
+        _integer_power_of_symbols(node.value, extra.value[0])  # type: ignore
+        return  # the usual x^2, as below without making Fractions
+    exponent = fold(extra)  # type: ignore[arg-type]
     if exponent is None:
         if constant(node.extra):  # 2^sqrt(2): a constant sympy may make rational
             raise _Sympy
@@ -101,9 +111,17 @@ def _power(node: Node) -> None:
             raise _Sympy
         return
     if exponent.denominator == 1:
-        k = _terms(base)  # type: ignore[arg-type]
-        n = abs(int(exponent))
-        if k > 1 and n > 1 and math.comb(n + k - 1, k - 1) > MAX_EXPANDED_TERMS:
+        _integer_power_of_symbols(base, int(exponent))  # type: ignore[arg-type]
+
+
+def _integer_power_of_symbols(base: Node, n: int) -> None:
+    """A power of a base with a symbol in it to the integer n: one whose expansion would
+    hold more than MAX_EXPANDED_TERMS terms is sympy's to weigh."""
+    if abs(n) > SMALL_EXPONENT:
+        raise _Sympy
+    if abs(n) > 1:
+        k = _terms(base)
+        if k > 1 and math.comb(abs(n) + k - 1, k - 1) > MAX_EXPANDED_TERMS:
             raise _Sympy
 
 
@@ -216,64 +234,98 @@ def _refuse():
     raise _Sympy
 
 
-def _value(node: Node, point: int, imaginary: bool):
-    """The node's value at a generic point; raises where sympy could see what the screen
-    cannot (see the module)."""
+def _values(node: Node, imaginary: bool) -> tuple:
+    """The node's values at both generic points, in one walk (each point's arithmetic as if
+    alone: the same operations in the same order); raises where sympy could see what the
+    screen cannot (see the module)."""
     kind = node.kind
     if kind == "num":
         p, q = node.value  # type: ignore[misc]
-        return p / q
+        v = p / q
+        return v, v
     if kind == "pi":
-        return math.pi
+        return _PI
     if kind == "sym":
         symbol = node.value
         if not getattr(symbol, "is_Symbol", False):
-            return 1j  # the declared imaginary unit
-        return _generic(symbol.name, point)  # type: ignore[union-attr]
+            return _I  # the declared imaginary unit
+        return _generic_pair(symbol.name)  # type: ignore[union-attr]
     if kind == "neg":
-        return -_value(node.value, point, imaginary)  # type: ignore[arg-type]
+        a, b = _values(node.value, imaginary)  # type: ignore[arg-type]
+        return -a, -b
     if kind == "add":
-        values = [_value(t, point, imaginary) for t in node.value]  # type: ignore[union-attr]
-        total = sum(values)
-        if abs(total) <= CANCELLED * sum(abs(v) for v in values):
-            raise _Sympy
-        return _checked(total, imaginary)
+        return _sum([_values(t, imaginary) for t in node.value], imaginary)  # type: ignore[union-attr]
     if kind == "mul":
-        total = 1.0
+        a = b = 1.0
         for factor in node.value:  # type: ignore[union-attr]
             if factor.kind == "inv":
-                total /= _value(factor.value, point, imaginary)
+                x, y = _values(factor.value, imaginary)
+                a /= x
+                b /= y
             else:
-                total *= _value(factor, point, imaginary)
-        return _nonzero(_checked(total, imaginary))
+                x, y = _values(factor, imaginary)
+                a *= x
+                b *= y
+        return _nonzero(_checked(a, imaginary)), _nonzero(_checked(b, imaginary))
     if kind == "pow":
-        base = _value(node.value, point, imaginary)  # type: ignore[arg-type]
-        exponent = _value(node.extra, point, imaginary)  # type: ignore[arg-type]
-        return _nonzero(_checked(base**exponent, imaginary))
+        a, b = _values(node.value, imaginary)  # type: ignore[arg-type]
+        x, y = _values(node.extra, imaginary)  # type: ignore[arg-type]
+        return _nonzero(_checked(a**x, imaginary)), _nonzero(_checked(b**y, imaginary))
     if kind == "call":
         name = _SGN.get(node.value, node.value)  # type: ignore[arg-type]
         argument, power = node.extra  # type: ignore[misc]
         if not hasattr(argument, "kind"):  # atan2, Max, Min: a tuple of arguments
-            values = [_value(a, point, imaginary) for a in argument]
-            if any(isinstance(v, complex) for v in values):
-                raise _Sympy
-            if name in ("atan2", "arctan2"):
-                result = math.atan2(values[0], values[1])
-            else:
-                result = max(values) if name.lower() == "max" else min(values)
-        else:
-            x = _value(argument, point, imaginary)
-            if isinstance(x, complex):
-                f = _COMPLEX.get(name)
-                if f is None:
-                    raise _Sympy
-                result = f(x)
-            else:
-                result = _REAL[name](x)
-        if power is not None:
-            result = result**power
-        return _nonzero(_checked(result, imaginary))
+            pairs = [_values(a, imaginary) for a in argument]
+            return tuple(
+                _call_of_several(name, [pair[k] for pair in pairs], power, imaginary)
+                for k in (0, 1)
+            )
+        a, b = _values(argument, imaginary)
+        return _call(name, a, power, imaginary), _call(name, b, power, imaginary)
     raise _Sympy  # ddt, or a kind the screen does not know
+
+
+def _sum(pairs: list[tuple], imaginary: bool) -> tuple:
+    """A sum at both points; one that cancels (x − x) is sympy's (it makes it 0)."""
+    out = []
+    for k in (0, 1):
+        values = [pair[k] for pair in pairs]
+        total = sum(values)
+        if abs(total) <= CANCELLED * sum(abs(v) for v in values):
+            raise _Sympy
+        out.append(_checked(total, imaginary))
+    return out[0], out[1]
+
+
+def _call(name: str, x, power: int | None, imaginary: bool):
+    """A function of one argument at one point."""
+    if isinstance(x, complex):
+        f = _COMPLEX.get(name)
+        if f is None:
+            raise _Sympy
+        result = f(x)
+    else:
+        result = _REAL[name](x)
+    if power is not None:
+        result = result**power
+    return _nonzero(_checked(result, imaginary))
+
+
+def _call_of_several(name: str, values: list, power: int | None, imaginary: bool):
+    """atan2, Max or Min at one point."""
+    if any(isinstance(v, complex) for v in values):
+        raise _Sympy
+    if name in ("atan2", "arctan2"):
+        result = math.atan2(values[0], values[1])
+    else:
+        result = max(values) if name.lower() == "max" else min(values)
+    if power is not None:
+        result = result**power
+    return _nonzero(_checked(result, imaginary))
+
+
+_PI = (math.pi, math.pi)
+_I = (1j, 1j)
 
 
 def _checked(value, imaginary: bool):
