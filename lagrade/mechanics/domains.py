@@ -15,6 +15,7 @@ import re
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from fractions import Fraction
+from functools import lru_cache
 
 import sympy as sp
 
@@ -140,6 +141,22 @@ class Domain:
 POSITIVE = Domain.parse("positive")
 NONNEGATIVE = Domain.parse("nonnegative")
 REAL = Domain.parse("real")
+
+
+def exact_number(value: object) -> sp.Expr:
+    """A parameter's value as an exact number, a decimal read as the rational it shows (9.81 is
+    981/100): what keys and handout checks compute with. sympy's `nsimplify` takes
+    milliseconds per value, and a class's variants draw their values from a few, so each is
+    converted once per process."""
+    try:
+        return _exact_number(value)
+    except TypeError:  # unhashable: not one of a scene's values, converted as it is
+        return sp.nsimplify(value, rational=True)
+
+
+@lru_cache(maxsize=4_096, typed=True)
+def _exact_number(value: object) -> sp.Expr:
+    return sp.nsimplify(value, rational=True)
 
 
 def within(

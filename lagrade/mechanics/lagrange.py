@@ -154,6 +154,8 @@ class Derivation:
 _DERIVED: OrderedDict[str, Derivation] = OrderedDict()
 _DERIVED_SIZE = 256
 _DERIVED_LOCK = threading.Lock()  # the answer page builds views in threads
+#: The derivations renamed back, by (L, coordinates, which derivatives), most recent last.
+_RENAMED: OrderedDict[tuple, tuple[sp.Expr, ...]] = OrderedDict()
 
 
 def _shared_derivation(
@@ -209,10 +211,23 @@ class LagrangianSystem:
         return _shared_derivation(self.L, self.jets)
 
     def _renamed(self, part: str) -> tuple[sp.Expr, ...]:
+        # Every variant of a scene has its own system of one L: what one of them derived is
+        # found by (L, coordinates) first, without renaming L to its canonical form again.
+        key = (self.L, self.jets, part)
+        with _DERIVED_LOCK:
+            found = _RENAMED.get(key)
+            if found is not None:
+                _RENAMED.move_to_end(key)
+                return found
         derivation, back = self._shared
         # Renaming is a bijection of symbols with the same assumptions: an expanded sum stays
         # one, so the result needs no second `expand` (which walks the whole expression again).
-        return tuple(e.xreplace(back) for e in getattr(derivation, part))
+        found = tuple(e.xreplace(back) for e in getattr(derivation, part))
+        with _DERIVED_LOCK:
+            _RENAMED[key] = found
+            if len(_RENAMED) > _DERIVED_SIZE:
+                _RENAMED.popitem(last=False)
+        return found
 
     @cached_property
     def generalized_momenta(self) -> tuple[sp.Expr, ...]:

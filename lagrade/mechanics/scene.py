@@ -35,6 +35,7 @@ from lagrade.mechanics.dissipation import DissipativeSystem
 from lagrade.mechanics.domains import (
     Domain,
     Parameter,
+    exact_number,
     keeps,
     vanishes_within,
     within,
@@ -548,10 +549,7 @@ class SceneVariant:
     @cached_property
     def numeric_values(self) -> dict[sp.Symbol, sp.Expr]:
         """The drawn parameter values as exact numbers (decimals read as rationals)."""
-        return {
-            self.parameter_symbols[n]: sp.nsimplify(v, rational=True)
-            for n, v in self.values.items()
-        }
+        return {self.parameter_symbols[n]: exact_number(v) for n, v in self.values.items()}
 
     @property
     def statement_fill(self) -> dict[str, str]:

@@ -6,7 +6,7 @@ import pytest
 import sympy as sp
 
 from lagrade.errors import LagradeError
-from lagrade.mechanics.domains import Domain
+from lagrade.mechanics.domains import Domain, exact_number
 
 
 @pytest.mark.parametrize(
@@ -44,3 +44,24 @@ def test_domains_are_read_exactly(text, lower, upper, lower_open, upper_open) ->
 def test_bad_domains_say_what_is_wrong(text, message) -> None:
     with pytest.raises(LagradeError, match=message):
         Domain.parse(text)
+
+
+@pytest.mark.parametrize("value", [9.81, 6.674e-11, 5.97e24, 0.1, 2, 1.5, -3.25, 1e-36, 2 / 3])
+def test_a_value_is_the_exact_number_sympy_reads_it_as(value) -> None:
+    """`exact_number` is sympy's nsimplify(rational=True), once per value: the same number
+    however often it is asked for, and an int and the float equal to it each as itself."""
+    assert exact_number(value) == sp.nsimplify(value, rational=True)
+    assert exact_number(value) is exact_number(value)
+    assert exact_number(2) == exact_number(2.0) == 2
+
+
+def test_a_value_that_cannot_be_kept_is_converted_as_sympy_converts_it() -> None:
+    """An unhashable value (no scene's) is not kept: it meets nsimplify itself, error and all."""
+
+    def outcome(convert):
+        try:
+            return convert([0.5])
+        except Exception as error:  # noqa: BLE001 - the comparison is the point
+            return type(error)
+
+    assert outcome(exact_number) == outcome(lambda v: sp.nsimplify(v, rational=True))

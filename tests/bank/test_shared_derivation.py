@@ -10,7 +10,7 @@ import pytest
 import sympy as sp
 
 from lagrade.bank.registry import SCENES
-from lagrade.mechanics.lagrange import _DERIVED, Derivation, LagrangianSystem
+from lagrade.mechanics.lagrange import _DERIVED, _RENAMED, Derivation, LagrangianSystem
 from lagrade.mechanics.scene import SceneVariant
 
 
@@ -45,7 +45,22 @@ def test_renamed_systems_share_one_derivation():
     scene = next(s for s in SCENES if s.id == "pendulum_on_cart")
     renamings = [scene.renames.get(c, (c,)) for c in scene.coordinates]
     _DERIVED.clear()
+    _RENAMED.clear()
     for names in itertools.product(*renamings):
         v = SceneVariant(scene, names=dict(zip(scene.coordinates, names, strict=True)))
         _ = LagrangianSystem(v.lagrangian, v.jets).euler_lagrange
     assert len(_DERIVED) == 1
+
+
+def test_a_system_of_the_same_l_finds_what_another_derived_without_renaming_again():
+    """Every variant of a scene builds its own system of one L: the second finds the first's
+    results by (L, coordinates), the very expressions, and derives or renames nothing."""
+    scene = next(s for s in SCENES if s.id == "pendulum_on_cart")
+    first, second = SceneVariant(scene), SceneVariant(scene)  # two variants, two Ls
+    assert first.lagrangian == second.lagrangian and first.jets == second.jets
+    _RENAMED.clear()
+    derived = LagrangianSystem(first.lagrangian, first.jets).euler_lagrange
+    _DERIVED.clear()  # a second derivation, or a renaming of L, would put one here
+    again = LagrangianSystem(second.lagrangian, second.jets)
+    assert again.euler_lagrange is derived
+    assert len(_DERIVED) == 0

@@ -28,6 +28,7 @@ import sympy as sp
 
 from lagrade.bank.scenefile.declaration import Declaration, QuantityDecl
 from lagrade.bank.scenefile.fields import Problems, expression
+from lagrade.mechanics import exact_number
 from lagrade.mechanics import lagrange as mech
 
 _DIGITS = 50
@@ -116,7 +117,7 @@ def parameter_points(variant: Any, count: int = 3) -> list[dict[sp.Symbol, sp.Ex
             value = drawn.get(name)
             if value is None:
                 value = rng.uniform(*variant.domains[name].sample_range())
-            point[symbol] = sp.nsimplify(value, rational=True)
+            point[symbol] = exact_number(value)
         points.append(point)
     return points
 

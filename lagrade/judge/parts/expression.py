@@ -31,7 +31,7 @@ from lagrade.judge.sampling import coordinate_range
 from lagrade.judge.situation import unit_text
 from lagrade.judge.tolerances import NUMERIC_TOLERANCE, ROUNDING
 from lagrade.judge.verdict import Verdict
-from lagrade.mechanics import Domain
+from lagrade.mechanics import Domain, exact_number
 
 
 def _domains_for(problem: Problem) -> dict:
@@ -153,7 +153,7 @@ def _handout_values(problem: Problem, given: Mapping | None) -> dict[sp.Symbol, 
         values = problem.variant.values
     if not values or set(problem.parameters) - set(values):
         return None
-    return {problem.parameters[n]: sp.nsimplify(v, rational=True) for n, v in values.items()}
+    return {problem.parameters[n]: exact_number(v) for n, v in values.items()}
 
 
 def _judge_number(
