@@ -15,7 +15,7 @@ A sample goes to the phase of the outermost lagrade module on the stack that nam
   other       everything else in the loop (checkers' glue, caches, verdicts)
 
 Usage: python benchmarks/phases.py [TREE ...] [--repeat N] [--interval MS] [--limit N]
-       [--corpus batch|grading|variants]
+       [--corpus batch|grading|variants|class]
 (no TREE: this tree). Each tree runs with its own interpreter when it has a .venv.
 """
 
@@ -71,7 +71,40 @@ PHASES = json.loads(sys.argv[2])
 interval = float(sys.argv[3]) / 1e3
 limit = int(sys.argv[4])
 corpus = sys.argv[5]
-if corpus in ("grading", "variants"):
+if corpus == "class":
+    # bench_grade's class, generated (not sampled); the loop below grades each sheet with
+    # grade_student, as `lagrade grade`'s worker does after its warm-up
+    import tempfile
+    from pathlib import Path
+    from bench_grade import ASSIGNMENT
+    from lagrade.assign.generate import generate
+    from lagrade.cli.demo_class import write_submissions
+    import lagrade.grading.batch as batch
+    root = Path(tempfile.mkdtemp(prefix="lagrade-phases-"))
+    (root / "assignment.toml").write_text(ASSIGNMENT)
+    roster = ["id,name"] + [f"b{i:04d},Student {i}" for i in range(limit or 60)]
+    (root / "roster.csv").write_text("\n".join(roster) + "\n")
+    generate(root / "assignment.toml", root / "roster.csv", 5, root / "out", formats=("md",))
+    manifest = json.loads((root / "out" / "manifest.json").read_text())
+    write_submissions(root / "subs", manifest, malformed=None, missing=None)
+    held = {}
+    def keep(manifest, rubric, tasks, jobs, limits):
+        held.update(manifest=manifest, rubric=rubric, tasks=tasks)
+        batch.forget_problems()
+        batch.warm_up(manifest)
+        return iter(())
+    batch._judged_here = keep
+    try:
+        batch.grade(root / "out" / "manifest.json", root / "subs", root / "grades", jobs=1)
+    except Exception:
+        pass  # no outcomes came back: the summary has nothing to write
+    from lagrade.grading.student import grade_student
+    def judge_one(task):
+        result = grade_student(held["manifest"], held["rubric"], task[1])
+        return json.dumps(result, sort_keys=True, default=str)
+    work = [(i, task) for i, task in enumerate(held["tasks"])]
+    limit = 0
+elif corpus in ("grading", "variants"):
     from compare_feedback import grading_requests
     bodies = grading_requests()
 if corpus == "variants":
@@ -100,10 +133,14 @@ if corpus == "variants":
 else:
     from batch_corpus import build_batch
     bodies = [r.body for r in build_batch(13)]
-import importlib; check = importlib.import_module("lagrade.judge.check")
-bodies = bodies[: limit or None]
-work = [(i, ({k: v for k, v in b.items() if k != "id"}, 2.0)) for i, b in enumerate(bodies)]
-work = check._diagnose_early(work)
+if corpus != "class":
+    import importlib; check = importlib.import_module("lagrade.judge.check")
+    bodies = bodies[: limit or None]
+    work = [(i, ({k: v for k, v in b.items() if k != "id"}, 2.0)) for i, b in enumerate(bodies)]
+    work = check._diagnose_early(work)
+    def judge_one(item):
+        verdict = check.check_request({"id": 0, **item[0]}, item[1], *(item[2:]))
+        return json.dumps(verdict.to_dict(timings=False), sort_keys=True, default=str)
 
 cache = {}
 counts = {k: 0 for k in list(PHASES) + ["other"]}
@@ -135,12 +172,10 @@ cpu0 = time.process_time()
 signal.setitimer(signal.ITIMER_PROF, interval, interval)
 verdicts = []
 for _, item in work:
-    request = {"id": 0, **item[0]}
     try:
-        v = check.check_request(request, item[1], *(item[2:]))
-        verdicts.append(v.verdict)
-    except Exception as e:
-        verdicts.append("refused")
+        verdicts.append(judge_one(item))
+    except Exception as error:  # named, so that a broken loop cannot pass for equal verdicts
+        verdicts.append(f"raised {type(error).__name__}: {error}")
 signal.setitimer(signal.ITIMER_PROF, 0, 0)
 cpu = time.process_time() - cpu0
 print(json.dumps({"counts": counts, "cpu": cpu, "n": len(work), "verdicts": verdicts}))
@@ -183,10 +218,11 @@ def main() -> None:
     parser.add_argument("--limit", type=int, default=0, help="only the first N requests")
     parser.add_argument(
         "--corpus",
-        choices=("batch", "grading", "variants"),
+        choices=("batch", "grading", "variants", "class"),
         default="batch",
-        help="bench_batch's cold batch, compare_feedback's grading corpus, or that corpus "
-        "asked of 8 students' variants per scene (a class: one question per student)",
+        help="bench_batch's cold batch, compare_feedback's grading corpus, that corpus "
+        "asked of 8 students' variants per scene (one question per student), or "
+        "bench_grade's class of --limit students (default 60) graded sheet by sheet",
     )
     args = parser.parse_args()
     trees = [t.resolve() for t in args.trees] or [ROOT]
@@ -217,7 +253,14 @@ def main() -> None:
         for tree in trees[1:]:
             other = runs[tree][0]["verdicts"]
             changed = sum(a != b for a, b in zip(base, other, strict=True))
-            print(f"verdict changes {trees[0].name} → {tree.name}: {changed}")
+            print(f"result changes {trees[0].name} → {tree.name}: {changed} (all but timings)")
+    for tree in trees:
+        raised = sum(v.startswith("raised ") for v in runs[tree][0]["verdicts"])
+        if raised:
+            print(
+                f"{tree.name}: {raised} requests raised (the first: "
+                f"{next(v for v in runs[tree][0]['verdicts'] if v.startswith('raised '))[:200]})"
+            )
 
 
 if __name__ == "__main__":

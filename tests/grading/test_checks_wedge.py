@@ -4,6 +4,8 @@ from __future__ import annotations
 
 import pytest
 
+from lagrade.judge.parts import reading
+
 from .conftest import WEDGE, judge
 
 T_TEXT = "1/2 m (x_M_dot^2 + q_dot^2 + 2 x_M_dot q_dot cos(alpha)) + 1/2 M x_M_dot^2"
@@ -152,6 +154,23 @@ def test_conserved_quantities_that_follow_from_the_students_own_wrong_lagrangian
         given={"lagrangian": own_L},
     )
     assert right.status == "correct" and not right.follows_from_own_answer
+
+
+def test_a_sheets_own_lagrangian_is_read_once_for_all_its_parts(monkeypatch):
+    """Equations, momenta and conserved quantities follow through from one own L: it is read
+    once per text (and question structure), and each part judges by the same reading."""
+    own_L = "1/2 m (x_M_dot^2 + q_dot^2) + 1/2 M x_M_dot^2 + m g q sin(alpha) + 0*q"
+    reads = []
+    real = reading._own_lagrangian
+    monkeypatch.setattr(reading, "_own_lagrangian", lambda p, t: reads.append(t) or real(p, t))
+    eom = judge(
+        WEDGE, "eom", ["(M+m) x_M_ddot = 0", "m q_ddot = m g sin(alpha)"], {"lagrangian": own_L}
+    )
+    kept = judge(WEDGE, "conserved", ["p_x_M = (M+m) x_M_dot"], {"lagrangian": own_L})
+    assert eom.follows_from_own_answer and reads == [own_L]
+    assert kept.status == "incorrect"  # half of what is conserved, judged by the same reading
+    judge(WEDGE, "conserved", ["p_x_M = (M+m) x_M_dot"], {"lagrangian": own_L + " + 0*x_M"})
+    assert reads == [own_L, own_L + " + 0*x_M"]  # another text is read on its own
 
 
 def test_momenta_labelled_or_in_order():

@@ -5,6 +5,7 @@ names read in any spelling, and the student's own L for follow-through."""
 from __future__ import annotations
 
 import re
+from collections import OrderedDict
 from collections.abc import Callable, Iterator, Mapping, Sequence
 from contextlib import contextmanager
 from contextvars import ContextVar
@@ -459,14 +460,38 @@ def read_single(problem: Problem, answer: Any, part: str, label: str) -> Read:
 def own_lagrangian(problem: Problem, given: Mapping | None) -> Compiled | None:
     """The student's own L from `given`, compiled, when it parses (follow-through is best
     effort). None for a scene with dissipation or given forces: its motion is not the own L's
-    alone, and an own L's motion would "conserve" what the damped motion does not."""
+    alone, and an own L's motion would "conserve" what the damped motion does not.
+
+    Read once per text and question structure (the vocabulary it is read with): every part
+    of a sheet that follows through (equations, momenta, cyclic, conserved, …) reads the
+    same L."""
     if not given or "lagrangian" not in given:
         return None
     if problem.variant is not None and problem.variant.scene.nonconservative:
         return None
+    text = given["lagrangian"]
+    if not isinstance(text, str):
+        return _own_lagrangian(problem, text)
+    kept: OrderedDict[str, Compiled | None] = problem.shared.setdefault(
+        "_own_lagrangians", OrderedDict()
+    )
+    if text in kept:
+        kept.move_to_end(text)
+        return kept[text]
+    own = kept[text] = _own_lagrangian(problem, text)
+    if len(kept) > OWN_LAGRANGIANS_KEPT:
+        kept.popitem(last=False)
+    return own
+
+
+#: Own Lagrangians kept per question structure: a class's, read once for all their parts.
+OWN_LAGRANGIANS_KEPT = 1_024
+
+
+def _own_lagrangian(problem: Problem, text: Any) -> Compiled | None:
     try:
         with reading_notes():  # the notes belong to the lagrangian part, not to this one
-            got = read_single(problem, given["lagrangian"], "lagrangian", "L")
+            got = read_single(problem, text, "lagrangian", "L")
             own = got.compiled
     except (ParseError, RequestError, UnsupportedExpression):
         return None
