@@ -176,19 +176,23 @@ def _project_out(R: np.ndarray, x: np.ndarray, backend):
 
 
 def row_rank(coef: np.ndarray, rows: Sequence[int]) -> int:
-    """The rank of the chosen rows at a typical point (the most common rank over the points)."""
+    """The rank of the chosen rows at a typical point (the most common rank over the points).
+    Each point's rows are scaled to unit length and its zero rows left out; the points whose
+    rows are zero alike share one stacked SVD (numpy's per-matrix LAPACK call, so each point's
+    singular values are those of an SVD of its own)."""
     if not rows:
         return 0
-    ranks = []
-    for p in range(coef.shape[0]):
-        M = np.array(coef[p, list(rows)], dtype=float)
-        norms = np.linalg.norm(M, axis=1)
-        M = M[norms > 0] / norms[norms > 0, None]
-        if M.size == 0:
-            ranks.append(0)
-            continue
-        sv = np.linalg.svd(M, compute_uv=False)
-        ranks.append(int((sv > RANK * sv[0]).sum()))
+    M = np.array(coef[:, list(rows)], dtype=float)  # (points, rows, columns)
+    norms = np.linalg.norm(M, axis=2)
+    nonzero = norms > 0
+    ranks = np.zeros(M.shape[0], dtype=int)
+    for pattern in np.unique(nonzero, axis=0):
+        if not pattern.any():
+            continue  # no row: rank 0
+        at = np.flatnonzero((nonzero == pattern).all(axis=1))
+        kept = M[at][:, pattern] / norms[at][:, pattern][:, :, None]
+        sv = np.linalg.svd(kept, compute_uv=False)
+        ranks[at] = (sv > RANK * sv[:, :1]).sum(axis=1)
     return int(np.bincount(ranks).argmax())
 
 

@@ -7,6 +7,8 @@ import mpmath
 import numpy as np
 import pytest
 import sympy as sp
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from lagrade.bank import get_scene
 from lagrade.judge.compiled import Compiled, finite_mask
@@ -16,6 +18,7 @@ from lagrade.judge.equivalence import affine_match, expressions_equal, lagrangia
 from lagrade.judge.evaluate import MP, UnsupportedExpression, compile_program, run
 from lagrade.judge.rows import equation_rows, in_span, row_rank, solve_accelerations
 from lagrade.judge.sampling import Space, seed_for
+from lagrade.judge.tolerances import RANK
 from lagrade.mechanics import Domain
 from lagrade.mechanics.lagrange import jet, t
 
@@ -233,3 +236,39 @@ def test_same_request_same_points():
     a, b = s.draw(seed_for("p", "lagrangian")), s.draw(seed_for("p", "lagrangian"))
     assert all(np.array_equal(a.env[k], b.env[k]) for k in a.env)
     assert t in a.env
+
+
+def _rank_point_by_point(coef: np.ndarray, rows: list[int]) -> int:
+    """row_rank's definition, one point at a time: the unit rows of the point, zero rows left
+    out, counted by their singular values; the most common rank wins."""
+    ranks = []
+    for p in range(coef.shape[0]):
+        M = np.array(coef[p, rows], dtype=float)
+        norms = np.linalg.norm(M, axis=1)
+        M = M[norms > 0] / norms[norms > 0, None]
+        sv = np.linalg.svd(M, compute_uv=False) if M.size else np.zeros(0)
+        ranks.append(int((sv > RANK * sv[0]).sum()) if sv.size else 0)
+    return int(np.bincount(ranks).argmax())
+
+
+@settings(max_examples=300, deadline=None)
+@given(
+    st.integers(1, 12),
+    st.integers(1, 4),
+    st.integers(1, 5),
+    st.integers(0, 2**32 - 1),
+    st.sampled_from(["plain", "dependent", "zero rows", "all zero"]),
+)
+def test_the_rank_of_stacked_points_is_the_rank_point_by_point(points, m, columns, seed, shape):
+    """The points whose zero rows fall alike share one SVD: the rank found is the one found
+    point by point, with rows that vanish at some points only and rows in proportion."""
+    rng = np.random.default_rng(seed)
+    coef = rng.normal(size=(points, m, columns)) * rng.choice([1.0, 1e-9, 1e6], (points, m, 1))
+    if shape == "dependent" and m > 1:
+        coef[:, -1] = rng.normal() * coef[:, 0]
+    elif shape == "zero rows":
+        coef[rng.random(points) < 0.5, rng.integers(m)] = 0.0
+    elif shape == "all zero":
+        coef[:] = 0.0
+    rows = sorted({int(r) for r in rng.integers(0, m, rng.integers(1, m + 1))})
+    assert row_rank(coef, rows) == _rank_point_by_point(coef, rows)
