@@ -90,15 +90,16 @@ def _judge_chunk(entries: list[tuple[int, tuple]]) -> list[tuple[int, str, Any]]
     noted as soon as it is known, so that a worker killed later in the chunk loses none of it
     (`_settle`)."""
     results = []
-    for position, item in entries:
-        deadline(PREPARE_LIMIT + GRACE)
+    deadline(PREPARE_LIMIT + GRACE)
+    for k, (position, item) in enumerate(entries):
         try:
             result: tuple[int, str, Any] = (position, "ok", check_request(*item))
         except LagradeError as error:
             result = (position, "refused", error)
         except Exception as error:  # noqa: BLE001 - a bug of ours costs its request only
             result = (position, "error", f"{type(error).__name__}: {error}")
-        note(result)
+        # noted, with the next request's deadline in the same message
+        note(result, PREPARE_LIMIT + GRACE if k + 1 < len(entries) else None)
         results.append(result)
     return results
 
@@ -111,8 +112,10 @@ def _settle(outcome: Outcome, entries: list[tuple[int, tuple]]):
         noted = outcome.value
     else:
         noted = outcome.value if isinstance(outcome.value, tuple) else ()
-    settled = {
-        position: Outcome(position, status, value=value, reason=str(value))
+    settled = {  # a reason only where there is one to give (a verdict's repr is no reason)
+        position: Outcome(
+            position, status, value=value, reason="" if status == "ok" else str(value)
+        )
         for position, status, value in noted
     }
     rest = [entry for entry in entries if entry[0] not in settled]

@@ -135,9 +135,14 @@ def deadline(seconds: float) -> None:
         _parent.send(("deadline", float(seconds)))
 
 
-def note(value: Any) -> None:
+def note(value: Any, then_within: float | None = None) -> None:
     """Inside a worker: record `value` (picklable, small) as progress of the item in hand. If the
     worker is killed before the item finishes, its `timeout` Outcome's value is the tuple of
-    these notes in order. Outside a worker it does nothing."""
+    these notes in order. `then_within`: what follows must finish within these seconds from
+    now (`deadline`), in the same message: one pipe round a request, not two. Outside a worker
+    it does nothing."""
     if _parent is not None:
-        _parent.send(("note", value))
+        if then_within is None:
+            _parent.send(("note", value))
+        else:
+            _parent.send(("note", value, float(then_within)))

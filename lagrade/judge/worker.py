@@ -233,6 +233,8 @@ class Pool:
                 for conn in wait(list(busy), timeout=max(0.0, soonest - time.monotonic())):
                     worker = busy[conn]
                     done = self._receive(worker)
+                    while done is None and conn.poll(0):  # its next messages, already sent
+                        done = self._receive(worker)
                     if done is None:
                         continue
                     del busy[conn]
@@ -332,6 +334,8 @@ class Pool:
             return None
         if message[0] == "note":
             worker.notes.append(message[1])
+            if len(message) > 2:  # and the deadline of what follows
+                worker.until = time.monotonic() + message[2]
             return None
         _, status, value = message
         elapsed = time.monotonic() - worker.since
