@@ -9,19 +9,14 @@ from collections.abc import Mapping, Sequence
 import numpy as np
 import sympy as sp
 
-from lagrade.judge.compiled import Compiled, to_length
+from lagrade.judge.compiled import Compiled, tiled, to_length
 from lagrade.judge.evaluate import FLOAT, Program, run_hyperdual
 from lagrade.judge.sampling import memo_inputs
 from lagrade.mechanics import Jet, t
 
 
 def _tile(x, copies: int, n: int, backend):
-    """x (a value per point) repeated `copies` times end to end: np.tile's array, built by
-    concatenation, which costs a third of np.tile's dispatch for the few short arrays here."""
-    x = to_length(x, n, backend)
-    if np.ndim(x) != 1 or copies < 1:
-        return np.tile(x, copies)
-    return np.concatenate((x,) * copies)
+    return tiled(to_length(x, n, backend), copies)
 
 
 def _unit_blocks(copies: int, n: int, hot: int, backend):

@@ -12,6 +12,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from lagrade.errors import ReferenceUndefined
+from lagrade.judge.compiled import tiled
 from lagrade.judge.driver import cached_problem
 from lagrade.judge.sampling import Space
 from lagrade.mechanics import Domain, jet, t
@@ -135,3 +136,24 @@ def test_validity_tests_are_pointwise(spec, parts):
                     v[rng.random(v.size) < 0.2] = 0.0
             blocks = [{s: v[i : i + 6].copy() for s, v in union.items()} for i in range(0, 24, 6)]
             assert np.array_equal(valid(union), np.concatenate([valid(b) for b in blocks]))
+
+
+@settings(max_examples=60, deadline=None)
+@given(
+    n=st.integers(0, 9),
+    copies=st.integers(0, 5),
+    kind=st.sampled_from([float, complex, object, "2d", "0d"]),
+)
+def test_tiled_is_np_tile(n, copies, kind):
+    """The seeds of every hyper-dual pass are tiled points: `tiled` must be np.tile's array."""
+    x = np.arange(n, dtype=float) * 0.5 - 1.0
+    if kind == "2d":
+        x = x.reshape(1, n)
+    elif kind == "0d":
+        x = np.float64(2.5)
+    else:
+        x = x.astype(kind)
+    ours, theirs = tiled(x, copies), np.tile(x, copies)
+    assert ours.dtype == theirs.dtype
+    assert ours.shape == theirs.shape
+    assert np.array_equal(ours, theirs)
