@@ -88,12 +88,21 @@ class Space:
         test of a draw is pointwise — a point's verdict is its own, whatever else is asked with
         it (elementwise arithmetic, per-point determinants, per-point high precision) — or at
         least keeps every point of a group whenever it keeps every point of a union of groups
-        (`lagrangian_mask` asks `finite_mask` about all the points when float64 fails at one)."""
+        (`lagrangian_mask` asks `finite_mask` about all the points when float64 fails at one).
+        A test that raises here (a point where a matrix has no factorisation) is left to the
+        loop too: it may never reach that point, or raise there as it always has."""
         if groups < 1:
             return None
         env = self._blocks(np.random.default_rng(seed), free, per_group, groups)
-        if env is None or (valid is not None and not valid(env).all()):
+        if env is None:
             return None
+        if valid is not None:
+            try:
+                ok = valid(env)
+            except Exception:  # noqa: BLE001 - the loop raises it, or not, as before
+                return None
+            if not ok.all():
+                return None
         return Points(env, np.repeat(np.arange(groups), per_group))
 
     def _draw_by_groups(
