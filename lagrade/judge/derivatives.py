@@ -9,14 +9,14 @@ from collections.abc import Mapping, Sequence
 import numpy as np
 import sympy as sp
 
-from lagrade.judge.compiled import Compiled, to_length
+from lagrade.judge.compiled import Compiled, tiled, to_length
 from lagrade.judge.evaluate import FLOAT, Program, run_hyperdual
 from lagrade.judge.sampling import memo_inputs
 from lagrade.mechanics import Jet, t
 
 
 def _tile(x, copies: int, n: int, backend):
-    return np.tile(to_length(x, n, backend), copies)
+    return tiled(to_length(x, n, backend), copies)
 
 
 def _unit_blocks(copies: int, n: int, hot: int, backend):

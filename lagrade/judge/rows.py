@@ -10,7 +10,7 @@ from dataclasses import dataclass
 import mpmath
 import numpy as np
 
-from lagrade.judge.compiled import Compiled, to_length, total
+from lagrade.judge.compiled import Compiled, tiled, to_length, total
 from lagrade.judge.derivatives import euler_lagrange_values
 from lagrade.judge.evaluate import FLOAT
 from lagrade.judge.sampling import memo_inputs
@@ -43,7 +43,7 @@ def _acceleration_blocks(jets: Sequence[Jet], env: Mapping, backend) -> dict:
     n_pts = len(next(iter(env.values())))
     n = len(jets)
     copies = n + 2
-    stacked = {s: np.tile(v, copies) for s, v in env.items()}
+    stacked = {s: tiled(v, copies) for s, v in env.items()}
     for k, j in enumerate(jets):
         q_dd = np.zeros(copies * n_pts)
         q_dd[(k + 1) * n_pts : (k + 2) * n_pts] = 1.0

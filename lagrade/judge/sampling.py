@@ -4,6 +4,7 @@ values; and a memo for inputs derived from the points alone."""
 
 from __future__ import annotations
 
+import math
 import re
 import zlib
 from collections.abc import Callable, Iterable, Mapping, Sequence
@@ -65,9 +66,50 @@ class Space:
         no are redrawn; a group whose parameters leave the reference undefined is redrawn whole.
         Groups still missing then are searched for where the reference is defined on a small
         part of the box only (`_search`).
+
+        Most draws keep every point of their first blocks: those are drawn at once and `valid`
+        asked once (`_first_blocks`); only a draw where some point fails goes group by group.
         """
-        rng = np.random.default_rng(seed)
         free_set = set(self.parameters) if free is None else set(free)
+        first = self._first_blocks(seed, free_set, valid, groups, per_group)
+        if first is not None:
+            return first
+        return self._draw_by_groups(seed, free_set, valid, groups, per_group)
+
+    def _first_blocks(
+        self, seed: int, free: set, valid: Callable | None, groups: int, per_group: int
+    ) -> Points | None:
+        """The draw when `valid` keeps every point of the first block of every group: then the
+        group-by-group loop would ask for nothing more, and these are its points exactly (the
+        same random numbers in the same order, `_blocks`). None otherwise, the stream untouched
+        for the loop (it starts again from `seed`).
+
+        One call of `valid` on all the points stands for one per group because every validity
+        test of a draw is pointwise — a point's verdict is its own, whatever else is asked with
+        it (elementwise arithmetic, per-point determinants, per-point high precision) — or at
+        least keeps every point of a group whenever it keeps every point of a union of groups
+        (`lagrangian_mask` asks `finite_mask` about all the points when float64 fails at one).
+        A test that raises here (a point where a matrix has no factorisation) is left to the
+        loop too: it may never reach that point, or raise there as it always has."""
+        if groups < 1:
+            return None
+        env = self._blocks(np.random.default_rng(seed), free, per_group, groups)
+        if env is None:
+            return None
+        if valid is not None:
+            try:
+                ok = valid(env)
+            except Exception:  # noqa: BLE001 - the loop raises it, or not, as before
+                return None
+            if not ok.all():
+                return None
+        return Points(env, np.repeat(np.arange(groups), per_group))
+
+    def _draw_by_groups(
+        self, seed: int, free_set: set, valid: Callable | None, groups: int, per_group: int
+    ) -> Points:
+        """The draw group by group, each redrawn where `valid` says no (`draw`)."""
+        rng = np.random.default_rng(seed)
         chosen: list[dict[sp.Symbol, np.ndarray]] = []
         for _ in range(groups):
             for attempt in range(len(WIDEN) * 2):
@@ -178,6 +220,43 @@ class Space:
         block[t] = rng.uniform(0.1, 3.0, k)
         return block
 
+    def _blocks(self, rng, free: set, k: int, count: int) -> dict | None:
+        """`count` first blocks of k points, as `count` successive `_group` calls (widen 1)
+        draw them, concatenated, from one call of the generator: each `rng.uniform(lo, hi, n)`
+        there is lo + (hi − lo)·u of the next n doubles of the stream, and the calls' counts
+        do not depend on the values drawn, so the stream can be cut up in advance. None when a
+        range is one `rng.uniform` refuses (the group-by-group draw raises its error)."""
+        plan = self._stream_plan(free)
+        if any(not _drawable(lo, hi) for _, _, lo, hi in plan):
+            return None
+        width = sum(_stream_width(kind, k) for _, kind, _, _ in plan)
+        u = rng.random(count * width).reshape(count, width)
+        block: dict[sp.Symbol, np.ndarray] = {}
+        col = 0
+        for s, kind, lo, hi in plan:
+            n = _stream_width(kind, k)
+            block[s] = _from_uniform(kind, lo, hi, u[:, col : col + n], k).reshape(-1)
+            col += n
+        return block
+
+    def _stream_plan(self, free: set) -> list[tuple[sp.Symbol, str, float, float]]:
+        """What `_group` draws, in order: (symbol, kind, lo, hi) with kind "fixed" (a handout
+        value, lo, drawing nothing), "group" (one value per group), "point" (one per point) or
+        "away" (one per point, then one more per point for `_away_from_zero`)."""
+        plan = []
+        for s, dom in self.parameters.items():
+            if s not in free and s in self.values:
+                value = float(self.values[s])
+                plan.append((s, "fixed", value, value))
+            else:
+                plan.append((s, "group", *dom.sample_range(1.0)))
+        for j in self.jets:
+            lo, hi = self.coordinate_domains.get(j.name) or coordinate_range(j.name)
+            for s, (a, b) in ((j.q, (lo, hi)), (j.dot, (-2.0, 2.0)), (j.ddot, (-2.0, 2.0))):
+                plan.append((s, "away" if a < 0 < b else "point", a, b))
+        plan.append((t, "point", 0.1, 3.0))
+        return plan
+
 
 #: How far the unbounded sides of the domains are stretched on successive attempts to find
 #: points where the reference is defined (two attempts each): the physical scale first.
@@ -186,6 +265,33 @@ WIDEN = (1.0, 10.0, 100.0)
 #: candidates drawn per sub-box around a point found there.
 PILOT = (512, 8192)
 SUB_BOX_DRAWS = 64
+
+
+def _drawable(lo: float, hi: float) -> bool:
+    """Whether rng.uniform(lo, hi) draws (it refuses a range that is negative or not finite)."""
+    span = float(hi) - float(lo)
+    return math.isfinite(span) and span >= 0
+
+
+def _stream_width(kind: str, k: int) -> int:
+    """Doubles of the stream a symbol of `_stream_plan` takes per group of k points."""
+    return {"fixed": 0, "group": 1, "point": k, "away": 2 * k}[kind]
+
+
+def _from_uniform(kind: str, lo: float, hi: float, u: np.ndarray, k: int) -> np.ndarray:
+    """A symbol's values (groups, k) from its doubles u (groups, width): the arithmetic of
+    `rng.uniform` (lo + (hi − lo)·u) and of `_away_from_zero`, elementwise, so every value is
+    the one the group-by-group draw makes."""
+    lo, hi = float(lo), float(hi)
+    if kind == "fixed":
+        return np.full((u.shape[0], k), lo)
+    x = lo + (hi - lo) * u[:, :k]
+    if kind == "group":
+        return np.repeat(x, k, axis=1)
+    if kind == "away":
+        near = np.abs(x) < 0.2
+        x = np.where(near, np.sign(x + 1e-300) * (0.2 + (0.0 + 0.3 * u[:, k:])), x)
+    return x
 
 
 def _away_from_zero(rng, lo: float, hi: float, k: int) -> np.ndarray:

@@ -15,7 +15,7 @@ import re
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from fractions import Fraction
-from functools import lru_cache
+from functools import cached_property, lru_cache
 
 import sympy as sp
 
@@ -107,8 +107,14 @@ class Domain:
         """The sympy symbol of a parameter `name` in this domain."""
         return sp.Symbol(name, **self.assumptions)
 
+    @cached_property
+    def bounds(self) -> tuple[float, float]:
+        """(lower, upper) as floats, converted once: float() of a sympy number costs
+        microseconds, and every draw of sample points asks for the ranges again."""
+        return float(self.lower), float(self.upper)
+
     def contains(self, value: float) -> bool:
-        lo, hi = float(self.lower), float(self.upper)
+        lo, hi = self.bounds
         above = value > lo if self.lower_open else value >= lo
         below = value < hi if self.upper_open else value <= hi
         return above and below
@@ -122,7 +128,7 @@ class Domain:
         `widen` stretches the unbounded sides' span (10, 100): where an expression is defined
         only far out (sqrt(y − 2)·sqrt(y − 6) for real y: y ≥ 6), a search finds it.
         """
-        lo, hi = float(self.lower), float(self.upper)
+        lo, hi = self.bounds
         span = 3.0 * widen
         if math.isinf(lo) and math.isinf(hi):
             return (-span, span)
