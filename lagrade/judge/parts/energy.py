@@ -48,11 +48,11 @@ from lagrade.judge.verdict import Verdict
 
 
 def judge_lagrangian(
-    problem: Problem, expr: sp.Expr | Compiled, diagnose: bool = True
+    problem: Problem, expr: sp.Expr | Compiled
 ) -> tuple[str, float, list[str], Decision, dict[str, float] | None, tuple[str, ...]]:
     """(status, score, feedback, outcome, witness, mistakes) for a Lagrangian answer (a sympy
     expression, or compiled already); the witness is a point where the motion differs, when it
-    does. `diagnose=False`: a wrong answer's status alone, without feedback."""
+    does."""
     answer = expr if isinstance(expr, Compiled) else Compiled.of(expr)
     points = problem.points("lagrangian")
     if has_acceleration(problem, answer):  # before E(L), which needs an L(q, q̇, t)
@@ -105,8 +105,6 @@ def judge_lagrangian(
             None,
             ("V_minus_T",),
         )
-    if not diagnose:
-        return ("incorrect", 0.0, [], out, None, ())
     mutant = problem.catalogue.match_lagrangian(answer, points, match.answer_el)
     mistakes: tuple[str, ...] = (mutant.kind,) if mutant is not None else ()
     witness = witness_point(points, out, answer)
@@ -195,11 +193,7 @@ def read_potential(problem: Problem, answer: Any) -> Read:
 
 def check_lagrangian(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
     got = read_lagrangian(problem, answer)
-    tree = got.from_tree
-    judged = judge_lagrangian(problem, got.compiled, diagnose=not tree)
-    if judged[0] != "correct" and tree:  # a wrong answer's feedback reads its sympy form
-        judged = judge_lagrangian(problem, got.sympy_compiled)
-    status, score, feedback, out, witness, mistakes = judged
+    status, score, feedback, out, witness, mistakes = judge_lagrangian(problem, got.compiled)
     if status != "correct":
         named = not mistakes or "missing_factor" in mistakes  # see dimensions.tells
         dimensions = hint_for(problem, got, "energy") if named else ""

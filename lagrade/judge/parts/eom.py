@@ -49,18 +49,12 @@ def check_eom(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
     lines = read_eom(problem, answer)
     if not lines.reads:
         return invalid("eom", "Give one equation of motion per coordinate.")
-    tree = any(r.from_tree for r in lines.reads)
-    verdict = _judge(problem, lines, [r.compiled for r in lines.reads], given, not tree)
-    if verdict is None:  # wrong: the feedback reads the sympy forms (`Read.sympy_compiled`)
-        verdict = _judge(problem, lines, [r.sympy_compiled for r in lines.reads], given)
-    return verdict  # type: ignore[return-value]
+    return _judge(problem, lines, [r.compiled for r in lines.reads], given)
 
 
-def _judge(
-    problem: Problem, lines, compiled: list[Compiled], given: Mapping | None, diagnose=True
-) -> Verdict | None:
-    """The verdict on the equations read (`lines`), compiled; None for a wrong equation when
-    not `diagnose` (the verdict then needs its feedback, found another time)."""
+def _judge(problem: Problem, lines, compiled: list[Compiled], given: Mapping | None) -> Verdict:
+    """The verdict on the equations read (`lines`), compiled from their trees: decided once, and
+    a wrong one's feedback read from the same programs."""
     reads = lines.reads
     echoes = lines.echoes
     entry = [k for k, e in enumerate(lines.entries) if isinstance(e, Read)]  # read → position
@@ -103,8 +97,6 @@ def _judge(
         if out.equal:
             right.append(k)
             continue
-        if not diagnose:
-            return None
         wrong.append(k)
         # The witness is one state, the first wrong equation's, whole (coordinates and
         # velocities): a later sentence quotes its own state only when it is that one, so that

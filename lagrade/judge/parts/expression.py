@@ -301,7 +301,6 @@ def _check_one(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
     decided = method.decide_programs(ans.whole, ref.whole, _domains_for(problem))
     if decided:
         return Verdict("expression", "correct", 1.0, (), got.echo, "exact_then_adaptive")
-    ans = got.sympy_compiled  # not right: the feedback reads the sympy form (`Read`)
     points = problem.points("expression")
     out = expressions_equal(ans, ref, points)
     if decided is not None:

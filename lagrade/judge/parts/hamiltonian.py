@@ -75,8 +75,6 @@ def check_hamiltonian(problem: Problem, answer: Any, given: Mapping | None) -> V
     points = problem.points(POINTS)
     h = problem.compiled_reference("h", lambda: problem.system.energy_function)
     out = decide(_residual(problem, got.compiled, h, points, shifted=False))
-    if not out.equal and got.compiled is not got.sympy_compiled:
-        out = decide(_residual(problem, got.sympy_compiled, h, points, shifted=False))
     if out.equal:
         return Verdict(PART, "correct", 1.0, (), got.echo, method_name(out))
     shifted = decide(_residual(problem, got.compiled, h, points, shifted=True))
@@ -86,7 +84,7 @@ def check_hamiltonian(problem: Problem, answer: Any, given: Mapping | None) -> V
             "that changes no motion.",
         )
         return Verdict(PART, "correct", 1.0, note, got.echo, method_name(out, shifted))
-    ans = got.sympy_compiled
+    ans = got.compiled
     witness = witness_point(phase_points(problem, points), out, ans)
     kind, message = _diagnose(problem, ans, points)
     where = where_text(witness, problem)

@@ -57,7 +57,7 @@ class Read:
     without sympy, which is built (`lhs`, `rhs`, `expr`) only where a step needs algebra: a
     diagnosis, a hint, a number worked out exactly."""
 
-    __slots__ = ("_lhs", "_rhs", "echo", "_rename", "_compiled", "_sympy_compiled", "_expr")
+    __slots__ = ("_lhs", "_rhs", "echo", "_rename", "_compiled", "_expr")
     __slots__ += ("_symbols", "parsed")
 
     def __init__(
@@ -69,7 +69,6 @@ class Read:
         #: form a preview shows; None for sympy objects from Python callers.
         self.parsed = parsed
         self._compiled: Compiled | None = None
-        self._sympy_compiled: Compiled | None = None
         self._expr: sp.Expr | None = None
         self._symbols: frozenset | None = None
 
@@ -133,32 +132,17 @@ class Read:
 
     @property
     def compiled(self) -> Compiled:
-        """The item (lhs − rhs) compiled by its top-level terms; from the tree when it was read
-        from one."""
+        """The item (lhs − rhs) compiled by its top-level terms: from the tree when it was read
+        from one (its sympy form built only if something asks for `expr`), else from its sympy
+        form. Every decision and every number the feedback quotes reads this one program."""
         if self._compiled is None:
             sides = self._sides()
             program = compile_tree(sides, self._rename) if sides else None
             if program is None:
-                self._compiled = self.sympy_compiled
+                self._compiled = Compiled.of(self.expr)
             else:
                 self._compiled = Compiled(lambda: self.expr, program)
         return self._compiled
-
-    @property
-    def from_tree(self) -> bool:
-        """Whether `compiled` is the tree's own program, not the sympy form's: asked without
-        building the sympy form (`compiled is not sympy_compiled` would build it)."""
-        return self.compiled is not self._sympy_compiled
-
-    @property
-    def sympy_compiled(self) -> Compiled:
-        """The item compiled from its sympy form: what the feedback on a wrong answer reads, so
-        that the point it quotes and the numbers it shows are those the sympy form gives (the
-        tree's program agrees with it to the last bits only, and a witness is chosen among
-        points where the answer is equally wrong)."""
-        if self._sympy_compiled is None:
-            self._sympy_compiled = Compiled.of(self.expr)
-        return self._sympy_compiled
 
     @property
     def symbols(self) -> frozenset:
@@ -176,13 +160,9 @@ class Read:
 
 
 def decided(got: Read, decide: Callable[[Compiled], Any]) -> tuple[Any, Compiled]:
-    """(outcome, the compiled answer it was decided on): `decide` on the item compiled from its
-    tree, and when that is not `equal`, again on its sympy form — the feedback on a wrong answer
-    quotes the sympy form's numbers (`Read.sympy_compiled`)."""
-    out = decide(got.compiled)
-    if out.equal or got.compiled is got.sympy_compiled:
-        return out, got.compiled
-    return decide(got.sympy_compiled), got.sympy_compiled
+    """(outcome, the compiled answer it was decided on): `decide` once, on the item compiled
+    from its tree — the program the feedback on a wrong answer reads too."""
+    return decide(got.compiled), got.compiled
 
 
 def _collect(node: Any, found: set) -> None:
