@@ -115,8 +115,8 @@ def underflowed(answer: Compiled, values: tuple[np.ndarray, np.ndarray]) -> bool
     """A nonzero answer whose values are 0 at (nearly) every point — (x − b)^5001 at
     |x − b| < 0.86 underflows — matches any mutant that underflows too: no evidence, so no
     mistake is named (when unsure, say less, never something false)."""
-    size = values[1]
-    return answer.expr != 0 and np.count_nonzero(size > 0) < min(MIN_EVIDENCE, size.size)
+    size = values[1]  # the values first: the answer's sympy form is built only when they say so
+    return np.count_nonzero(size > 0) < min(MIN_EVIDENCE, size.size) and answer.expr != 0
 
 
 class Catalogue(MutantValues):
