@@ -59,6 +59,7 @@ EXPORTS = {
         "collapse_trig",
         "coordinates_through_positions",
         "coordinates_to_carry",
+        "exact_number",
         "deciding_values",
         "frequencies_from",
         "generalized_eigenvalues",
