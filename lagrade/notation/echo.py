@@ -57,6 +57,8 @@ def _render(node: Any, text: str) -> tuple[str, int]:
 
 
 def _at_least(node: Any, text: str, strength: int) -> str:
+    if node.kind == "sym":  # the commonest factor, an atom: never bracketed
+        return getattr(node.value, "name", None) or text[node.start : node.end]
     shown, own = _render(node, text)
     return shown if own >= strength else f"({shown})"
 
@@ -72,7 +74,7 @@ def _number(node: Any, text: str) -> tuple[str, int]:
     """A number as written (9.81, 1.6e-19, 1E100), else p or p/q (from a translation)."""
     p, q = node.value
     written = text[node.start : node.end].strip("() \t")
-    if DECIMAL.fullmatch(written):
+    if written.isdecimal() or DECIMAL.fullmatch(written):  # isdecimal: what \d+ matches
         return written, _ATOM
     return (str(p), _ATOM) if q == 1 else (f"{p}/{q}", _PRODUCT)
 
