@@ -76,13 +76,24 @@ class Source:
         texts: list[str] = []
         starts: list[int] = []
         ends: list[int] = []
+        # An untouched slice (normalise's usual source) maps a span by its offset: no `locate`
+        # per piece, of which normalise writes one per character.
+        n = len(self.text) if self.starts is None else -1
+        offset = self.offset
         for piece, start, end in pieces:
             if not piece:
                 continue
-            s, e = self.locate(start, end)
+            if start <= end <= n:
+                s, e = offset + start, offset + end
+            else:
+                s, e = self.locate(start, end)
             texts.append(piece)
-            starts.extend([s] * len(piece))
-            ends.extend([e] * len(piece))
+            if len(piece) == 1:
+                starts.append(s)
+                ends.append(e)
+            else:
+                starts.extend([s] * len(piece))
+                ends.extend([e] * len(piece))
         derived = Source(self.original, "".join(texts), stop=self.stop, starts=starts, ends=ends)
         derived.notes = self.notes
         return derived
@@ -91,6 +102,7 @@ class Source:
 # --- Unicode normalisation -----------------------------------------------------------------------
 
 _ASCII_CONTROL = re.compile(r"[\x00-\x08\x0b\x0c\x0e-\x1f\x7f]")
+_CONTROLS = frozenset(chr(c) for c in range(128) if _ASCII_CONTROL.match(chr(c)))
 
 # Letters that look exactly like Latin ones: a student (or a paste) could hide a different symbol.
 _LOOKALIKES = frozenset("οΟΑΒΕΖΗΙΚΜΝΡΤΥΧϲϳѕіјԁһ")
@@ -153,7 +165,7 @@ def normalise(src: Source) -> Source:
     while i < n:
         c = text[i]
         if c < "\x80":
-            if _ASCII_CONTROL.match(c):
+            if c in _CONTROLS:
                 src.fail(_hidden_message(c, src.locate(i, i)[0]), i, i + 1)
             if after_greek and c.isalpha():
                 pieces.append((" ", i, i))
