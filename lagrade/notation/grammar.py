@@ -109,7 +109,11 @@ class Parser(NameRules):
                 else:
                     factors.append(self.node("inv", factor.start, factor.end, factor))
                     after_division = True
-            elif tok.kind in ("name", "num") or tok.text == "(" or self.opens_bars(tok):
+            elif (
+                tok.kind in ("name", "num")
+                or tok.text == "("
+                or (tok.text == "|" and self.opens_bars(tok))
+            ):
                 if tok.kind == "num" and tokens[self.pos - 1].kind == "num":
                     self.two_numbers(tok)
                 factors.append(self.parse_power())
@@ -256,9 +260,11 @@ class Parser(NameRules):
 
     def parse_group(self) -> Node:
         """'(' sum ')'"""
-        opening = self.next()
+        tokens = self.tokens
+        opening = tokens[self.pos]
+        self.pos += 1
         self.enter(opening)
-        tok = self.peek()
+        tok = tokens[self.pos]
         if tok.text == ")":
             self.fail("Empty brackets '()'.", opening.start, tok.end)
         if tok.kind == "end":
@@ -268,16 +274,12 @@ class Parser(NameRules):
                 opening.end,
             )
         inner = self.parse_sum()
-        closing = self.peek()
+        closing = tokens[self.pos]
         if closing.text != ")":
             if closing.kind == "end":
-                self.fail(
-                    self.missing_close(opening),
-                    opening.start,
-                    opening.end,
-                )
+                self.fail(self.missing_close(opening), opening.start, opening.end)
             self.unexpected(closing)
-        self.next()
+        self.pos += 1
         self.depth -= 1
         # inner._replace(start=…, end=…), without its Python-level detour; not a new node
         return _new(Node, (inner.kind, opening.start, closing.end, inner.value, inner.extra))
