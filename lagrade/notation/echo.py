@@ -28,35 +28,37 @@ def echo(node: Any, text: str) -> str:
 
 def _render(node: Any, text: str) -> tuple[str, int]:
     """(text, binding strength) of a node."""
-    kind = node.kind
+    kind = node.kind  # the kinds by how often they occur
     if kind == "sym":  # a symbol, or the declared imaginary unit as the student spelled it
         return getattr(node.value, "name", None) or text[node.start : node.end], _ATOM
-    if kind == "pi":
-        return "pi", _ATOM
     if kind == "num":
         return _number(node, text)
-    if kind == "add":
-        return _sum(node.value, text), _SUM
-    if kind == "mul":
-        return _product(node.value, text), _PRODUCT
-    if kind == "neg":
-        return "-" + _negated(node.value, text), _SIGNED
     if kind == "pow":
         base = _at_least(node.value, text, _ATOM)
         exponent = _at_least(node.extra, text, _ATOM)
         return f"{base}^{exponent}", _POWER
-    if kind == "ddt":
-        operator = "d/dt" if node.extra[0] == 1 else f"d^{node.extra[0]}/dt^{node.extra[0]}"
-        return f"{operator}({_render(node.value, text)[0]})", _ATOM
+    if kind == "mul":
+        return _product(node.value, text), _PRODUCT
+    if kind == "add":
+        return _sum(node.value, text), _SUM
+    if kind == "neg":
+        return "-" + _negated(node.value, text), _SIGNED
     if kind == "call":
         argument, power = node.extra
         arguments = argument if node.value in TUPLE_ARGUMENTS else (argument,)
         call = f"{node.value}({', '.join(_render(a, text)[0] for a in arguments)})"
         return (f"{call}^{power}", _POWER) if power is not None else (call, _ATOM)
+    if kind == "pi":
+        return "pi", _ATOM
+    if kind == "ddt":
+        operator = "d/dt" if node.extra[0] == 1 else f"d^{node.extra[0]}/dt^{node.extra[0]}"
+        return f"{operator}({_render(node.value, text)[0]})", _ATOM
     raise AssertionError(f"unknown node kind {kind!r}")
 
 
 def _at_least(node: Any, text: str, strength: int) -> str:
+    if node.kind == "sym":  # the commonest factor, an atom: never bracketed
+        return getattr(node.value, "name", None) or text[node.start : node.end]
     shown, own = _render(node, text)
     return shown if own >= strength else f"({shown})"
 
@@ -72,7 +74,7 @@ def _number(node: Any, text: str) -> tuple[str, int]:
     """A number as written (9.81, 1.6e-19, 1E100), else p or p/q (from a translation)."""
     p, q = node.value
     written = text[node.start : node.end].strip("() \t")
-    if DECIMAL.fullmatch(written):
+    if written.isdecimal() or DECIMAL.fullmatch(written):  # isdecimal: what \d+ matches
         return written, _ATOM
     return (str(p), _ATOM) if q == 1 else (f"{p}/{q}", _PRODUCT)
 

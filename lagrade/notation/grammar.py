@@ -12,13 +12,23 @@ The rules build a `nodes.Node` tree and never touch sympy; names are read by `na
 
 from __future__ import annotations
 
+from typing import NoReturn
+
 from lagrade.notation.build import SEVERAL_ARGUMENTS, TWO_ARGUMENTS
 from lagrade.notation.lexer import Token, read_number
-from lagrade.notation.limits import MAX_EXPONENT, MAX_EXTREMUM_ARGUMENTS, MAX_FUNCTION_POWER
+from lagrade.notation.limits import (
+    MAX_DEPTH,
+    MAX_EXPONENT,
+    MAX_EXTREMUM_ARGUMENTS,
+    MAX_FUNCTION_POWER,
+)
 from lagrade.notation.names import NameRules
 from lagrade.notation.nodes import Node
 
 _TERM_END = frozenset(("+", "-", ")", "=", ",", ";", "|"))
+_new = tuple.__new__
+#: Token kinds that cannot begin a term; only before one does `operand_after` have to look.
+_NOT_TERMS = ("op", "end")
 _TRIG = frozenset(("sin", "cos", "tan", "sec", "csc", "cot", "sinh", "cosh", "tanh"))
 
 
@@ -58,7 +68,8 @@ class Parser(NameRules):
 
     def parse_sum(self) -> Node:
         """sum := ['+'|'-'] term (('+'|'-') term)*"""
-        first = self.peek()
+        tokens = self.tokens
+        first = tokens[self.pos]
         terms = []
         negative = False
         if first.text in ("+", "-"):
@@ -67,9 +78,11 @@ class Parser(NameRules):
             negative = first.text == "-"
         term = self.parse_term()
         terms.append(self.node("neg", first.start, term.end, term) if negative else term)
-        while self.peek().text in ("+", "-"):
-            op = self.next()
-            self.operand_after(op)
+        while tokens[self.pos].text in ("+", "-"):
+            op = tokens[self.pos]
+            self.pos += 1
+            if tokens[self.pos].kind in _NOT_TERMS:  # else `operand_after` finds nothing amiss
+                self.operand_after(op)
             term = self.parse_term()
             terms.append(self.node("neg", op.start, term.end, term) if op.text == "-" else term)
         if len(terms) == 1:
@@ -80,13 +93,15 @@ class Parser(NameRules):
         """term := unary ( ('*'|'/') unary | <juxtaposition> power )*; a juxtaposition after a
         division multiplies what came before (`k/m x` is (k/m)·x), with a warning"""
         first = self.parse_unary()
+        tokens = self.tokens
         factors = [first]
         after_division = False
         while True:
-            tok = self.peek()
+            tok = tokens[self.pos]
             if tok.text in ("*", "/"):
-                self.next()
-                self.operand_after(tok)
+                self.pos += 1
+                if tokens[self.pos].kind in _NOT_TERMS:
+                    self.operand_after(tok)
                 factor = self.parse_unary()
                 if tok.text == "*":
                     factors.append(factor)
@@ -94,25 +109,13 @@ class Parser(NameRules):
                 else:
                     factors.append(self.node("inv", factor.start, factor.end, factor))
                     after_division = True
-            elif tok.kind in ("num", "name") or tok.text == "(" or self.opens_bars(tok):
-                if tok.kind == "num" and self.tokens[self.pos - 1].kind == "num":
-                    a, b = self.tokens[self.pos - 1].text, tok.text
-                    if not tok.spaced:
-                        start = self.tokens[self.pos - 1].start
-                        self.fail(f"Cannot read the number '{a}{b}'.", start, tok.end)
-                    if self.peek(1).text == "/" and self.peek(2).kind == "num":
-                        c = self.peek(2).text  # 2 3/4: a mixed number, or a number with a space
-                        self.fail(
-                            f"Two numbers side by side: for the mixed number write {a} + {b}/{c}"
-                            f", for a product {a}*{b}/{c}.",
-                            self.tokens[self.pos - 1].start,
-                            self.peek(2).end,
-                        )
-                    self.fail(
-                        f"Two numbers side by side; write {a}{b} or {a}*{b}.",
-                        self.tokens[self.pos - 1].start,
-                        tok.end,
-                    )
+            elif (
+                tok.kind in ("name", "num")
+                or tok.text == "("
+                or (tok.text == "|" and self.opens_bars(tok))
+            ):
+                if tok.kind == "num" and tokens[self.pos - 1].kind == "num":
+                    self.two_numbers(tok)
                 factors.append(self.parse_power())
                 if after_division and not self.is_integer_fraction(factors[:-1]):
                     self.note_division(first.start, factors[-2], factors[-1])
@@ -122,6 +125,22 @@ class Parser(NameRules):
         if len(factors) == 1:
             return first
         return self.node("mul", first.start, factors[-1].end, factors)
+
+    def two_numbers(self, tok: Token) -> NoReturn:
+        """The message for the number `tok` right after another one (`2 3`, `2 3/4`)."""
+        before = self.tokens[self.pos - 1]
+        a, b = before.text, tok.text
+        if not tok.spaced:
+            self.fail(f"Cannot read the number '{a}{b}'.", before.start, tok.end)
+        if self.peek(1).text == "/" and self.peek(2).kind == "num":
+            c = self.peek(2).text  # 2 3/4: a mixed number, or a number with a space
+            self.fail(
+                f"Two numbers side by side: for the mixed number write {a} + {b}/{c}"
+                f", for a product {a}*{b}/{c}.",
+                before.start,
+                self.peek(2).end,
+            )
+        self.fail(f"Two numbers side by side; write {a}{b} or {a}*{b}.", before.start, tok.end)
 
     @staticmethod
     def is_integer_fraction(factors: list[Node]) -> bool:
@@ -153,8 +172,11 @@ class Parser(NameRules):
 
     def parse_unary(self) -> Node:
         """unary := '-' unary | power"""
-        tok = self.peek()
-        self.enter(tok)
+        tok = self.tokens[self.pos]
+        self.depth += 1  # self.enter(tok), inline: every factor comes through here
+        if self.depth > MAX_DEPTH:
+            self.depth -= 1
+            self.enter(tok)
         if tok.text == "-":
             self.next()
             self.operand_after(tok)
@@ -168,11 +190,12 @@ class Parser(NameRules):
     def parse_power(self) -> Node:
         """power := atom [('^'|'**') unary], right-associative."""
         base = self.parse_atom()
-        tok = self.peek()
-        if tok.text not in ("^", "**"):
+        tok = self.tokens[self.pos]
+        if tok.text != "^" and tok.text != "**":
             return base
-        self.next()
-        self.operand_after(tok)
+        self.pos += 1
+        if self.tokens[self.pos].kind in _NOT_TERMS:
+            self.operand_after(tok)
         exponent = self.parse_unary()
         literal = exponent.value if exponent.kind == "num" else None
         if exponent.kind == "neg" and exponent.value.kind == "num":  # type: ignore[union-attr]
@@ -187,25 +210,26 @@ class Parser(NameRules):
 
     def parse_atom(self) -> Node:
         """atom := number | '(' sum ')' | call | diff | name"""
-        tok = self.peek()
-        if tok.kind == "num":
-            self.next()
-            p, q, whole = read_number(tok, self.src)
-            return self.node("num", tok.start, tok.end, (p, q), whole)
-        if tok.text == "(":
-            return self.parse_group()
-        if tok.text == "|":
-            return self.parse_bars()
-        if tok.kind == "name":
-            if tok.text == "diff" and "diff" not in self.lexicon.table:
+        tok = self.tokens[self.pos]
+        kind, text = tok.kind, tok.text
+        if kind == "name":
+            if text == "diff" and "diff" not in self.lexicon.table:
                 return self.parse_diff()
-            operator = self.time_operator(self.pos) if tok.text == "d" else None
+            operator = self.time_operator(self.pos) if text == "d" else None
             if operator is not None and self.peek(operator[1] - self.pos).text == "(":
                 return self.parse_time_derivative(*operator)
-            if self.lexicon.is_function(tok.text):
+            if text in self.lexicon.functions:
                 return self.parse_call()
-            self.next()
+            self.pos += 1
             return self.parse_name(tok)
+        if kind == "num":
+            self.pos += 1
+            p, q, whole = read_number(tok, self.src)
+            return self.node("num", tok.start, tok.end, (p, q), whole)
+        if text == "(":
+            return self.parse_group()
+        if text == "|":
+            return self.parse_bars()
         self.unexpected(tok)
 
     def opens_bars(self, tok: Token) -> bool:
@@ -236,9 +260,11 @@ class Parser(NameRules):
 
     def parse_group(self) -> Node:
         """'(' sum ')'"""
-        opening = self.next()
+        tokens = self.tokens
+        opening = tokens[self.pos]
+        self.pos += 1
         self.enter(opening)
-        tok = self.peek()
+        tok = tokens[self.pos]
         if tok.text == ")":
             self.fail("Empty brackets '()'.", opening.start, tok.end)
         if tok.kind == "end":
@@ -248,18 +274,15 @@ class Parser(NameRules):
                 opening.end,
             )
         inner = self.parse_sum()
-        closing = self.peek()
+        closing = tokens[self.pos]
         if closing.text != ")":
             if closing.kind == "end":
-                self.fail(
-                    self.missing_close(opening),
-                    opening.start,
-                    opening.end,
-                )
+                self.fail(self.missing_close(opening), opening.start, opening.end)
             self.unexpected(closing)
-        self.next()
+        self.pos += 1
         self.depth -= 1
-        return inner._replace(start=opening.start, end=closing.end)
+        # inner._replace(start=…, end=…), without its Python-level detour; not a new node
+        return _new(Node, (inner.kind, opening.start, closing.end, inner.value, inner.extra))
 
     def parse_call(self) -> Node:
         """call := FUNC ['^' INTEGER] ('(' sum ')' | simple_arg)"""

@@ -76,13 +76,24 @@ class Source:
         texts: list[str] = []
         starts: list[int] = []
         ends: list[int] = []
+        # An untouched slice (normalise's usual source) maps a span by its offset: no `locate`
+        # per piece, of which normalise writes one per character.
+        n = len(self.text) if self.starts is None else -1
+        offset = self.offset
         for piece, start, end in pieces:
             if not piece:
                 continue
-            s, e = self.locate(start, end)
+            if start <= end <= n:
+                s, e = offset + start, offset + end
+            else:
+                s, e = self.locate(start, end)
             texts.append(piece)
-            starts.extend([s] * len(piece))
-            ends.extend([e] * len(piece))
+            if len(piece) == 1:
+                starts.append(s)
+                ends.append(e)
+            else:
+                starts.extend([s] * len(piece))
+                ends.extend([e] * len(piece))
         derived = Source(self.original, "".join(texts), stop=self.stop, starts=starts, ends=ends)
         derived.notes = self.notes
         return derived
@@ -91,6 +102,7 @@ class Source:
 # --- Unicode normalisation -----------------------------------------------------------------------
 
 _ASCII_CONTROL = re.compile(r"[\x00-\x08\x0b\x0c\x0e-\x1f\x7f]")
+_CONTROLS = frozenset(chr(c) for c in range(128) if _ASCII_CONTROL.match(chr(c)))
 
 # Letters that look exactly like Latin ones: a student (or a paste) could hide a different symbol.
 _LOOKALIKES = frozenset("οΟΑΒΕΖΗΙΚΜΝΡΤΥΧϲϳѕіјԁһ")
@@ -153,7 +165,7 @@ def normalise(src: Source) -> Source:
     while i < n:
         c = text[i]
         if c < "\x80":
-            if _ASCII_CONTROL.match(c):
+            if c in _CONTROLS:
                 src.fail(_hidden_message(c, src.locate(i, i)[0]), i, i + 1)
             if after_greek and c.isalpha():
                 pieces.append((" ", i, i))
@@ -275,15 +287,20 @@ class Token(NamedTuple):
     primes: int = 0
 
 
+# One match per token with the whitespace before it, in groups: 1 the whitespace, then the token as
+# 2 a name, 3 an operator or 4 a number (their first characters tell them apart).
 _TOKEN = re.compile(
     r"""
-    (?P<ws>[ \t\r\n]+)
-  | (?P<num>(?:[0-9]+(?:\.[0-9]+)?|\.[0-9]+)(?:[eE][+-]?[0-9]+)?)
-  | (?P<name>[A-Za-z_](?:[A-Za-z0-9\u0307\u0308]|_(?:\{[A-Za-z0-9_\u0307\u0308]*\})?)*'*)
-  | (?P<op>\*\*|==|<=|>=|!=|[-+*/^=(),<>;|])
+    ([ \t\r\n]*)
+    (?:
+        ([A-Za-z_](?:[A-Za-z0-9\u0307\u0308]|_(?:\{[A-Za-z0-9_\u0307\u0308]*\})?)*'*)
+      | (\*\*|==|<=|>=|!=|[-+*/^=(),<>;|])
+      | ((?:[0-9]+(?:\.[0-9]+)?|\.[0-9]+)(?:[eE][+-]?[0-9]+)?)
+    )
     """,
     re.VERBOSE,
 )
+_BLANK = re.compile(r"[ \t\r\n]*")
 
 _EQUATION_OPS = frozenset(("==", "<", ">", "<=", ">=", "!="))
 
@@ -305,14 +322,61 @@ MAX_DECIMAL_EXPONENT = 100
 
 
 def tokenize(src: Source) -> list[Token]:
-    """The tokens of `src`, ending with an `end` token; lexical errors raise at once."""
+    """The tokens of `src`, ending with an `end` token; lexical errors raise at once.
+
+    The hottest loop of reading an answer, so it reads all the tokens in one `findall` and
+    makes them with `tuple.__new__` (no Python-level `Token.__new__`). `findall` passes over
+    what no token matches: then the text does not end in whitespace alone after the tokens
+    read, and `_refuse` finds the first error, as it does for '=='."""
     text = src.text
     tokens: list[Token] = []
     append = tokens.append
-    match = _TOKEN.match
-    pos, n, spaced = 0, len(text), False
-    while pos < n:
-        m = match(text, pos)
+    new = tuple.__new__
+    pos = 0
+    refused = False
+    for blank, name, op, number in _TOKEN.findall(text):
+        start = pos + len(blank)
+        if name:
+            pos = start + len(name)
+            if "'" in name or "{" in name or not name.isascii():
+                append(_marked_name(name, start, pos, blank != ""))
+            else:
+                append(new(Token, ("name", name, start, pos, blank != "", 0, 0)))
+        elif op:
+            pos = start + len(op)
+            refused = refused or op in _EQUATION_OPS
+            append(new(Token, ("op", op, start, pos, blank != "", 0, 0)))
+        else:
+            pos = start + len(number)
+            append(new(Token, ("num", number, start, pos, blank != "", 0, 0)))
+    n = len(text)
+    if refused or _BLANK.match(text, pos).end() != n:  # type: ignore[union-attr]
+        _refuse(src)
+    append(new(Token, ("end", "", n, n, pos < n, 0, 0)))
+    return tokens
+
+
+def _marked_name(word: str, start: int, end: int, spaced: bool) -> Token:
+    """A name token written with primes, combining dots or a braced subscript (x_{M}):
+    `text` without them, `marks` and `primes` counting the derivatives."""
+    primes = len(word) - len(word.rstrip("'"))
+    word = word[: len(word) - primes]
+    marks = 0
+    if DOT_MARK in word or DDOT_MARK in word:
+        marks = word.count(DOT_MARK) + 2 * word.count(DDOT_MARK)
+        word = word.replace(DOT_MARK, "").replace(DDOT_MARK, "")
+    if "{" in word:
+        word = word.replace("{", "").replace("}", "")
+    return Token("name", word, start, end, spaced, marks, primes)
+
+
+def _refuse(src: Source) -> NoReturn:
+    """The first lexical error of `src`, token by token: a character no token begins with,
+    or an equation sign other than '='."""
+    text, pos = src.text, 0
+    while True:
+        pos = _BLANK.match(text, pos).end()  # type: ignore[union-attr]
+        m = _TOKEN.match(text, pos)
         if m is None:
             c = text[pos]
             message = _CHAR_MESSAGES.get(c)
@@ -320,37 +384,17 @@ def tokenize(src: Source) -> list[Token]:
                 quote = '"' if c == "'" else "'"
                 message = f"Unexpected character {quote}{c}{quote}."
             src.fail(message, pos, pos + 1)
-        kind = m.lastgroup
-        end = m.end()
-        if kind == "ws":
-            spaced = True
-            pos = end
-            continue
-        word = m.group()
-        if kind == "name":
-            primes = len(word) - len(word.rstrip("'"))
-            word = word[: len(word) - primes]
-            marks = 0
-            if DOT_MARK in word or DDOT_MARK in word:
-                marks = word.count(DOT_MARK) + 2 * word.count(DDOT_MARK)
-                word = word.replace(DOT_MARK, "").replace(DDOT_MARK, "")
-            if "{" in word:
-                word = word.replace("{", "").replace("}", "")
-            append(Token("name", word, pos, end, spaced, marks, primes))
-        elif kind == "op" and word in _EQUATION_OPS:
-            src.fail("Use a single '=' for an equation.", pos, end)
-        else:
-            append(Token(kind, word, pos, end, spaced))
-        spaced = False
-        pos = end
-    append(Token("end", "", n, n, spaced))
-    return tokens
+        if m.group(3) in _EQUATION_OPS:
+            src.fail("Use a single '=' for an equation.", pos, m.end())
+        pos = m.end()
 
 
 def read_number(token: Token, src: Source) -> tuple[int, int, bool]:
     """A number token's exact value as (numerator, denominator, written_as_integer); decimals and
     scientific notation are exact (6.674e-11 is 6674/10^14). Enforces the size limits."""
     text = token.text
+    if len(text) <= MAX_DIGITS and text.isdigit():  # the usual whole number, within the limits
+        return int(text), 1, True
     mantissa, _, exponent = text.replace("E", "e").partition("e")
     whole, _, fraction = mantissa.partition(".")
     digits = (whole + fraction).lstrip("0")

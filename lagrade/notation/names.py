@@ -16,6 +16,7 @@ from lagrade.notation.nodes import Node
 from lagrade.notation.stream import TokenStream
 from lagrade.notation.vocabulary import Entry
 
+_I = sp.I
 _VELOCITY_SUFFIX = re.compile(r"(.+?)_?(d?dot)\Z")
 #: A run of single letters, the last one perhaps subscripted (`GMm`, `mv_0`), as LaTeX sets a
 #: product of single-letter symbols.
@@ -101,7 +102,9 @@ class NameRules(TokenStream):
 
     def parse_name(self, tok: Token) -> Node:
         """A name already taken from the stream, with its dots or primes and an optional (t)."""
-        entry = self.lookup(tok)
+        entry = self.lexicon.table.get(tok.text)
+        if entry is None or tok.primes:  # else `lookup` would only return the entry
+            entry = self.lookup(tok)
         extra = tok.marks + tok.primes
         if extra and entry.jet is None:
             self.not_a_coordinate(tok.text, tok)
@@ -110,7 +113,7 @@ class NameRules(TokenStream):
         if extra:
             return self.derivative(entry, entry.order + extra, tok.start, tok.end)
         end = tok.end
-        if self.followed_by_of_t():
+        if self.tokens[self.pos].text == "(" and self.followed_by_of_t():
             if entry.jet is None:
                 self.fail(
                     f"'{tok.text}(t)' reads as a function of time, but {tok.text} is not a "
@@ -121,7 +124,7 @@ class NameRules(TokenStream):
             end = self.peek(2).end
             self.skip_of_t()
             self.warn(f"{tok.text}(t) is read as {tok.text}.")
-        if entry.value is not sp.I:  # the declared imaginary unit is a number, not a symbol
+        if entry.value is not _I:  # the declared imaginary unit is a number, not a symbol
             self.found.add(entry.value.name)  # type: ignore[attr-defined]
         return self.node("sym", tok.start, end, entry.value)
 

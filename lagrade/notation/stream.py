@@ -11,6 +11,8 @@ from lagrade.notation.limits import MAX_DEPTH, MAX_NODES
 from lagrade.notation.nodes import Node
 from lagrade.notation.vocabulary import Lexicon
 
+_new = tuple.__new__
+
 
 class TokenStream:
     """The tokens of one answer and the position in them, with what the grammar's rules share:
@@ -41,7 +43,10 @@ class TokenStream:
         self.src.fail(message, start, end, hint, readings)
 
     def peek(self, ahead: int = 0) -> Token:
-        try:  # the most called method of the parser: no bounds test on the usual path
+        """The token `ahead` places on, or the end token past it. The rules read the current
+        token as `self.tokens[self.pos]` where they are hot: `pos` never passes the end token,
+        which no rule consumes."""
+        try:
             return self.tokens[self.pos + ahead]
         except IndexError:
             return self.tokens[-1]
@@ -54,11 +59,12 @@ class TokenStream:
     def node(
         self, kind: str, start: int, end: int, value: object = None, extra: object = None
     ) -> Node:
-        """A new tree node, counted against MAX_NODES."""
+        """A new tree node, counted against MAX_NODES (made with `tuple.__new__`, which skips the
+        Python-level `Node.__new__`: the parser makes one per atom and operator)."""
         self.nodes += 1
         if self.nodes > MAX_NODES:
             self.fail(f"The answer is too complex (more than {MAX_NODES} parts).", start, end)
-        return Node(kind, start, end, value, extra)
+        return _new(Node, (kind, start, end, value, extra))
 
     def enter(self, tok: Token) -> None:
         """One level deeper (a bracket, a sign, an exponent), counted against MAX_DEPTH; the

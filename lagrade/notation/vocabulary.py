@@ -179,6 +179,9 @@ class Lexicon:
         table.setdefault("t", Entry("sym", mechanics.t, None, 0))
         table.setdefault("pi", Entry("pi", sp.pi, None, 0))
         self.table = table
+        #: The function names this question leaves to functions (a declared name is no function),
+        #: one set lookup for the parser's every name.
+        self.functions = FUNCTIONS - table.keys()
         self.longest = max(len(k) for k in table)
         allowed = list(vocabulary.parameters)
         for j in self.jets:
@@ -189,7 +192,7 @@ class Lexicon:
         self.allowed = ", ".join(allowed)
 
     def is_function(self, name: str) -> bool:
-        return name in FUNCTIONS and name not in self.table
+        return name in self.functions
 
     def split(self, name: str) -> list[str] | None:
         """Fewest declared names that spell `name` (mgl → m, g, l), or None."""
