@@ -1,6 +1,6 @@
 """Layer 0: Lagrangian mechanics on jets (q, q̇, q̈ as plain symbols), parameter domains, and the
 Scene type that the bank's systems are declared with. Imports nothing else of lagrade's but
-its errors.
+the foundation under every layer (its errors, the lazy exports, the bounded memo `recent`).
 
 The small-oscillation names (`Equilibrium`, `SmallOscillations`, `frequencies_from`,
 `variant_oscillations`) are loaded on first use: they need numpy and scipy, which reading an

@@ -23,7 +23,6 @@ L = ½ m l² θ̇² + m g l cos θ, p_θ = m l² θ̇, E_θ = m l² θ̈ + m g l
 from __future__ import annotations
 
 import threading
-from collections import OrderedDict
 from collections.abc import Sequence
 from dataclasses import dataclass
 from functools import cached_property
@@ -31,6 +30,7 @@ from functools import cached_property
 import sympy as sp
 
 from lagrade.mechanics.vanishing import Ranges, identically_zero
+from lagrade.recent import Recent
 
 #: Time. Scenes with explicit time dependence (a driven support, a rotating hoop) use it.
 t = sp.Symbol("t", real=True)
@@ -151,11 +151,11 @@ class Derivation:
 
 
 #: Derivations by the canonical form of (L, coordinates), most recently used last.
-_DERIVED: OrderedDict[str, Derivation] = OrderedDict()
 _DERIVED_SIZE = 256
+_DERIVED: Recent = Recent(_DERIVED_SIZE)
 _DERIVED_LOCK = threading.Lock()  # the answer page builds views in threads
 #: The derivations renamed back, by (L, coordinates, which derivatives), most recent last.
-_RENAMED: OrderedDict[tuple, tuple[sp.Expr, ...]] = OrderedDict()
+_RENAMED: Recent = Recent(_DERIVED_SIZE)
 
 
 def _shared_derivation(
@@ -175,14 +175,8 @@ def _shared_derivation(
             forward[a], back[b] = b, a
     form = L.xreplace(forward)
     key = f"{len(jets)}:{sp.srepr(form)}"
-    with _DERIVED_LOCK:
-        found = _DERIVED.get(key)
-        if found is None:
-            found = _DERIVED[key] = Derivation(form, canonical)  # derives nothing yet
-            if len(_DERIVED) > _DERIVED_SIZE:
-                _DERIVED.popitem(last=False)
-        else:
-            _DERIVED.move_to_end(key)
+    with _DERIVED_LOCK:  # a Derivation derives nothing until asked
+        found = _DERIVED.made(key, lambda: Derivation(form, canonical))
     return found, back
 
 
@@ -215,19 +209,15 @@ class LagrangianSystem:
         # found by (L, coordinates) first, without renaming L to its canonical form again.
         key = (self.L, self.jets, part)
         with _DERIVED_LOCK:
-            found = _RENAMED.get(key)
-            if found is not None:
-                _RENAMED.move_to_end(key)
-                return found
-        derivation, back = self._shared
+            found = _RENAMED.recalled(key)
+        if found is not None:
+            return found
+        derivation, back = self._shared  # derived outside the lock: it may take a while
         # Renaming is a bijection of symbols with the same assumptions: an expanded sum stays
         # one, so the result needs no second `expand` (which walks the whole expression again).
         found = tuple(e.xreplace(back) for e in getattr(derivation, part))
         with _DERIVED_LOCK:
-            _RENAMED[key] = found
-            if len(_RENAMED) > _DERIVED_SIZE:
-                _RENAMED.popitem(last=False)
-        return found
+            return _RENAMED.made(key, lambda: found)
 
     @cached_property
     def generalized_momenta(self) -> tuple[sp.Expr, ...]:

@@ -6,7 +6,7 @@ import pytest
 import sympy as sp
 
 from lagrade.errors import LagradeError
-from lagrade.mechanics.domains import Domain, exact_number
+from lagrade.mechanics.domains import Domain, _exact_number, exact_number
 
 
 @pytest.mark.parametrize(
@@ -51,7 +51,9 @@ def test_a_value_is_the_exact_number_sympy_reads_it_as(value) -> None:
     """`exact_number` is sympy's nsimplify(rational=True), once per value: the same number
     however often it is asked for, and an int and the float equal to it each as itself."""
     assert exact_number(value) == sp.nsimplify(value, rational=True)
+    kept = _exact_number.cache_info().hits
     assert exact_number(value) is exact_number(value)
+    assert _exact_number.cache_info().hits > kept  # converted once, found again
     assert exact_number(2) == exact_number(2.0) == 2
 
 

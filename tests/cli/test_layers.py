@@ -61,7 +61,7 @@ def test_every_module_belongs_to_a_layer():
 
 
 #: Root modules under every layer: they may import only each other.
-FOUNDATION = ("errors.py", "untrusted.py", "exports.py")
+FOUNDATION = ("errors.py", "untrusted.py", "exports.py", "recent.py")
 
 
 def test_the_foundation_imports_no_layer():
@@ -107,3 +107,23 @@ def test_a_layer_is_entered_only_through_its_front_door():
     from benchmarks.layer_counts import past_exports
 
     assert past_exports() == []
+
+
+def test_a_recent_memo_keeps_the_most_recently_used_within_its_size():
+    """`lagrade.recent.Recent`: what the derivation and reading caches keep. A key asked for
+    again is kept over one asked for once; past `size` the least recently used goes."""
+    from lagrade.recent import Recent
+
+    memo, made = Recent(2), []
+
+    def make(key):
+        made.append(key)
+        return key.upper()
+
+    assert memo.made("a", lambda: make("a")) == "A"
+    assert memo.made("b", lambda: make("b")) == "B"
+    assert memo.made("a", lambda: make("a")) == "A"  # kept: not made again, now most recent
+    assert memo.made("c", lambda: make("c")) == "C"  # "b", least recently used, goes
+    assert list(memo) == ["a", "c"] and made == ["a", "b", "c"]
+    assert memo.recalled("b") is None and memo.recalled("a") == "A"
+    assert list(memo) == ["c", "a"]

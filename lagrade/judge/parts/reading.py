@@ -5,7 +5,6 @@ names read in any spelling, and the student's own L for follow-through."""
 from __future__ import annotations
 
 import re
-from collections import OrderedDict
 from collections.abc import Callable, Iterator, Mapping, Sequence
 from contextlib import contextmanager
 from contextvars import ContextVar
@@ -22,6 +21,7 @@ from lagrade.judge.parts.items import single_text
 from lagrade.judge.problem import Problem, parser
 from lagrade.judge.verdict import unreadable_line
 from lagrade.notation import NameRead, plain
+from lagrade.recent import Recent
 
 
 class Side:
@@ -452,16 +452,8 @@ def own_lagrangian(problem: Problem, given: Mapping | None) -> Compiled | None:
     text = given["lagrangian"]
     if not isinstance(text, str):
         return _own_lagrangian(problem, text)
-    kept: OrderedDict[str, Compiled | None] = problem.shared.setdefault(
-        "_own_lagrangians", OrderedDict()
-    )
-    if text in kept:
-        kept.move_to_end(text)
-        return kept[text]
-    own = kept[text] = _own_lagrangian(problem, text)
-    if len(kept) > OWN_LAGRANGIANS_KEPT:
-        kept.popitem(last=False)
-    return own
+    kept = problem.shared.setdefault("_own_lagrangians", Recent(OWN_LAGRANGIANS_KEPT))
+    return kept.made(text, lambda: _own_lagrangian(problem, text))
 
 
 #: Own Lagrangians kept per question structure: a class's, read once for all their parts.
