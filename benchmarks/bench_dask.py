@@ -122,7 +122,7 @@ def _write_batch(folder: Path, seed: int) -> tuple[Path, Path, int]:
 def _write_class(folder: Path, students: int) -> tuple[Path, Path]:
     from bench_grade import ASSIGNMENT
 
-    from lagrade.assign.generate import generate
+    from lagrade.assign import generate
     from lagrade.cli.demo_class import write_submissions
 
     folder.mkdir(parents=True, exist_ok=True)

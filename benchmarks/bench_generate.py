@@ -17,7 +17,7 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
-from lagrade.assign.generate import generate  # noqa: E402
+from lagrade.assign import generate  # noqa: E402
 
 
 def main() -> None:

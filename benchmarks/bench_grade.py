@@ -16,7 +16,7 @@ import tempfile
 import time
 from pathlib import Path
 
-from lagrade.assign.generate import generate
+from lagrade.assign import generate
 from lagrade.cli.demo_class import write_submissions
 from lagrade.grading.batch import grade
 

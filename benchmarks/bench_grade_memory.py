@@ -27,7 +27,7 @@ from bench_grade import ASSIGNMENT  # noqa: E402
 from rss import tree_rss  # noqa: E402
 
 import lagrade  # noqa: E402
-from lagrade.assign.generate import generate  # noqa: E402
+from lagrade.assign import generate  # noqa: E402
 from lagrade.cli.demo_class import write_submissions  # noqa: E402
 from lagrade.grading.batch import grade  # noqa: E402
 

@@ -40,7 +40,7 @@ import time
 from pathlib import Path
 from urllib.parse import urlsplit
 
-from lagrade.assign.generate import generate
+from lagrade.assign import generate
 from lagrade.grading.savelog import SaveLog, log_path
 
 ASSIGNMENT = """\

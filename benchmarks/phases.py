@@ -77,7 +77,7 @@ if corpus == "class":
     import tempfile
     from pathlib import Path
     from bench_grade import ASSIGNMENT
-    from lagrade.assign.generate import generate
+    from lagrade.assign import generate
     from lagrade.cli.demo_class import write_submissions
     import lagrade.grading.batch as batch
     root = Path(tempfile.mkdtemp(prefix="lagrade-phases-"))

@@ -3,9 +3,6 @@ figures, jinja2 templates, and the generation of handouts, keys, answer sheets a
 
 from __future__ import annotations
 
-# a name that is also a module of this package is bound here, so that importing the module (which
-# sets the package's attribute to it) never shadows it
-from lagrade.assign.generate import generate
 from lagrade.exports import lazy_exports
 
 #: Each exported name, by the module that defines it (a module exported as a whole: its own
@@ -16,6 +13,7 @@ _EXPORTS = {
     "build_pool": "lagrade.assign.variants",
     "check_scene_file": "lagrade.assign.scene_check",
     "environment": "lagrade.assign.templating",
+    "generate": "lagrade.assign.generation",
     "EXPRESSION": "lagrade.assign.assignment",
     "key_answers": "lagrade.assign.views",
     "latex_symbol_names": "lagrade.assign.solution",

@@ -53,7 +53,7 @@ def generate(
     seed = seeds[int(data.get("variant_seed", 0)) % len(seeds)]
     found = _from_pool(rendered, seed)
     if found is None:
-        from lagrade.grading.prairielearn_work import render_variant
+        from lagrade.grading.prairielearn_variant import render_variant
 
         found = render_variant(assignment, index, seed, scenes)
     data.setdefault("params", {}).update(found["params"])
@@ -66,7 +66,7 @@ def render_pool(
     """Every variant of the pool rendered once, at export, as data (`variants.json` beside
     server.py): PrairieLearn's `generate` then reads it instead of deriving the variant and
     drawing its figure in every call. A figure that variants share is kept once."""
-    from lagrade.grading.prairielearn_work import render_variant
+    from lagrade.grading.prairielearn_variant import render_variant
 
     figures: dict[str, str] = {}
     variants: dict[str, Any] = {}

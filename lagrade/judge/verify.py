@@ -1,5 +1,5 @@
 """Check a variant before its handout is written: the grader must accept the key's answers and
-reject the common mistakes of the catalogue. `lagrade.assign.generate.generate` calls this
+reject the common mistakes of the catalogue. `lagrade.assign.generation.generate` calls this
 through its `verify` hook: assign, in the same layer as judge, never imports it; the command
 line passes this function in."""
 

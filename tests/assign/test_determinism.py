@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from lagrade.assign.generate import generate
+from lagrade.assign import generate
 
 from .conftest import snapshot
 

@@ -30,7 +30,7 @@ HOSTILE = [
 
 
 def test_hostile_names(small_assignment: Path, tmp_path: Path) -> None:
-    from lagrade.assign.generate import generate
+    from lagrade.assign import generate
 
     roster = write_roster(tmp_path / "r.csv", HOSTILE)
     out = tmp_path / "out"
@@ -149,7 +149,7 @@ def test_a_scene_file_s_texts_are_escaped_in_every_format(tmp_path: Path) -> Non
     """Every text of an instructor's scene file is shown, never run, in each output: the
     Markdown handout (pasted into an LMS page, where raw HTML would run) and key, the HTML, the
     LaTeX and the answer sheet's comments."""
-    from lagrade.assign.generate import generate
+    from lagrade.assign import generate
 
     (tmp_path / "pendulum.toml").write_text(HOSTILE_SCENE)
     (tmp_path / "a.toml").write_text(

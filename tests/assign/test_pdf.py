@@ -11,7 +11,7 @@ from pathlib import Path
 
 import pytest
 
-from lagrade.assign.generate import generate
+from lagrade.assign import generate
 from lagrade.assign.pdf import PDFLATEX_HINT
 from lagrade.bank import scene_ids
 

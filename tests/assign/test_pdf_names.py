@@ -20,7 +20,7 @@ from pathlib import Path
 
 import pytest
 
-from lagrade.assign.generate import generate
+from lagrade.assign import generate
 from lagrade.assign.pdf import PDFLATEX_HINT, TEX_PACKAGES
 from lagrade.cli.main import main
 

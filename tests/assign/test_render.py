@@ -9,7 +9,7 @@ from pathlib import Path
 
 import sympy as sp
 
-from lagrade.assign.generate import generate
+from lagrade.assign import generate
 from lagrade.bank import scene_ids
 
 from .conftest import write_roster

@@ -10,7 +10,7 @@ from pathlib import Path
 
 import pytest
 
-from lagrade.assign.generate import generate
+from lagrade.assign import generate
 from lagrade.cli.demo_class import write_submissions
 
 ASSIGNMENT = """\

@@ -13,7 +13,7 @@ from pathlib import Path
 import pytest
 
 import lagrade.judge.driver as driver
-from lagrade.assign.generate import generate
+from lagrade.assign import generate
 from lagrade.cli.demo_class import ASSIGNMENT as DEMO_ASSIGNMENT
 from lagrade.cli.demo_class import write_submissions
 from lagrade.grading.batch import grade

@@ -130,7 +130,7 @@ def test_help_and_readme_name_what_the_commands_do(capfd):
     `lagrade demo [DIR]` does, in the usage line and the description alike."""
     from pathlib import Path
 
-    from lagrade.assign.generate import DEFAULT_FORMATS
+    from lagrade.assign.generation import DEFAULT_FORMATS
 
     status, out, _ = _run(["generate", "--help"], capfd)
     assert status == 0

@@ -98,3 +98,27 @@ def test_check_batch_with_a_request_loads_the_judge_before_its_workers_fork(tmp_
     out = tmp_path / "out.jsonl"
     assert "sympy" in _loaded_by(["check", "--batch", str(requests), "--out", str(out)])
     assert '"verdict": "correct"' in out.read_text()
+
+
+def test_prairielearn_parse_and_grade_load_no_templates():
+    """The worker of a PrairieLearn `parse` or `grade` reads and judges: the templates that
+    render a variant (jinja2, the handout's views and figures) are `generate`'s alone, and
+    importing them cost every parse and grade call about 40 ms."""
+    code = (
+        "import sys, lagrade.grading.prairielearn_runtime, lagrade.grading.prairielearn_work\n"
+        "print(sorted(m for m in ('jinja2', 'lagrade.assign.views', 'lagrade.assign.templating', "
+        "'lagrade.assign.generation', 'lagrade.grading.prairielearn_variant') if m in sys.modules))"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert out.stdout.strip().splitlines()[-1] == "[]", out.stdout + out.stderr
+
+
+def test_generate_is_the_function_whichever_import_came_first():
+    """`lagrade.assign.generate` is a function, loaded on first use; its module has another name,
+    so importing the module first cannot shadow it."""
+    code = (
+        "import lagrade.assign.generation\nfrom lagrade.assign import generate\n"
+        "print(callable(generate) and generate.__module__)"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert out.stdout.strip() == "lagrade.assign.generation"

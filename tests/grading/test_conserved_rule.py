@@ -106,7 +106,7 @@ def test_whether_all_are_asked_is_a_field_of_the_part(tmp_path, extra, asks_all)
     by the manifest and read by `grade` — never read from the prompt's wording: the same one
     quantity (ℓ, where ℓ and the energy are conserved) is complete for `all = false` and half
     of the set for the default."""
-    from lagrade.assign.generate import generate
+    from lagrade.assign import generate
     from lagrade.grading.batch import grade
 
     (tmp_path / "a.toml").write_text(_ONE_OR_ALL.format(extra=extra))

@@ -18,7 +18,7 @@ import re
 import pytest
 import sympy as sp
 
-from lagrade.assign.generate import generate
+from lagrade.assign import generate
 from lagrade.cli.check import check_batch_file
 from lagrade.grading.batch import grade
 from lagrade.grading.manifest import student_variant

@@ -16,7 +16,7 @@ import re
 
 import pytest
 
-from lagrade.assign.generate import generate
+from lagrade.assign import generate
 from lagrade.cli.main import main
 from lagrade.grading.batch import grade
 from lagrade.grading.manifest import entry_variant

@@ -16,7 +16,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 import lagrade.untrusted as untrusted
-from lagrade.assign.generate import generate
+from lagrade.assign import generate
 from lagrade.assign.templating import one_line, toml_literal, toml_string
 from lagrade.cli.main import main
 from lagrade.errors import AssignmentError
