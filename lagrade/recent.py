@@ -12,7 +12,7 @@ from typing import Any
 
 class Recent(OrderedDict):
     """At most `size` entries, most recently used last. A dict to read (`in`, `len`, `clear`,
-    iteration); `recalled` and `made` are how an entry is found, or made and kept."""
+    iteration); `recalled`, `made` and `keep` are how an entry is found, made or kept."""
 
     def __init__(self, size: int) -> None:
         super().__init__()
@@ -30,7 +30,13 @@ class Recent(OrderedDict):
         used entry past `size`)."""
         if key in self:
             return self.recalled(key)
-        value = self[key] = make()
-        if len(self) > self.size:
-            self.popitem(last=False)
+        value = make()
+        self.keep(key, value)
         return value
+
+    def keep(self, key: Hashable, value: Any) -> tuple[Hashable, Any] | None:
+        """Keep `value` for `key`, now the most recently used; the (key, value) this dropped
+        past `size` (the least recently used), or None."""
+        self[key] = value
+        self.move_to_end(key)
+        return self.popitem(last=False) if len(self) > self.size else None

@@ -26,7 +26,6 @@ from __future__ import annotations
 
 import json
 import time
-from collections import OrderedDict
 from collections.abc import Mapping
 from typing import Any
 
@@ -51,6 +50,7 @@ from lagrade.judge.problem import Problem, build_problem, problem_key
 from lagrade.judge.same_reading import SAME_READING_PARTS, reading_key
 from lagrade.judge.verdict import Verdict, timeout_verdict
 from lagrade.judge.worker import Limits
+from lagrade.recent import Recent
 
 #: Questions kept per process (most recently used last).
 _CACHE_SIZE = 256
@@ -59,13 +59,13 @@ _VERDICT_CACHE_SIZE = 4_096
 
 # --- the question, cached per process -------------------------------------------------------------
 
-_problems: OrderedDict[str, Problem] = OrderedDict()
+_problems: Recent = Recent(_CACHE_SIZE)
 #: What the questions of one structure share (`Problem.shared`), by `Problem.structure`: a
 #: class of many variants derives its reference, points and catalogue once.
-_structures: OrderedDict[str, dict] = OrderedDict()
+_structures: Recent = Recent(_CACHE_SIZE)
 _prepared: set[tuple[str, str]] = set()
 #: Questions that could not be derived within the scene rule's limits, with why.
-_underived: OrderedDict[str, DerivationLimit] = OrderedDict()
+_underived: Recent = Recent(_CACHE_SIZE)
 
 
 def cached_problem(spec: Any) -> Problem:
@@ -76,23 +76,17 @@ def cached_problem(spec: Any) -> Problem:
     if not isinstance(spec, Mapping):
         raise RequestError('"problem" must be an object such as {"scene": "wedge", "seed": 3}')
     key = problem_key(spec)
-    found = _problems.get(key)
+    found = _problems.recalled(key)
     if found is None:
         start = time.perf_counter()
         found = build_problem(spec)
-        found.share(_structures.setdefault(found.structure, found.shared))
-        _structures.move_to_end(found.structure)
-        if len(_structures) > _CACHE_SIZE:
-            _structures.popitem(last=False)
+        found.share(_structures.made(found.structure, lambda: found.shared))
         # Reading the question (parsing its L or closed form, its domains) is preparation too:
         # charged to its budget, so that `prepare_ms` hides none of it.
         found.budget.charge(time.perf_counter() - start)
-        _problems[key] = found
-        if len(_problems) > _CACHE_SIZE:
-            old, _ = _problems.popitem(last=False)
-            _prepared.difference_update({k for k in _prepared if k[0] == old})
-    else:
-        _problems.move_to_end(key)
+        dropped = _problems.keep(key, found)
+        if dropped is not None:
+            _prepared.difference_update({k for k in _prepared if k[0] == dropped[0]})
     return found
 
 
@@ -147,7 +141,7 @@ def forget_problems() -> None:
 #: What was decided for an answer, by (question, part, answer, given): a class types the same
 #: answer many times over, and judging is a function of these alone (the sample points are
 #: seeded by the question's key).
-_verdicts: OrderedDict[tuple[str, str, str], Verdict] = OrderedDict()
+_verdicts: Recent = Recent(_VERDICT_CACHE_SIZE)
 #: Statuses worth remembering: a timeout or an error may not happen again.
 _SETTLED = ("correct", "incorrect", "invalid")
 #: The most characters of answer and verdict text one remembered answer may hold, so that the
@@ -167,7 +161,7 @@ def _answer_key(question: str | None, part: str, answer: Any, given: Mapping | N
     return (question, part, text) if len(text) <= _REMEMBERED_CHARS else None
 
 
-def _remember(key, verdict: Verdict, cache: OrderedDict | None = None) -> None:
+def _remember(key, verdict: Verdict, cache: Recent | None = None) -> None:
     if key is None or verdict.status not in _SETTLED:
         return
     cache = _verdicts if cache is None else cache
@@ -175,16 +169,14 @@ def _remember(key, verdict: Verdict, cache: OrderedDict | None = None) -> None:
     held = sum(len(k) for k in key[2:])  # the answer's text; or the given and the reading's key
     if held + sum(len(t) for t in (*verdict.feedback, *shown)) > _REMEMBERED_CHARS:
         return
-    cache[key] = verdict
-    if len(cache) > _VERDICT_CACHE_SIZE:
-        cache.popitem(last=False)
+    cache.keep(key, verdict)
 
 
 #: What was decided for an answer, by (question, part, given, the key of its reading): the
 #: second level, for an answer spelled otherwise than one judged before but read the same
 #: (`same_reading`: a function of the key alone). Only a right or wrong verdict: an `invalid`
 #: one may quote the text it could not read.
-_by_reading: OrderedDict[tuple[str, str, str, str], Verdict] = OrderedDict()
+_by_reading: Recent = Recent(_VERDICT_CACHE_SIZE)
 #: Verdicts given again, by the level that found them (`verdict_cache_hits`).
 _hits = {"answer": 0, "reading": 0}
 
@@ -237,11 +229,11 @@ def judge(
         key = problem_key(spec) if isinstance(spec, Mapping) else None
         question = spec.key if isinstance(spec, Problem) else key
         seen = _answer_key(question, part, answer, given)
-        if seen in _verdicts:  # judged before: the same verdict, for the time of a lookup
-            _verdicts.move_to_end(seen)
+        known = _verdicts.recalled(seen)
+        if known is not None:  # judged before: the same verdict, for the time of a lookup
             _hits["answer"] += 1
             ms = (time.perf_counter() - received) * 1e3
-            return Verdict(**{**_verdicts[seen].__dict__, "ms": ms, "prepare_ms": 0.0})
+            return Verdict(**{**known.__dict__, "ms": ms, "prepare_ms": 0.0})
         new = key is not None and key not in _problems
         if key in _underived:
             return _underivable(part, _underived[key], 0.0)
@@ -250,9 +242,7 @@ def judge(
                 with deriving(_question_named(spec), _reading_limits()):
                     cached_problem(spec)
             except DerivationLimit as error:
-                _underived[key] = error
-                if len(_underived) > _CACHE_SIZE:
-                    _underived.popitem(last=False)
+                _underived.keep(key, error)
                 return _underivable(part, error, time.perf_counter() - received)
         problem = cached_problem(spec)
         budget = problem.budget
@@ -273,11 +263,10 @@ def judge(
         try:
             with time_limit(limit), parsed_once():  # read for the key, then judged: one parse
                 read = _reading_key(problem, part, answer, given, seen)
-                verdict = _by_reading.get(read) if read is not None else None
+                verdict = _by_reading.recalled(read) if read is not None else None
                 if verdict is None:
                     verdict = run_checker(problem, part, answer, given)
                 else:  # read the same as an answer judged before: its verdict, unjudged
-                    _by_reading.move_to_end(read)
                     _hits["reading"] += 1
         except PreparationTimeout:
             return _preparation_timeout(part, budget, spent)

@@ -127,3 +127,16 @@ def test_a_recent_memo_keeps_the_most_recently_used_within_its_size():
     assert list(memo) == ["a", "c"] and made == ["a", "b", "c"]
     assert memo.recalled("b") is None and memo.recalled("a") == "A"
     assert list(memo) == ["c", "a"]
+
+
+def test_a_recent_memo_keeps_a_value_and_says_what_it_dropped():
+    """`Recent.keep`: a value kept anew or again is the most recently used; what went past
+    `size` is returned (the question cache forgets that question's preparations with it)."""
+    from lagrade.recent import Recent
+
+    memo = Recent(2)
+    assert memo.keep("a", 1) is None and memo.keep("b", 2) is None
+    assert memo.keep("a", 3) is None  # kept again: replaced, now the most recent
+    assert list(memo.items()) == [("b", 2), ("a", 3)]
+    assert memo.keep("c", 4) == ("b", 2)
+    assert list(memo) == ["a", "c"]

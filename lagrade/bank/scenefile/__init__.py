@@ -18,7 +18,6 @@ from __future__ import annotations
 import hashlib
 import re
 import threading
-from collections import OrderedDict
 from pathlib import Path
 
 import lagrade.untrusted as untrusted
@@ -27,6 +26,7 @@ from lagrade.bank.scenefile.declaration import read_declaration
 from lagrade.bank.scenefile.fields import Problems
 from lagrade.errors import SceneError, SceneFileError, UnreadableInput
 from lagrade.mechanics import Scene, SceneVariant
+from lagrade.recent import Recent
 
 #: Far more than any scene needs (the bank's largest is about 4 KB), far less than a hostile file.
 MAX_SCENE_BYTES = 256 * 1024
@@ -37,8 +37,8 @@ _lock = threading.Lock()
 #: Scenes read in this process, by (text's hash, id, validated): the same text gives the same
 #: Scene object (caches keyed by a scene rely on it), the least recently read dropped past a
 #: bound, so that requests carrying many different texts cannot grow the process without end.
-_read: OrderedDict[tuple[str, str, bool], Scene] = OrderedDict()
 _KEPT = 256
+_read: Recent = Recent(_KEPT)
 
 
 def sha256(text: str) -> str:
@@ -90,16 +90,12 @@ def scene_from_text(text: str, scene_id: str, origin: str = "", validate: bool =
     origin = origin or f"scene {scene_id!r}"
     key = (sha256(text) if isinstance(text, str) else "", scene_id, validate)
     with _lock:
-        found = _read.get(key)
-        if found is not None:
-            _read.move_to_end(key)
-            return found
-    scene = _read_text(text, scene_id, origin, validate)
-    with _lock:
-        found = _read.setdefault(key, scene)
-        if len(_read) > _KEPT:
-            _read.popitem(last=False)
+        found = _read.recalled(key)
+    if found is not None:
         return found
+    scene = _read_text(text, scene_id, origin, validate)
+    with _lock:  # a thread that read the same text meanwhile: the Scene kept first
+        return _read.made(key, lambda: scene)
 
 
 def _read_text(text: str, scene_id: str, origin: str, validate: bool) -> Scene:

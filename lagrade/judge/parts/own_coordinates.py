@@ -25,7 +25,6 @@ from __future__ import annotations
 
 import hashlib
 import json
-from collections import OrderedDict
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, replace
 from typing import Any
@@ -52,6 +51,7 @@ from lagrade.mechanics import (
     coordinates_through_positions,
     coordinates_to_carry,
 )
+from lagrade.recent import Recent
 
 #: The parts judged in the student's coordinates when their transformation is valid.
 FOLLOWING = frozenset({"lagrangian", "T", "V", "eom", "momenta", "cyclic", "conserved"})
@@ -83,14 +83,14 @@ def chosen_coordinates(problem: Problem, transformation: Any) -> Choice:
     statement = Choice("statement", problem)
     if not problem.has_bodies or transformation is None:
         return statement
-    memory: OrderedDict = problem.__dict__.setdefault("_own_coordinates", OrderedDict())
+    # two keys per map: its text and its canonical form
+    memory: Recent = problem.__dict__.setdefault("_own_coordinates", Recent(2 * _KEPT))
     try:
         text = json.dumps(transformation, sort_keys=True)
     except (TypeError, ValueError):
         return statement
     if text in memory:
-        memory.move_to_end(text)
-        return memory[text]
+        return memory.recalled(text)
     try:
         with reading_notes():  # the notes belong to the transformation part, not to this one
             verdict, positions = transformation_positions(problem, transformation)
@@ -101,16 +101,9 @@ def chosen_coordinates(problem: Problem, transformation: Any) -> Choice:
     else:
         canonical = json.dumps(sorted((k, sp.srepr(v)) for k, v in positions.items()))
         choice = memory.get(canonical) or _choose(problem, positions, canonical)
-        _keep(memory, canonical, choice)
-    _keep(memory, text, choice)
+        memory.keep(canonical, choice)
+    memory.keep(text, choice)
     return choice
-
-
-def _keep(memory: OrderedDict, key: str, choice: Choice) -> None:
-    memory[key] = choice
-    memory.move_to_end(key)
-    while len(memory) > 2 * _KEPT:  # two keys per map: its text and its canonical form
-        memory.popitem(last=False)
 
 
 def _choose(problem: Problem, positions: Mapping[str, sp.Expr], canonical: str) -> Choice:
