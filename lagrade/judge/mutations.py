@@ -70,14 +70,19 @@ def _without_sin_squared(expr: sp.Expr) -> sp.Expr:
 
 
 def swap_sin_cos(expr: sp.Expr) -> sp.Expr:
-    """expr with every sin(u) written as cos(u) and every cos(u) as sin(u)."""
+    """expr with every sin(u) written as cos(u) and every cos(u) as sin(u). A subtree with no
+    sin or cos in it is returned as it is, not rebuilt: rebuilding it gives the same expression
+    at a cost that was most of this function's (the catalogue swaps every term of L)."""
     if isinstance(expr, sp.sin):
         return sp.cos(swap_sin_cos(expr.args[0]))
     if isinstance(expr, sp.cos):
         return sp.sin(swap_sin_cos(expr.args[0]))
     if not expr.args:
         return expr
-    return expr.func(*(swap_sin_cos(a) for a in expr.args))
+    args = tuple(swap_sin_cos(a) for a in expr.args)
+    if all(new is old for new, old in zip(args, expr.args, strict=True)):
+        return expr
+    return expr.func(*args)
 
 
 def expanded_terms(expr: sp.Expr) -> tuple[sp.Expr, ...]:
