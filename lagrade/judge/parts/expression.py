@@ -32,32 +32,26 @@ from lagrade.judge.situation import unit_text
 from lagrade.judge.tolerances import NUMERIC_TOLERANCE, ROUNDING
 from lagrade.judge.verdict import Verdict
 from lagrade.mechanics import Domain, exact_number
-from lagrade.recent import Recent
 
 
 def _domains_for(problem: Problem) -> dict:
     """Domains of every variable: parameters as declared, coordinates in their sample ranges.
-    Made once per what they are made of (`_DOMAINS`), not per answer: their sympy Floats were
-    most of an exact verdict's cost outside the test itself. A copy, for the caller's own."""
-    coordinates = problem.coordinate_domains or {}
-    key = (
-        tuple(problem.domains.items()),
-        tuple((j.name, j.q, coordinates.get(j.name)) for j in problem.jets),
-    )
-    kept = _DOMAINS.recalled(key)
-    if kept is not None and not _same_symbols(kept, problem):
-        del _DOMAINS[key]  # equal symbols, other objects: made again from this question's own
-    return dict(_DOMAINS.made(key, lambda: _made_domains(problem)))
+    Made once per question structure (its domains and coordinates are the structure's: its
+    shared points are drawn in them), not per answer: their sympy Floats were most of an exact
+    verdict's cost outside the test itself. A copy, for the caller's own."""
+    kept = problem.shared.get(_DOMAINS)
+    if kept is None or not _same_symbols(kept, problem):
+        kept = problem.shared[_DOMAINS] = _made_domains(problem)
+    return dict(kept)
 
 
-#: The domains `_domains_for` made, by the question's domains and coordinates (most recently
-#: used last): the questions of one scene, under one renaming, share them.
-DOMAINS_KEPT = 256
-_DOMAINS: Recent = Recent(DOMAINS_KEPT)
+#: Where `_domains_for` keeps a structure's domains in `Problem.shared`.
+_DOMAINS = "_expression_domains"
 
 
 def _same_symbols(domains: dict, problem: Problem) -> bool:
-    """Whether `domains` is keyed by the very symbols of `problem` (as if made for it)."""
+    """Whether `domains` is keyed by the very symbols of `problem`, as if made for it (a variant
+    of the structure whose symbols are equal but other objects gets its own)."""
     mine = (*problem.domains, *(j.q for j in problem.jets))
     return len(domains) == len(mine) and all(a is b for a, b in zip(domains, mine, strict=True))
 
