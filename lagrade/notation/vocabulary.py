@@ -4,6 +4,7 @@
 from __future__ import annotations
 
 import re
+import threading
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
 from functools import cached_property
@@ -147,15 +148,22 @@ class Vocabulary:
         new one would hold (sympy's cache may have let a symbol go and made an equal one since),
         so that the parser's output is what it was, object for object."""
         key = self._declared
-        kept = _LEXICONS.recalled(key)
-        if kept is not None and not kept.holds(_symbols(self, _jets(self))):
-            del _LEXICONS[key]
-        return _LEXICONS.made(key, lambda: Lexicon(self))
+        with _LEXICONS_LOCK:
+            kept = _LEXICONS.recalled(key)
+        if kept is not None and kept.holds(_symbols(self, _jets(self))):
+            return kept
+        made = Lexicon(self)
+        with _LEXICONS_LOCK:  # this one's now (an equal one of other symbols is dropped)
+            _LEXICONS.pop(key, None)
+            return _LEXICONS.made(key, lambda: made)
 
 
 #: Lexicons kept per process, by what their vocabulary declares (most recently used last).
 LEXICONS_KEPT = 512
 _LEXICONS: Recent = Recent(LEXICONS_KEPT)
+#: A Recent is no thread-safe dict, and on the answer page a preview and a view's drawing may
+#: read names at once.
+_LEXICONS_LOCK = threading.Lock()
 
 
 def _jets(vocabulary: Vocabulary) -> list[mechanics.Jet]:
