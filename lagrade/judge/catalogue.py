@@ -162,11 +162,11 @@ class Catalogue(MutantValues):
             Mutant("dropped_half_all", "the ½ is missing in the kinetic energy", 2 * T - V),
         ]
         out += [
-            Mutant(m.kind, m.message, m.expr - V)
+            Mutant(m.kind, m.said, m.expr - V)
             for m in body_mutants(self.problem.variant, T, "your L")
         ]
         out += [
-            Mutant(m.kind, m.message, m.expr - V)
+            Mutant(m.kind, m.said, m.expr - V)
             for m in kinetic_mutants(T, self.problem.jets, "your L")
         ]
         return out

@@ -68,14 +68,15 @@ _prepared: set[tuple[str, str]] = set()
 _underived: Recent = Recent(_CACHE_SIZE)
 
 
-def cached_problem(spec: Any) -> Problem:
+def cached_problem(spec: Any, key: str | None = None) -> Problem:
     """The Problem for a request's problem field, from this process's one cache when seen before
-    (keyed by `problem_key`: the variant included)."""
+    (keyed by `problem_key`: the variant included; `key`, when the caller has it already, so
+    that a request's problem field is not encoded twice)."""
     if isinstance(spec, Problem):
         return spec
     if not isinstance(spec, Mapping):
         raise RequestError('"problem" must be an object such as {"scene": "wedge", "seed": 3}')
-    key = problem_key(spec)
+    key = problem_key(spec) if key is None else key
     found = _problems.recalled(key)
     if found is None:
         start = time.perf_counter()
@@ -240,11 +241,11 @@ def judge(
         if new and limit is not None:  # a question read now is derived under the scene rule
             try:
                 with deriving(_question_named(spec), _reading_limits()):
-                    cached_problem(spec)
+                    cached_problem(spec, key)
             except DerivationLimit as error:
                 _underived.keep(key, error)
                 return _underivable(part, error, time.perf_counter() - received)
-        problem = cached_problem(spec)
+        problem = cached_problem(spec, key)
         budget = problem.budget
         spent = 0.0 if new else budget.spent  # a question read just now: its reading counts
         if budget.exhausted:

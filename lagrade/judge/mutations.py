@@ -7,7 +7,7 @@ from __future__ import annotations
 import operator
 from collections.abc import Callable, Iterable, Iterator, Sequence
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, Union
 
 import sympy as sp
 
@@ -15,10 +15,70 @@ from lagrade.mechanics import Jet, LagrangianSystem, SceneVariant
 from lagrade.notation import plain
 
 
+class Sentence:
+    """A mutant's sentence, written on first use: `template.format(**given)`, with each
+    expression of `shown` printed by `plain`, then each (old, new) of `edits` replaced in turn.
+    Most mutants are never named (a wrong answer matches one of them, or none), and printing
+    every term of a catalogue was most of the cost of its sentences; the text is the very
+    string the eager f-string gave. Compared and hashed by that text."""
+
+    __slots__ = ("_template", "_shown", "_given", "_edits", "_text")
+
+    def __init__(
+        self,
+        template: str,
+        shown: dict[str, sp.Basic],
+        given: dict[str, Any] | None = None,
+        edits: tuple[tuple[str, str], ...] = (),
+    ) -> None:
+        self._template, self._shown, self._given = template, shown, given or {}
+        self._edits = edits
+        self._text: str | None = None
+
+    @property
+    def text(self) -> str:
+        if self._text is None:
+            text = self._template.format(
+                **{k: plain(e) for k, e in self._shown.items()}, **self._given
+            )
+            for old, new in self._edits:
+                text = text.replace(old, new)
+            self._text = text
+        return self._text
+
+    def __eq__(self, other: object) -> bool:
+        if isinstance(other, Sentence | str):
+            return self.text == said_text(other)
+        return NotImplemented
+
+    def __hash__(self) -> int:
+        return hash(self.text)
+
+    def __repr__(self) -> str:
+        return repr(self.text)
+
+
+#: What a mutant says: its sentence, or how to write it on first use.
+Said = Union[str, Sentence]  # noqa: UP007 - a runtime alias
+
+
+def said_text(said: Said) -> str:
+    """The sentence `said` stands for."""
+    return said if isinstance(said, str) else said.text
+
+
+def replaced(said: Said, old: str, new: str) -> Said:
+    """`said` with `old` replaced by `new` (as str.replace), written when it is read."""
+    if isinstance(said, str):
+        return said.replace(old, new)
+    return Sentence(said._template, said._shown, said._given, (*said._edits, (old, new)))
+
+
 @dataclass(frozen=True)
 class Mutant:
     """A wrong answer of a known kind: `kind` for tests and statistics, `message` for the
-    student, `expr` the mutated reference.
+    student (`said`: the sentence, or a `Sentence` that writes it when first read), `expr` the
+    mutated reference.
 
     A mutant that changes a few terms of a reference holds the reference as `base` and the
     change as scaled `pieces`, expr = base + Σ c·piece: its values are the base's plus the
@@ -26,12 +86,17 @@ class Mutant:
     reference once and each small piece once, and forms no sympy sum per mutant."""
 
     kind: str
-    message: str
+    said: Said
     base: sp.Expr
     pieces: tuple[tuple[sp.Rational, sp.Expr], ...] = ()
     #: How many terms of the reference the mistake changes, where the kind says (one term of a
     #: single-term mistake, whatever its pieces); else counted from the change (`terms_changed`).
     changes: int | None = None
+
+    @property
+    def message(self) -> str:
+        """The sentence that names the mistake to the student."""
+        return said_text(self.said)
 
     @property
     def expr(self) -> sp.Expr:
@@ -70,14 +135,19 @@ def _without_sin_squared(expr: sp.Expr) -> sp.Expr:
 
 
 def swap_sin_cos(expr: sp.Expr) -> sp.Expr:
-    """expr with every sin(u) written as cos(u) and every cos(u) as sin(u)."""
+    """expr with every sin(u) written as cos(u) and every cos(u) as sin(u). A subtree with no
+    sin or cos in it is returned as it is, not rebuilt: rebuilding it gives the same expression
+    at a cost that was most of this function's (the catalogue swaps every term of L)."""
     if isinstance(expr, sp.sin):
         return sp.cos(swap_sin_cos(expr.args[0]))
     if isinstance(expr, sp.cos):
         return sp.sin(swap_sin_cos(expr.args[0]))
     if not expr.args:
         return expr
-    return expr.func(*(swap_sin_cos(a) for a in expr.args))
+    args = tuple(swap_sin_cos(a) for a in expr.args)
+    if all(new is old for new, old in zip(args, expr.args, strict=True)):
+        return expr
+    return expr.func(*args)
 
 
 def expanded_terms(expr: sp.Expr) -> tuple[sp.Expr, ...]:
@@ -117,11 +187,15 @@ def one_term_mutants(
     base: sp.Expr, term: sp.Expr, what: str, parameters: Sequence[sp.Symbol]
 ) -> list[Mutant]:
     """The single-term mistakes of one term of `base` (its expanded sum), with their sentences."""
-    shown = plain(term)
     return [
-        Mutant(kind, _TERM_MESSAGES[kind].format(t=shown, w=what, p=factor), base, pieces, 1)
+        Mutant(kind, _term_sentence(kind, term, what, factor), base, pieces, 1)
         for kind, pieces, factor in term_specs(term, parameters)
     ]
+
+
+def _term_sentence(kind: str, term: sp.Expr, what: str, factor: sp.Symbol | None) -> Sentence:
+    """The sentence of a single-term mistake (`_TERM_MESSAGES`), printed when it is read."""
+    return Sentence(_TERM_MESSAGES[kind], {"t": term}, {"w": what, "p": factor})
 
 
 #: The sentence of each single-term mistake: t the term, w what it is in, p the missing factor.
@@ -171,22 +245,25 @@ def kinetic_mutants(T: sp.Expr, jets: Sequence[Jet], what: str) -> list[Mutant]:
             out.append(
                 Mutant(
                     "dropped_half",
-                    f"the ½ is missing in the kinetic term {plain(term)} of {what}",
+                    Sentence(
+                        "the ½ is missing in the kinetic term {t} of {w}", {"t": term}, {"w": what}
+                    ),
                     rest + 2 * term,
                 )
             )
         if len(vel) >= 2:
-            cross = plain(sp.Mul(*vel))
-            out.append(
-                Mutant("missing_cross_term", f"{what} lacks the cross term in {cross}", rest)
-            )
+            cross = Sentence("{w} lacks the cross term in {c}", {"c": sp.Mul(*vel)}, {"w": what})
+            out.append(Mutant("missing_cross_term", cross, rest))
         if not vel:
             out.append(
                 Mutant(
                     "missing_driven_term",
-                    f"{what} lacks the term {plain(term)} from the prescribed motion "
-                    "(the centripetal "
-                    "or ω² term of the kinetic energy)",
+                    Sentence(
+                        "{w} lacks the term {t} from the prescribed motion (the centripetal "
+                        "or ω² term of the kinetic energy)",
+                        {"t": term},
+                        {"w": what},
+                    ),
                     rest,
                 )
             )
@@ -301,7 +378,7 @@ def trig_factors(term: sp.Expr) -> list[sp.Expr]:
 
 def trig_factor_mutant(base: sp.Expr, term: sp.Expr, f: sp.Expr, what: str) -> Mutant:
     """`base` (an expanded sum) with its term `term` written without the factor f."""
-    message = _TERM_MESSAGES["missing_factor"].format(t=plain(term), w=what, p=plain(f))
+    message = Sentence(_TERM_MESSAGES["missing_factor"], {"t": term, "p": f}, {"w": what})
     return Mutant(
         "missing_factor", message, base, ((-sp.Integer(1), term), (sp.Integer(1), term / f)), 1
     )
@@ -338,11 +415,11 @@ def lagrangian_momentum_mutant(
     return Mutant(m.kind, _momentum_message(m, what, system.generalized_momenta[k], pk), pk)
 
 
-def _momentum_message(m: Mutant, what: str, right: sp.Expr, wrong: sp.Expr) -> str:
+def _momentum_message(m: Mutant, what: str, right: sp.Expr, wrong: sp.Expr) -> Said:
     missing = sp.expand(right - wrong)
     if m.kind in ("missing_cross_term", "missing_driven_term") and missing != 0:
-        return f"{what} lacks the term {plain(missing)}"
-    return m.message.replace("your L", what)
+        return Sentence("{w} lacks the term {t}", {"t": missing}, {"w": what})
+    return replaced(m.said, "your L", what)
 
 
 def equation_mutants(
@@ -413,7 +490,7 @@ def lagrangian_row_mutants(
     out = []
     for i, delta in enumerate(change):
         if delta != 0:
-            msg = m.message.replace("your L", f"the L behind your equation for {jets[i].name}")
+            msg = replaced(m.said, "your L", f"the L behind your equation for {jets[i].name}")
             out.append((i, Mutant(m.kind, msg, E[i], ((sp.Integer(1), delta),))))
     return out
 
@@ -488,8 +565,8 @@ def dropped_factor_mutants(ref: sp.Expr) -> list[Mutant]:
     for f in factors:
         base, exponent = f.as_base_exp()
         if exponent.is_number and exponent < 0:
-            message = f"your answer lacks the division by {plain(1 / f)}"
+            message = Sentence("your answer lacks the division by {f}", {"f": 1 / f})
         else:
-            message = f"your answer lacks the factor {plain(f)}"
+            message = Sentence("your answer lacks the factor {f}", {"f": f})
         out.append(Mutant("missing_factor", message, ref / f))
     return out

@@ -105,7 +105,17 @@ def angles(problem: Problem) -> frozenset[str]:
     it stands in the positions: `dimensions.symbol_dimensions`), an angle has no units (Kepler's
     r is a length whether it is called r or ρ); and it is one the reference puts inside a
     trigonometric function (θ in sin θ; a length never appears there) or one named by a Greek
-    letter (Kepler's polar angle φ, which L holds only as φ̇)."""
+    letter (Kepler's polar angle φ, which L holds only as φ̇).
+
+    Found once per question (kept with it, as `dimensions_of` keeps its dimensions): every wrong
+    answer's witness is told in these units, and finding them walks the whole reference."""
+    cache = problem.__dict__
+    if "_angles" not in cache:
+        cache["_angles"] = _angles(problem)
+    return cache["_angles"]
+
+
+def _angles(problem: Problem) -> frozenset[str]:
     known = dimensions_of(problem)
     greek = {j.name for j in problem.jets if j.name.partition("_")[0] in _LETTER}
     reference = problem.lagrangian if problem.lagrangian is not None else problem.expression
@@ -123,7 +133,15 @@ def angles(problem: Problem) -> frozenset[str]:
 def coordinate_units(problem: Problem) -> dict[str, tuple[str, str, str]]:
     """The units a coordinate, its velocity and its acceleration are quoted in: rad, rad/s and
     rad/s² for an angle; the SI units of its dimension where the scene tells one (m, m/s, m/s²);
-    none otherwise (an ad-hoc question declares no units)."""
+    none otherwise (an ad-hoc question declares no units). Found once per question, like
+    `angles`; a copy for the caller's own."""
+    cache = problem.__dict__
+    if "_coordinate_units" not in cache:
+        cache["_coordinate_units"] = _coordinate_units(problem)
+    return dict(cache["_coordinate_units"])
+
+
+def _coordinate_units(problem: Problem) -> dict[str, tuple[str, str, str]]:
     known = dimensions_of(problem)
     angular = angles(problem)
     units = {}

@@ -4,6 +4,7 @@
 from __future__ import annotations
 
 import re
+import threading
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
 from functools import cached_property
@@ -15,6 +16,7 @@ from lagrade.errors import RequestError
 from lagrade.mechanics import Domain, momentum_jet
 from lagrade.mechanics import lagrange as mechanics
 from lagrade.notation.build import FUNCTIONS
+from lagrade.recent import Recent
 
 _NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*\Z")
 
@@ -93,15 +95,19 @@ class Vocabulary:
             raise RequestError("vocabulary is not valid: " + "; ".join(problems))
 
     def __hash__(self) -> int:
-        return hash(
-            (
-                self.coordinates,
-                tuple(self.parameters.items()),
-                self.labels,
-                self.allow_primes,
-                self.imaginary_unit,
-                self.momenta,
-            )
+        return hash(self._declared)
+
+    @property
+    def _declared(self) -> tuple:
+        """Everything the vocabulary declares, in order (the order of the parameters is the
+        order of the names an error lists): what its lexicon is a function of."""
+        return (
+            self.coordinates,
+            tuple(self.parameters.items()),
+            self.labels,
+            self.allow_primes,
+            self.imaginary_unit,
+            self.momenta,
         )
 
     @classmethod
@@ -135,18 +141,59 @@ class Vocabulary:
 
     @cached_property
     def _lexicon(self) -> Lexicon:
-        return Lexicon(self)
+        """The lexicon of what this vocabulary declares, shared with every vocabulary that
+        declares the same (each question of a batch builds its own vocabulary, and a class's
+        questions on one scene declare the same names). A lexicon holds no state of a request:
+        the parser only reads it. It is shared only while its symbols are the very objects a
+        new one would hold (sympy's cache may have let a symbol go and made an equal one since),
+        so that the parser's output is what it was, object for object."""
+        key = self._declared
+        with _LEXICONS_LOCK:
+            kept = _LEXICONS.recalled(key)
+        if kept is not None and kept.holds(_symbols(self, _jets(self))):
+            return kept
+        made = Lexicon(self)
+        with _LEXICONS_LOCK:  # this one's now (an equal one of other symbols is dropped)
+            _LEXICONS.pop(key, None)
+            return _LEXICONS.made(key, lambda: made)
+
+
+#: Lexicons kept per process, by what their vocabulary declares (most recently used last).
+LEXICONS_KEPT = 512
+_LEXICONS: Recent = Recent(LEXICONS_KEPT)
+#: A Recent is no thread-safe dict, and on the answer page a preview and a view's drawing may
+#: read names at once.
+_LEXICONS_LOCK = threading.Lock()
+
+
+def _jets(vocabulary: Vocabulary) -> list[mechanics.Jet]:
+    """The jets a vocabulary's names read as: its coordinates' and, with `momenta`, the
+    momenta's (p_q and its rate read like a coordinate and its velocity)."""
+    jets = [mechanics.jet(c) for c in vocabulary.coordinates]
+    if vocabulary.momenta:
+        jets += [momentum_jet(c) for c in vocabulary.coordinates]
+    return jets
+
+
+def _symbols(vocabulary: Vocabulary, jets: list[mechanics.Jet]) -> tuple[sp.Symbol, ...]:
+    """Every symbol a vocabulary declares (the jets', the parameters', the labels'), in order."""
+    labels = [sp.Symbol(name, real=True) for name in vocabulary.labels]
+    return (
+        *(s for j in jets for s in (j.q, j.dot, j.ddot)),
+        *vocabulary.parameters.values(),
+        *labels,
+    )
 
 
 class Lexicon:
-    """Every spelling a vocabulary accepts, resolved once per Vocabulary."""
+    """Every spelling a vocabulary accepts, resolved once per what a vocabulary declares."""
 
     def __init__(self, vocabulary: Vocabulary):
         self.allow_primes = vocabulary.allow_primes
-        self.jets = [mechanics.jet(c) for c in vocabulary.coordinates]
+        self.jets = _jets(vocabulary)
         self.coordinates = vocabulary.coordinates
-        if vocabulary.momenta:  # p_q and its rate read like a coordinate and its velocity
-            self.jets += [momentum_jet(c) for c in vocabulary.coordinates]
+        #: The symbols declared, as the objects this lexicon reads names as (`holds`).
+        self.symbols = _symbols(vocabulary, self.jets)
         exact: dict[str, Entry] = {}
         for j in self.jets:
             exact[j.name] = Entry("sym", j.q, j, 0)
@@ -154,8 +201,9 @@ class Lexicon:
             exact[j.ddot.name] = Entry("sym", j.ddot, j, 2)
         for name, symbol in vocabulary.parameters.items():
             exact[name] = Entry("sym", symbol, None, 0)
-        for name in vocabulary.labels:
-            exact[name] = Entry("sym", sp.Symbol(name, real=True), None, 0)
+        labels = self.symbols[len(self.symbols) - len(vocabulary.labels) :]
+        for name, symbol in zip(vocabulary.labels, labels, strict=True):
+            exact[name] = Entry("sym", symbol, None, 0)
         self.imaginary_unit = vocabulary.imaginary_unit
         if self.imaginary_unit is not None:  # declared: a number, not a name
             exact[self.imaginary_unit] = Entry("sym", sp.I, None, 0)
@@ -190,6 +238,12 @@ class Lexicon:
         if self.imaginary_unit is not None:
             allowed.append(self.imaginary_unit)
         self.allowed = ", ".join(allowed)
+
+    def holds(self, symbols: tuple[sp.Symbol, ...]) -> bool:
+        """Whether this lexicon's declared symbols are these very objects."""
+        return len(symbols) == len(self.symbols) and all(
+            a is b for a, b in zip(symbols, self.symbols, strict=True)
+        )
 
     def is_function(self, name: str) -> bool:
         return name in self.functions

@@ -6,8 +6,8 @@ from pathlib import Path
 
 import pytest
 
-from lagrade.assign.assignment import load_assignment
 from lagrade.assign import generate
+from lagrade.assign.assignment import load_assignment
 from lagrade.assign.roster import load_roster, parse_roster
 from lagrade.bank import scene_ids
 from lagrade.errors import AssignmentError

@@ -374,3 +374,22 @@ def test_the_equations_of_a_mistaken_lagrangian_are_derived_from_the_change_alon
         assert derived == whole, sid
         checked += len(whole)
     assert checked > 50
+
+
+def _rebuilt_swap(expr):
+    """swap_sin_cos as it was: every node rebuilt."""
+    if isinstance(expr, sp.sin | sp.cos):
+        return (sp.cos if isinstance(expr, sp.sin) else sp.sin)(_rebuilt_swap(expr.args[0]))
+    return expr.func(*map(_rebuilt_swap, expr.args)) if expr.args else expr
+
+
+def test_swap_sin_cos_keeps_what_has_no_trig():
+    """A subtree without sin or cos comes back as itself (not rebuilt), and a swapped tree is
+    the one a full rebuild gives, printed alike."""
+    x, m, g = sp.symbols("x m g", positive=True)
+    plain_term = m * g * x**2 / 2
+    assert swap_sin_cos(plain_term) is plain_term
+    term = m * x**2 * sp.sin(x) ** 2 / 2 + g * sp.cos(2 * x) + g * m * x
+    swapped = m * x**2 * sp.cos(x) ** 2 / 2 + g * sp.sin(2 * x) + g * m * x
+    assert swap_sin_cos(term) == swapped
+    assert sp.srepr(swap_sin_cos(term)) == sp.srepr(_rebuilt_swap(term))

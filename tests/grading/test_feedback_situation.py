@@ -99,3 +99,22 @@ def test_no_values_without_handout_numbers_to_reproduce_them():
     verdict = check({"scene": "simple_pendulum"}, "T", "m l theta_dot^2", time_limit=10)
     text = " ".join(verdict.feedback)
     assert "(for example" in text and "reference's is" not in text, text
+
+
+def test_a_questions_units_are_found_once(monkeypatch):
+    """Every wrong answer's witness is told in the question's units: found once per question
+    (the reference walked once), the same as found afresh, a copy for each caller."""
+    from lagrade.judge import situation as module
+
+    found = []
+    real = module._angles
+    monkeypatch.setattr(module, "_angles", lambda p: found.append(p) or real(p))
+    problem = build_problem({"scene": "pendulum_on_cart"})
+    first = situation({"theta": 0.3, "x": 1.0}, problem)
+    again = situation({"theta": 0.3, "x": 1.0}, problem)
+    assert first == again and "rad" in first
+    assert found == [problem]
+    units = module.coordinate_units(problem)
+    assert units == module._coordinate_units(problem)
+    assert units is not module.coordinate_units(problem)
+    assert module.angles(problem) == real(problem)

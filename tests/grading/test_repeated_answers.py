@@ -94,3 +94,15 @@ def test_a_remembered_answer_needs_no_question(judged, monkeypatch):
     monkeypatch.setattr(check_module, "build_problem", lambda spec: pytest.fail("read again"))
     assert check_request(request, 2.0).status == "correct"
     assert len(judged) == 1
+
+
+def test_a_request_encodes_its_problem_field_once(monkeypatch):
+    """The question's key is made once per request (the driver hands it to its cache)."""
+    keys = []
+    real = check_module.problem_key
+    monkeypatch.setattr(check_module, "problem_key", lambda spec: keys.append(spec) or real(spec))
+    request = {"problem": EXPRESSION, "part": "expression", "answer": "g*sin(alpha)/3 + 0"}
+    check_request(request, 2.0)
+    keys.clear()
+    check_request({**request, "answer": "g sin(alpha) / 3 + 0*g"}, 2.0)
+    assert len(keys) == 1

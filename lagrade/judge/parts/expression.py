@@ -35,7 +35,28 @@ from lagrade.mechanics import Domain, exact_number
 
 
 def _domains_for(problem: Problem) -> dict:
-    """Domains of every variable: parameters as declared, coordinates in their sample ranges."""
+    """Domains of every variable: parameters as declared, coordinates in their sample ranges.
+    Made once per question structure (its domains and coordinates are the structure's: its
+    shared points are drawn in them), not per answer: their sympy Floats were most of an exact
+    verdict's cost outside the test itself. A copy, for the caller's own."""
+    kept = problem.shared.get(_DOMAINS)
+    if kept is None or not _same_symbols(kept, problem):
+        kept = problem.shared[_DOMAINS] = _made_domains(problem)
+    return dict(kept)
+
+
+#: Where `_domains_for` keeps a structure's domains in `Problem.shared`.
+_DOMAINS = "_expression_domains"
+
+
+def _same_symbols(domains: dict, problem: Problem) -> bool:
+    """Whether `domains` is keyed by the very symbols of `problem`, as if made for it (a variant
+    of the structure whose symbols are equal but other objects gets its own)."""
+    mine = (*problem.domains, *(j.q for j in problem.jets))
+    return len(domains) == len(mine) and all(a is b for a, b in zip(domains, mine, strict=True))
+
+
+def _made_domains(problem: Problem) -> dict:
     domains = dict(problem.domains)
     for j in problem.jets:
         lo, hi = (problem.coordinate_domains or {}).get(j.name) or coordinate_range(j.name)
