@@ -192,8 +192,10 @@ def _reading_key(problem: Problem, part: str, answer: Any, given: Any, seen) -> 
     """The second level's key of an answer, or None: none for an answer the first level does
     not remember (too long: reading it for a key would cost what judging does) or judged in
     the student's own coordinates (read against another vocabulary than the statement's)."""
-    if seen is None or part not in SAME_READING_PARTS or problem.lagrangian is None:
-        return None  # (a part without its Lagrangian is refused by `run_checker`)
+    if seen is None or part not in SAME_READING_PARTS:
+        return None
+    if problem.lagrangian is None if part != "expression" else problem.expression is None:
+        return None  # (a part without its reference is refused by `run_checker`)
     if isinstance(given, Mapping) and given.get("transformation") is not None:
         return None
     read = reading_key(problem, part, answer)

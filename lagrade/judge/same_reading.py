@@ -9,12 +9,15 @@ its plain echo (the `interpreted` a verdict shows, and what feedback quotes: "Eq
 checkers of these parts read the answer with the same reader (`read.READERS`) and see nothing
 else of its text, so two answers with one key get one verdict, field for field.
 
+`expression` is keyed only where its checker reads nothing of the text beside the reader
+(`expression.judged_by_its_reading`: no `=`, no unit, no degree sign).
+
 Left out (no key, judged as before): the other parts, whose checkers read the raw text
-beside the reader (`expression`: a unit or a degree sign; `transformation`: its remark;
-`dof`, names, the oscillation parts), an answer with an unreadable line (the parser's message
-quotes the text and its caret), an item whose reading was built as a sympy form (a time
-derivative, an additive constant), a tree over `MAX_KEY_NODES` nodes and an answer over
-`MAX_KEYED_CHARS` characters.
+beside the reader (`transformation`: its remark; `dof`, names, the oscillation parts), an
+`expression` answer with a unit, a degree sign or a value after `=`, an answer with an
+unreadable line (the parser's message quotes the text and its caret), an item whose reading
+was built as a sympy form (a time derivative, an additive constant), a tree over
+`MAX_KEY_NODES` nodes and an answer over `MAX_KEYED_CHARS` characters.
 """
 
 from __future__ import annotations
@@ -25,13 +28,24 @@ from typing import Any
 import sympy as sp
 
 from lagrade.errors import LagradeError
+from lagrade.judge.parts.expression import judged_by_its_reading
 from lagrade.judge.parts.reading import _ZERO_SIDE, Lines, Read, Side, reading_notes
 from lagrade.judge.problem import Problem
 from lagrade.judge.read import READERS
 
 #: Parts whose checker judges the reader's result and nothing else of the answer's text.
 SAME_READING_PARTS = frozenset(
-    {"lagrangian", "T", "V", "eom", "momenta", "conserved", "hamiltonian", "hamilton_equations"}
+    {
+        "lagrangian",
+        "T",
+        "V",
+        "eom",
+        "momenta",
+        "conserved",
+        "hamiltonian",
+        "hamilton_equations",
+        "expression",
+    }
 )
 #: The most tree nodes one key may hold: keying stays a fraction of the reading it follows.
 MAX_KEY_NODES = 4_096
@@ -51,11 +65,15 @@ def reading_key(problem: Problem, part: str, answer: Any) -> str | None:
     does not read has no key, and the checker says why."""
     if part not in SAME_READING_PARTS or _characters(answer) > MAX_KEYED_CHARS:
         return None
+    if part == "expression" and not judged_by_its_reading(problem, answer):
+        return None
     with reading_notes() as notes:
         try:
             got = READERS[part](problem, answer)
         except LagradeError:
             return None
+    if part == "expression":  # one item: the answer has no `=`
+        (got,) = got
     out: list[str] = []
     symbols: dict[Any, int] = {}
     try:

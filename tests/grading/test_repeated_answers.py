@@ -7,7 +7,7 @@ import importlib
 import pytest
 
 from lagrade.judge.check import check_request
-from lagrade.judge.driver import cached_problem
+from lagrade.judge.driver import cached_problem, forget_problems
 
 check_module = importlib.import_module("lagrade.judge.driver")
 
@@ -45,7 +45,7 @@ def test_a_repeated_answer_gets_the_same_verdict_without_judging(judged):
 @pytest.mark.parametrize(
     ("power", "other"),
     [
-        (2, {"answer": "g*alpha^2 "}),  # other text, though the same expression
+        (2, {"answer": "alpha^2*g"}),  # other text read otherwise, though equal
         (3, {"part": "lagrangian"}),  # another part (refused: the problem has no L)
         (4, {"given": {"lagrangian": "x"}}),
     ],
@@ -106,3 +106,15 @@ def test_a_request_encodes_its_problem_field_once(monkeypatch):
     keys.clear()
     check_request({**request, "answer": "g sin(alpha) / 3 + 0*g"}, 2.0)
     assert len(keys) == 1
+
+
+def test_an_expression_spelled_otherwise_but_read_the_same_is_not_judged_again(judged):
+    """The second level (`same_reading`): `g*alpha^2 ` reads as `g alpha^2` does, and an
+    expression question without a unit reads nothing of the text beside the parser."""
+    forget_problems()  # nothing judged before in this process
+    spec = {"expression": "g*alpha^2", "parameters": {"g": "positive", "alpha": "(0, 1)"}}
+    request = {"problem": spec, "part": "expression", "answer": "g alpha^2"}
+    first = check_request(request, 2.0)
+    again = check_request({**request, "answer": "g*alpha^2 "}, 2.0)
+    assert len(judged) == 1
+    assert again.to_dict(timings=False) == first.to_dict(timings=False)

@@ -116,8 +116,8 @@ def test_an_unreadable_line_is_not_keyed():
 
 
 def test_parts_that_read_the_raw_text_are_not_keyed():
-    """A numeric answer's unit and degree sign are read from the text beside the parser."""
-    assert "expression" not in SAME_READING_PARTS
+    """A numeric answer's unit is read from the text beside the parser, and so is the remark of
+    a transformation: an answer to a question with a unit is judged every time."""
     assert "transformation" not in SAME_READING_PARTS
     problem = {"scene": "wedge", "seed": 1, "quantity": "block_acceleration"}
     forget_problems()
@@ -125,6 +125,52 @@ def test_parts_that_read_the_raw_text_are_not_keyed():
     before = verdict_cache_hits()
     judge(problem, "expression", "2 g sin(alpha)")
     assert _hits(before) == 0
+
+
+#: An expression question without a unit: its checker sees nothing of a plain answer but its
+#: reading.
+ENERGY = {
+    "expression": "m*l^2*phi_dot^2/2 - m*g*l*cos(phi)",
+    "parameters": {"m": "positive", "g": "positive", "l": "positive"},
+    "coordinates": ["phi"],
+}
+
+
+@pytest.mark.parametrize(
+    "first, second",
+    [
+        ("m*l^2*phi_dot^2/2 - m*g*l*cos(phi)", "m l**2 phi_dot^2/2 - m g l cos(φ)"),
+        ("m*l^2*phi_dot^2/2 + m*g*l*cos(phi)", "m l^2 phi_dot**2 / 2 + m g l cos( phi )"),
+        ("2*m*l^2*phi_dot^2 - m*g*l*cos(phi)", "2 m l^2 phi_dot^2 - m g l cos(phi)"),
+    ],
+)
+def test_a_respelled_expression_gets_the_verdict_of_a_fresh_judgement(first, second):
+    """Right or wrong (a named slip, an example point), every field what a fresh process
+    gives the second spelling."""
+    forget_problems()
+    judge(ENERGY, "expression", first, limit=10.0)
+    before = verdict_cache_hits()
+    again = judge(ENERGY, "expression", second, limit=10.0)
+    assert _hits(before) == 1
+    forget_problems()
+    assert _fields(again) == _fields(judge(ENERGY, "expression", second, limit=10.0))
+
+
+@pytest.mark.parametrize(
+    "first, second",
+    [
+        ("60°", "60 °"),  # an angle in degrees: read with a note from the text
+        ("m*l^2*phi_dot^2/2 - m*g*l*cos(phi) = 1.5", "m l^2 phi_dot^2/2 - m g l cos(phi) = 1.5"),
+    ],
+)
+def test_an_expression_read_beside_the_parser_is_not_keyed(first, second):
+    """A degree sign, or a closed form and its value after `=`: the checker reads the text."""
+    forget_problems()
+    judge(ENERGY, "expression", first, limit=10.0)
+    before = verdict_cache_hits()
+    judge(ENERGY, "expression", second, limit=10.0)
+    assert _hits(before) == 0
+    assert reading_key(cached_problem(ENERGY), "expression", second) is None
 
 
 def test_own_coordinates_are_not_keyed():

@@ -208,6 +208,19 @@ def _judge_number(
     return Verdict("expression", "incorrect", 0.0, feedback, echo, "numeric", mistakes=mistakes)
 
 
+def judged_by_its_reading(problem: Problem, answer: Any) -> bool:
+    """Whether the checker sees nothing of `answer` but its reading (`read_expression`'s one
+    item): text with no `=` (a closed form and its value), for a question that declares no unit
+    (a number's unit, read beside the parser), and no angle in degrees (read with a note). Only
+    such an answer may be given the verdict of another read the same (`same_reading`)."""
+    return (
+        isinstance(answer, str)
+        and not problem.unit
+        and "=" not in answer
+        and _angle_in_degrees(problem, answer) is None
+    )
+
+
 def read_expression(problem: Problem, answer: Any) -> list[Read]:
     """What an `expression` answer gives: a closed form, a number (its unit or degree sign read
     as `_check_one` reads them), or both as `closed form = value`."""
