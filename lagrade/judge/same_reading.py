@@ -10,14 +10,14 @@ checkers of these parts read the answer with the same reader (`read.READERS`) an
 else of its text, so two answers with one key get one verdict, field for field.
 
 `expression` is keyed only where its checker reads nothing of the text beside the reader
-(`expression.judged_by_its_reading`: no `=`, no unit, no degree sign).
+(`expression.judged_by_its_reading`: no `=`, no number with a unit, no degree sign).
 
 Left out (no key, judged as before): the other parts, whose checkers read the raw text
 beside the reader (`transformation`: its remark; `dof`, names, the oscillation parts), an
-`expression` answer with a unit, a degree sign or a value after `=`, an answer with an
-unreadable line (the parser's message quotes the text and its caret), an item whose reading
-was built as a sympy form (a time derivative, an additive constant), a tree over
-`MAX_KEY_NODES` nodes and an answer over `MAX_KEYED_CHARS` characters.
+`expression` answer with a number and its unit, a degree sign or a value after `=`, an
+answer with an unreadable line (the parser's message quotes the text and its caret), an item
+whose reading was built as a sympy form (a time derivative, an additive constant), a tree
+over `MAX_KEY_NODES` nodes and an answer over `MAX_KEYED_CHARS` characters.
 """
 
 from __future__ import annotations

@@ -116,15 +116,27 @@ def test_an_unreadable_line_is_not_keyed():
 
 
 def test_parts_that_read_the_raw_text_are_not_keyed():
-    """A numeric answer's unit is read from the text beside the parser, and so is the remark of
-    a transformation: an answer to a question with a unit is judged every time."""
+    """A number's unit is read from the text beside the parser (converted, or named as the wrong
+    unit), and so is the remark of a transformation: judged every time."""
     assert "transformation" not in SAME_READING_PARTS
+    problem = {"scene": "wedge", "seed": 1, "quantity": "block_acceleration"}
+    forget_problems()
+    judge(problem, "expression", "5.39 m/s^2")
+    before = verdict_cache_hits()
+    judge(problem, "expression", "5.39  m/s^2")
+    assert _hits(before) == 0
+    assert reading_key(cached_problem(problem), "expression", "539 cm/s^2") is None
+
+
+def test_a_closed_form_to_a_question_with_a_unit_is_keyed():
+    """Without a number and its unit, the checker reads the closed form as the reader does."""
     problem = {"scene": "wedge", "seed": 1, "quantity": "block_acceleration"}
     forget_problems()
     judge(problem, "expression", "2*g*sin(alpha)")
     before = verdict_cache_hits()
-    judge(problem, "expression", "2 g sin(alpha)")
-    assert _hits(before) == 0
+    again = judge(problem, "expression", "2 g sin(alpha)")
+    assert _hits(before) == 1
+    assert _fields(again) == _fields(_fresh(problem, "expression", "2 g sin(alpha)"))
 
 
 #: An expression question without a unit: its checker sees nothing of a plain answer but its

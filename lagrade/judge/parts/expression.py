@@ -210,13 +210,15 @@ def _judge_number(
 
 def judged_by_its_reading(problem: Problem, answer: Any) -> bool:
     """Whether the checker sees nothing of `answer` but its reading (`read_expression`'s one
-    item): text with no `=` (a closed form and its value), for a question that declares no unit
-    (a number's unit, read beside the parser), and no angle in degrees (read with a note). Only
-    such an answer may be given the verdict of another read the same (`same_reading`)."""
+    item): text with no `=` (a closed form and its value), no number with a unit (converted,
+    or named as the wrong unit, beside the parser) and no angle in degrees (read with a note).
+    The question's own unit after a closed form is dropped alike by the reader and the
+    checker (`strip_unit`). Only such an answer may be given the verdict of another read the
+    same (`same_reading`)."""
     return (
         isinstance(answer, str)
-        and not problem.unit
         and "=" not in answer
+        and _with_unit(problem, answer) is None
         and _angle_in_degrees(problem, answer) is None
     )
 
