@@ -42,7 +42,7 @@ from lagrade.judge.clocks import (
     time_limit,
 )
 from lagrade.judge.deriving import derivation_limits, deriving
-from lagrade.judge.parts import PARTS, run_checker
+from lagrade.judge.parts import PARTS, missing_reference, run_checker
 from lagrade.judge.parts.oscillation import prepare_oscillations
 from lagrade.judge.parts.phase import POINTS, phase_points
 from lagrade.judge.parts.reading import parsed_once
@@ -194,8 +194,8 @@ def _reading_key(problem: Problem, part: str, answer: Any, given: Any, seen) -> 
     the student's own coordinates (read against another vocabulary than the statement's)."""
     if seen is None or part not in SAME_READING_PARTS:
         return None
-    if problem.lagrangian is None if part != "expression" else problem.expression is None:
-        return None  # (a part without its reference is refused by `run_checker`)
+    if missing_reference(problem, part) is not None:
+        return None  # refused by `run_checker`, whatever the answer
     if isinstance(given, Mapping) and given.get("transformation") is not None:
         return None
     read = reading_key(problem, part, answer)

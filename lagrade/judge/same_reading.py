@@ -72,8 +72,10 @@ def reading_key(problem: Problem, part: str, answer: Any) -> str | None:
             got = READERS[part](problem, answer)
         except LagradeError:
             return None
-    if part == "expression":  # one item: the answer has no `=`
-        (got,) = got
+    if part == "expression":  # a list of one item: the answer has no `=`
+        if len(got) != 1:
+            return None
+        got = got[0]
     out: list[str] = []
     symbols: dict[Any, int] = {}
     try:

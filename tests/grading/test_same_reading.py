@@ -273,3 +273,15 @@ def test_a_verdict_found_again_is_a_fresh_judgement(case):
     if read is not None and read == reading_key(problem, item.part, other) and other != item.answer:
         assert _hits(before) == (first.status in ("correct", "incorrect"))
     assert _fields(found) == _fields(_fresh(item.problem, item.part, other))
+
+
+def test_a_part_the_question_cannot_be_asked_is_refused_not_keyed():
+    """`missing_reference` is the one rule: the driver keys no answer that `run_checker` refuses
+    (a Lagrangian part of an expression question), and the refusal says why, every time."""
+    from lagrade.errors import RequestError
+
+    forget_problems()
+    for answer in ("m*l^2*phi_dot^2/2", "m l^2 phi_dot^2/2"):
+        with pytest.raises(RequestError, match="needs a scene or a Lagrangian"):
+            judge(ENERGY, "lagrangian", answer, limit=10.0)
+    assert verdict_cache_hits()["reading"] == 0

@@ -83,6 +83,22 @@ PARTS: dict[str, Checker] = {
 NEEDS_LAGRANGIAN = frozenset(PARTS) - {"expression"}
 
 
+def missing_reference(problem: Problem, part: str) -> str | None:
+    """Why `problem` cannot be asked `part` (it has no Lagrangian, or no reference expression),
+    or None: the request is refused, whatever the answer."""
+    if part in NEEDS_LAGRANGIAN and problem.lagrangian is None:
+        return (
+            f"part {part!r} needs a scene or a Lagrangian, and this problem gives "
+            "only an expression"
+        )
+    if part == "expression" and problem.expression is None:
+        return (
+            'part "expression" needs a reference expression (an "expression" '
+            'problem, or a scene with "quantity")'
+        )
+    return None
+
+
 def run_checker(problem: Problem, part: str, answer: Any, given: Mapping | None = None) -> Verdict:
     """Judge `answer` to `part` of `problem`. A student's mistake never raises: text that does
     not parse, or that names something the evaluator cannot compute, is `invalid` with a message.
@@ -90,16 +106,9 @@ def run_checker(problem: Problem, part: str, answer: Any, given: Mapping | None 
     checker = PARTS.get(part)
     if checker is None:
         raise RequestError(f"unknown part {part!r}; parts: {', '.join(PARTS)}")
-    if part in NEEDS_LAGRANGIAN and problem.lagrangian is None:
-        raise RequestError(
-            f"part {part!r} needs a scene or a Lagrangian, and this problem gives "
-            "only an expression"
-        )
-    if part == "expression" and problem.expression is None:
-        raise RequestError(
-            'part "expression" needs a reference expression (an "expression" '
-            'problem, or a scene with "quantity")'
-        )
+    missing = missing_reference(problem, part)
+    if missing is not None:
+        raise RequestError(missing)
 
     def judged(answer: Any) -> tuple[Verdict, list[str]]:
         with reading_notes() as notes:
@@ -139,4 +148,4 @@ def with_notes(verdict: Verdict, notes: list[str]) -> Verdict:
     return replace(verdict, feedback=(*verdict.feedback, *new)) if new else verdict
 
 
-__all__ = ["NEEDS_LAGRANGIAN", "PARTS", "run_checker"]
+__all__ = ["NEEDS_LAGRANGIAN", "PARTS", "missing_reference", "run_checker"]
