@@ -3,7 +3,7 @@ the killable worker: the assignment's problem read from its text, a submission r
 part by part. Kept apart from the entry points, so that a `generate` answered from the variants
 rendered at export imports none of it (nor sympy), and apart from the rendering of a variant
 (`prairielearn_variant`), so that a `parse` or a `grade` imports no templates (jinja2, the
-handout's views and figures: about 40 ms of each call, measured)."""
+handout's views and figures), which only `generate` uses."""
 
 from __future__ import annotations
 

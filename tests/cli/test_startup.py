@@ -102,8 +102,8 @@ def test_check_batch_with_a_request_loads_the_judge_before_its_workers_fork(tmp_
 
 def test_prairielearn_parse_and_grade_load_no_templates():
     """The worker of a PrairieLearn `parse` or `grade` reads and judges: the templates that
-    render a variant (jinja2, the handout's views and figures) are `generate`'s alone, and
-    importing them cost every parse and grade call about 40 ms."""
+    render a variant (jinja2, the handout's views and figures) are `generate`'s alone: every
+    parse and grade call paid for importing them."""
     code = (
         "import sys, lagrade.grading.prairielearn_runtime, lagrade.grading.prairielearn_work\n"
         "print(sorted(m for m in ('jinja2', 'lagrade.assign.views', 'lagrade.assign.templating', "
