@@ -36,7 +36,6 @@ from lagrade.judge.parts.common import (
 )
 from lagrade.judge.parts.reading import (
     Read,
-    decided,
     has_acceleration,
     read_single,
     without_additive_constant,
@@ -214,7 +213,8 @@ def check_lagrangian(problem: Problem, answer: Any, given: Mapping | None) -> Ve
 def check_kinetic(problem: Problem, answer: Any, given: Mapping | None) -> Verdict:
     got = read_kinetic(problem, answer)
     points = problem.points("T")
-    out, answer_c = decided(got, lambda a: expressions_equal(a, problem.kinetic, points))
+    answer_c = got.compiled
+    out = expressions_equal(answer_c, problem.kinetic, points)
     if out.equal:
         return Verdict("T", "correct", 1.0, (), got.echo, method_name(out))
     mutant = problem.catalogue.match_plain(problem.catalogue.kinetic, answer_c, points)
@@ -235,7 +235,8 @@ def check_potential(problem: Problem, answer: Any, given: Mapping | None) -> Ver
     got = read_potential(problem, answer)
     reference = problem.potential
     points = problem.points("V")
-    out, answer_c = decided(got, lambda a: differ_by_constant(a, reference, points))
+    answer_c = got.compiled
+    out = differ_by_constant(answer_c, reference, points)
     if out.equal:
         notes = ()
         if not expressions_equal(answer_c, reference, points).equal:

@@ -159,12 +159,6 @@ class Read:
         return self._symbols
 
 
-def decided(got: Read, decide: Callable[[Compiled], Any]) -> tuple[Any, Compiled]:
-    """(outcome, the compiled answer it was decided on): `decide` once, on the item compiled
-    from its tree — the program the feedback on a wrong answer reads too."""
-    return decide(got.compiled), got.compiled
-
-
 def _collect(node: Any, found: set) -> None:
     """The symbols of a tree (the declared imaginary unit is a number)."""
     kind = node.kind
